@@ -1,0 +1,38 @@
+#pragma once
+// A small logger passed by reference (no global state). Messages go to a stream (stderr in main).
+// Verbosity: 0 = warnings and errors only, 1 = info (-v), 2 = debug (-vv).
+#include <mutex>
+#include <ostream>
+#include <string_view>
+
+namespace mixengine {
+
+class Log {
+public:
+    explicit Log(std::ostream& out, int verbosity = 0) : out_(out), verbosity_(verbosity) {}
+
+    void warning(std::string_view message) { write("[warning] ", message); }
+    void info(std::string_view message) {
+        if (verbosity_ >= 1) write("[info] ", message);
+    }
+    void debug(std::string_view message) {
+        if (verbosity_ >= 2) write("[debug] ", message);
+    }
+    /// Progress of a long stage, 0..1; printed only when progress reporting is on (-p).
+    void progress(std::string_view stage, double fraction);
+
+    void setVerbosity(int verbosity) { verbosity_ = verbosity; }
+    void setProgress(bool enabled) { progress_ = enabled; }
+    int warningCount() const { return warnings_; }
+
+private:
+    void write(std::string_view prefix, std::string_view message);
+
+    std::ostream& out_;
+    int verbosity_;
+    bool progress_ = false;
+    int warnings_ = 0;
+    std::mutex mutex_;
+};
+
+}  // namespace mixengine

@@ -1,0 +1,44 @@
+#pragma once
+// The slicer: cuts a Mesh with horizontal planes into closed outlines (seed 003, done better).
+//
+// Contract:
+//   - every facet is classified against the plane into the 14 cases of seed 003 (slicing/FacetPlane.h);
+//     a vertex exactly on the plane never yields duplicate or dangling segments; horizontal facets
+//     in the plane count when facing up and not when facing down;
+//   - intersection points are computed exactly by interpolation along the edge (no bisection);
+//   - segments are stitched into polygons in linear time through a hash of their end points; small
+//     gaps (≤ max_gap_um) are closed; polylines that cannot be closed are reported in
+//     `open_polylines` and are not part of `outlines`;
+//   - outlines are the union of all closed loops (overlapping shells merged, holes by nesting,
+//     independent of facet winding): outer contours counter-clockwise, holes clockwise.
+#include <vector>
+
+#include "common/Log.h"
+#include "geometry/Point.h"
+#include "mesh/Mesh.h"
+#include "slicing/LayerHeights.h"
+
+namespace mixengine {
+
+struct SliceOptions {
+    SlicingTolerance tolerance = SlicingTolerance::Middle;
+    coord_um max_gap_um = 100;        ///< gaps up to this size are closed while stitching
+    coord_um min_polygon_area_um2 = 0;  ///< loops with |area| below this are dropped (noise)
+    int threads = 2;                  ///< layers are sliced in parallel
+};
+
+struct SlicedLayer {
+    coord_um print_z = 0;
+    coord_um slice_z = 0;
+    Paths outlines;         ///< closed, unioned; outer CCW, holes CW
+    Paths open_polylines;   ///< pieces that could not be closed (kept out of outlines)
+};
+
+/// Cuts the mesh at every layer of `layers`; result[i] belongs to layers[i].
+std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& layers, const SliceOptions& options,
+                                   Log& log);
+
+/// One plane only (used by tests and by the cut at exact heights).
+SlicedLayer slicePlane(const Mesh& mesh, coord_um z, const SliceOptions& options);
+
+}  // namespace mixengine

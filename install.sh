@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs everything MixEngine needs to build and test, from Debian packages only.
+# Idempotent: a second run installs nothing new. Run as root (or with sudo available).
+#   ./install.sh          build + test dependencies
+set -euo pipefail
+
+PACKAGES=(
+  # build
+  g++ cmake ninja-build pkg-config ccache clang-format make
+  libprotobuf-dev protobuf-compiler libarcus-dev
+  libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libpolyclipping-dev nlohmann-json3-dev lib3mf-dev libzip-dev zlib1g-dev libpng-dev
+  # tests
+  libgtest-dev python3 python3-venv python3-pip
+  # Cura's definitions (the engine's embedded defaults) and the reference engine
+  cura cura-engine fdm-materials
+  # corpus fetching (apt-get download; npm comes with the base machine) and end-to-end tools
+  xz-utils unzip ca-certificates
+)
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install.sh: all ${#PACKAGES[@]} Debian packages already installed"
+  exit 0
+fi
+
+echo "install.sh: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install.sh: done"
