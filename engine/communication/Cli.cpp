@@ -1,10 +1,28 @@
 #include "communication/Cli.h"
 
+#include "common/Error.h"
+#include "communication/Commands.h"
+#include "communication/HelpText.h"
+
 namespace mixengine {
 
-int runCli(int, char**, std::ostream& out, std::ostream&) {
-    out << "mixengine (skeleton)\n";
-    return 0;
+int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
+    Words words(argv + 1, argv + argc);
+    if (words.empty()) {
+        err << helpText();
+        return 1;
+    }
+    const std::string command = words.front();
+    words.erase(words.begin());
+    if (command == "help" || command == "--help" || command == "-h") {
+        out << helpText();
+        return 0;
+    }
+    if (command == "slice") return runSliceCommand(words, out, err);
+    if (command == "layers") return runLayersCommand(words, out, err);
+    if (command == "settings") return runSettingsCommand(words, out, err);
+    if (command == "demo") return runDemoCommand(words, out, err);
+    throw InputError("unknown command '" + command + "' (commands: help, slice, layers, settings, demo)");
 }
 
 }  // namespace mixengine

@@ -1,0 +1,52 @@
+#include "communication/HelpText.h"
+
+namespace mixengine {
+
+std::string_view helpText() {
+    return R"(MixEngine — a CuraEngine 4.13 compatible slicer for mixing-chamber and dual-nozzle printers.
+
+usage:
+mixengine help
+	Show this help message.
+
+mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<value>] [-g] [-e<N>] [-l <model>] [--next] [-o <output.gcode>]
+  -v            Increase the verbose level (log messages to stderr; -vv for debug).
+  -p            Log progress information.
+  -m<threads>   Number of threads (default: all cores).
+  -j <file|id>  Machine definition with its inherits chain and extruder trains. Searched in
+                CURA_ENGINE_SEARCH_PATH (':' or ';' separated), then Cura's installed resources.
+                Default: fdmprinter.def.json from the installed Cura.
+  -s key=value  Set a setting for the current focus: global settings, the mesh group (-g),
+                the extruder train (-e<N>), or the last model (-l). Unknown keys are kept.
+  -g            Focus on the current mesh group (one-at-a-time printing).
+  -e<N>         Focus on extruder train N; models loaded next print with it.
+  -l <model>    Load a model (STL binary/ASCII, OBJ, 3MF). mesh_rotation_matrix set before -l
+                applies to it (it may also scale).
+  --next        Start a new mesh group, printed after the previous one.
+  -o <file>     Write the G-code to <file> (written to a temporary file, renamed when complete).
+                Without -o the G-code goes to standard output.
+  --dump-layers <dir>  Also write every layer's outlines as JSON and SVG into <dir>.
+
+mixengine layers <slice arguments> -o <dir>
+	Slice only, and write <dir>/layers.json (outlines in mm, area per layer) and one SVG per
+	layer (<dir>/layer_00000.svg ...), in the model's own frame, to look at the slices.
+
+mixengine settings [-j <definition>] [-s key=value] [-e<N>] [--json]
+	Print the resolved global and per-extruder setting values.
+
+mixengine demo [<dir>]
+	Generate a 20 mm cube in <dir> (default: out), slice it, print where the G-code went.
+
+Settings are appended to the last supplied object:
+mixengine slice [general settings]
+	-g [current group settings]
+	-e0 [extruder train 0 settings]
+	-l obj_inheriting_from_last_extruder_train.stl [object settings]
+	--next [next group settings]
+	... etc.
+
+Exit codes: 0 success, 1 bad input (one line on stderr names the file, key or value), 2 internal error.
+)";
+}
+
+}  // namespace mixengine

@@ -1,0 +1,36 @@
+// `mixengine slice`: CuraEngine-compatible command line → pipeline → G-code file.
+#include <chrono>
+
+#include "common/Log.h"
+#include "common/ParallelFor.h"
+#include "communication/Commands.h"
+#include "communication/CommandLineParser.h"
+#include "communication/OutputFile.h"
+#include "pipeline/FffProcessor.h"
+
+namespace mixengine {
+
+int runSliceCommand(const Words& args, std::ostream& out, std::ostream& err) {
+    const auto start = std::chrono::steady_clock::now();
+    ParsedSliceArgs parsed = parseSliceArguments(args);
+    const SliceRequest& request = parsed.request;
+    Log log(err, request.verbosity);
+    log.setProgress(request.progress);
+    const int threads = effectiveThreads(request.threads);
+
+    Scene scene = prepareScene(request, log);
+    GCodeOutput gcode = runPipeline(scene, threads, log);
+    const std::string text = gcode.joined();
+    if (request.output.empty()) {
+        out << text;
+    } else {
+        writeFileAtomically(request.output, text);
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    log.info("Total time elapsed " + std::to_string(seconds) + "s");
+    log.info("Print time (s): " + std::to_string(static_cast<long long>(gcode.summary.print_time_s)));
+    log.info("Layers: " + std::to_string(gcode.layer_chunks.size()));
+    return 0;
+}
+
+}  // namespace mixengine

@@ -1,0 +1,14 @@
+#pragma once
+// Compact number formatting for G-code: fixed decimals, trailing zeros and a trailing point
+// removed, never "-0". XYZ use 3 decimals, E uses 5 (as CuraEngine and PrusaSlicer do).
+#include <string>
+
+namespace mixengine {
+
+std::string formatDecimal(double value, int decimals);
+inline std::string formatCoordMm(double mm) { return formatDecimal(mm, 3); }
+inline std::string formatExtrusionMm(double mm) { return formatDecimal(mm, 5); }
+/// Feedrate in mm/min from mm/s, at most one decimal ("F1500", "F1687.5").
+std::string formatFeedrate(double mm_per_s);
+
+}  // namespace mixengine

@@ -1,0 +1,55 @@
+#include "gcode/PlanWriter.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace mixengine {
+namespace {
+
+void extendBounds(WrittenLayers& out, const Point2& p, coord_um z) {
+    out.min = {std::min(out.min.x, p.X), std::min(out.min.y, p.Y), std::min(out.min.z, z)};
+    out.max = {std::max(out.max.x, p.X), std::max(out.max.y, p.Y), std::max(out.max.z, z)};
+}
+
+void writeStep(const PlanStep& step, const PrintPlan& plan, GCodeExport& gcode, WrittenLayers& out) {
+    switch (step.kind) {
+        case PlanStep::Kind::Travel:
+            if (step.retract) gcode.retract();
+            gcode.travel(step.to, step.speed_mm_s);
+            break;
+        case PlanStep::Kind::Extrude:
+            gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);
+            extendBounds(out, step.to, gcode.z());
+            break;
+        case PlanStep::Kind::SetFeature:
+            gcode.comment("TYPE:" + std::string(featureMarker(step.feature)));
+            break;
+        case PlanStep::Kind::SetMesh:
+            gcode.comment("MESH:" + (step.mesh_index < 0 ? std::string("NONMESH")
+                                                          : plan.mesh_names[static_cast<std::size_t>(step.mesh_index)]));
+            break;
+        case PlanStep::Kind::SetFan:
+            gcode.setFan(step.fan_ratio);
+            break;
+    }
+}
+
+}  // namespace
+
+WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode) {
+    WrittenLayers out;
+    for (const PlannedLayer& layer : plan.layers) {
+        gcode.takeText();  // start a fresh chunk
+        gcode.comment("LAYER:" + std::to_string(layer.index));
+        if (params.reset_e_each_layer && !gcode.retracted()) gcode.resetExtrusionAxis();
+        gcode.moveZ(layer.z, params.layer_change_speed_mm_s);
+        for (const PlanStep& step : layer.steps) writeStep(step, plan, gcode, out);
+        char elapsed[64];
+        std::snprintf(elapsed, sizeof elapsed, "TIME_ELAPSED:%.6f", gcode.elapsedSeconds());
+        gcode.comment(elapsed);
+        out.chunks.push_back(gcode.takeText());
+    }
+    return out;
+}
+
+}  // namespace mixengine

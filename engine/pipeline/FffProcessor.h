@@ -1,0 +1,34 @@
+#pragma once
+// The pipeline driver (CuraEngine's name for the role): Scene → slices → toolpaths → plan →
+// G-code. Each stage is a function of the previous stage's values and the resolved settings.
+#include <string>
+#include <vector>
+
+#include "common/Log.h"
+#include "gcode/Header.h"
+#include "pipeline/Scene.h"
+#include "slicing/Slicer.h"
+
+namespace mixengine {
+
+struct SlicedGroup {
+    std::vector<LayerZ> heights;
+    std::vector<std::vector<SlicedLayer>> meshes;  ///< [mesh][layer]
+};
+
+struct GCodeOutput {
+    std::string prefix;                     ///< header + start code + ;LAYER_COUNT:
+    std::vector<std::string> layer_chunks;  ///< one per layer, ";LAYER:n" first
+    std::string suffix;                     ///< end code
+    PrintSummary summary;
+
+    std::string joined() const;
+};
+
+/// Layer heights and outlines of every mesh of `group`.
+SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log);
+
+/// The whole print.
+GCodeOutput runPipeline(const Scene& scene, int threads, Log& log);
+
+}  // namespace mixengine

@@ -1,0 +1,85 @@
+#include "pipeline/Scene.h"
+
+#include <cstdlib>
+
+#include "common/Error.h"
+#include "mesh/MeshBuilder.h"
+#include "mesh/ModelReader.h"
+
+namespace mixengine {
+namespace {
+
+void placeMesh(Mesh& mesh, const Settings& group, const Settings& settings) {
+    coord_um dx = 0, dy = 0, dz = 0;
+    if (!group.boolean("machine_center_is_zero")) {
+        dx += group.lengthMicrons("machine_width") / 2;
+        dy += group.lengthMicrons("machine_depth") / 2;
+    }
+    if (settings.has("center_object") && settings.boolean("center_object")) {
+        const AABB3 box = mesh.bounds();
+        dx -= (box.min.x + box.max.x) / 2;
+        dy -= (box.min.y + box.max.y) / 2;
+        dz -= box.min.z;
+    }
+    if (settings.has("mesh_position_x")) dx += settings.lengthMicrons("mesh_position_x");
+    if (settings.has("mesh_position_y")) dy += settings.lengthMicrons("mesh_position_y");
+    if (settings.has("mesh_position_z")) dz += settings.lengthMicrons("mesh_position_z");
+    mesh.translate(dx, dy, dz);
+}
+
+std::vector<TriangleSoup> soupsOf(const MeshInput& input, Log& log) {
+    if (!input.file) return input.soups;
+    std::vector<std::string> warnings;
+    std::vector<TriangleSoup> soups = readModelFile(*input.file, warnings);
+    for (const std::string& warning : warnings) log.warning(warning);
+    return soups;
+}
+
+void addMeshes(const Scene& scene, const MeshInput& input, SceneGroup& group, Log& log) {
+    std::vector<TriangleSoup> soups = soupsOf(input, log);
+    for (std::size_t part = 0; part < soups.size(); ++part) {
+        const std::string name = soups.size() == 1 ? input.name : input.name + "#" + soups[part].name;
+        Settings settings =
+            resolveMesh(scene.definitions, scene.machine, group.settings, input.settings, input.default_extruder, name);
+        MeshBuildStats stats;
+        Mesh mesh = buildMesh(soups[part], input.transform, &stats);
+        if (stats.degenerate_dropped || stats.duplicates_dropped) {
+            log.info(name + ": dropped " + std::to_string(stats.degenerate_dropped) + " degenerate and " +
+                     std::to_string(stats.duplicates_dropped) + " duplicate facets");
+        }
+        if (mesh.faces.empty()) {
+            log.warning(name + ": no facets left after cleaning; skipped");
+            continue;
+        }
+        mesh.name = name;
+        placeMesh(mesh, group.settings, settings);
+        group.meshes.push_back({std::move(mesh), std::move(settings)});
+    }
+}
+
+}  // namespace
+
+Scene prepareSettings(const SliceRequest& request) {
+    Scene scene;
+    scene.definitions = loadDefinitionSet(request.definition, defaultSearchPath(std::getenv("CURA_ENGINE_SEARCH_PATH")));
+    scene.machine = resolveMachine(scene.definitions, request.user);
+    for (std::size_t g = 0; g < request.groups.size(); ++g) {
+        SceneGroup group;
+        group.settings = resolveMeshGroup(scene.machine, request.groups[g].settings, static_cast<int>(g));
+        scene.groups.push_back(std::move(group));
+    }
+    return scene;
+}
+
+Scene prepareScene(const SliceRequest& request, Log& log) {
+    Scene scene = prepareSettings(request);
+    for (std::size_t g = 0; g < request.groups.size(); ++g) {
+        for (const MeshInput& input : request.groups[g].meshes) addMeshes(scene, input, scene.groups[g], log);
+    }
+    bool any = false;
+    for (const SceneGroup& group : scene.groups) any = any || !group.meshes.empty();
+    if (!any) throw InputError("nothing to slice: no model given (use -l model.stl)");
+    return scene;
+}
+
+}  // namespace mixengine

@@ -1,0 +1,42 @@
+#pragma once
+// The output of planning: for every layer, the ordered steps the print head takes. Plain data;
+// the G-code writer turns it into text without making any decisions of its own.
+#include <string>
+#include <vector>
+
+#include "geometry/Point.h"
+#include "toolpaths/ExtrusionPath.h"
+
+namespace mixengine {
+
+struct PlanStep {
+    enum class Kind {
+        Travel,      ///< move without extruding to `to`; `retract` says whether to retract first
+        Extrude,     ///< move to `to` while extruding `volume_mm3`
+        SetFeature,  ///< ;TYPE: marker
+        SetMesh,     ///< ;MESH: marker (mesh_index −1 = NONMESH)
+        SetFan,      ///< fan to `fan_ratio` (0..1)
+    };
+    Kind kind = Kind::Travel;
+    Point2 to{};
+    double speed_mm_s = 0;
+    double volume_mm3 = 0;
+    bool retract = false;
+    Feature feature = Feature::Fill;
+    int mesh_index = -1;
+    double fan_ratio = 0;
+};
+
+struct PlannedLayer {
+    int index = 0;
+    coord_um z = 0;          ///< nozzle height
+    int extruder = 0;
+    std::vector<PlanStep> steps;
+};
+
+struct PrintPlan {
+    std::vector<PlannedLayer> layers;
+    std::vector<std::string> mesh_names;  ///< for ;MESH: markers
+};
+
+}  // namespace mixengine
