@@ -20,7 +20,7 @@ void printText(const Settings& settings, std::ostream& out) {
 
 }  // namespace
 
-int runSettingsCommand(const Words& args, std::ostream& out, std::ostream&) {
+int runSettingsCommand(const Words& args, std::ostream& out, std::ostream& err) {
     bool json_output = false;
     Words slice_args;
     for (const std::string& word : args) {
@@ -31,6 +31,9 @@ int runSettingsCommand(const Words& args, std::ostream& out, std::ostream&) {
         }
     }
     const Scene scene = prepareSettings(parseSliceArguments(slice_args).request);
+    for (const std::string& failure : scene.machine.formula_failures) {
+        err << "[warning] formula fell back to default_value: " << failure << '\n';
+    }
     if (json_output) {
         nlohmann::json doc;
         doc["machine"] = scene.definitions.machine_id;

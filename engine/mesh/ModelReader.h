@@ -19,10 +19,11 @@
 namespace mixengine {
 
 struct TriangleSoup {
-    std::string name;                              ///< part name (file stem, OBJ group or 3MF object name)
-    std::vector<std::array<Vec3, 3>> triangles;    ///< millimetres
+    std::string name;                            ///< part name (file stem, OBJ group or 3MF object name)
+    std::vector<std::array<Vec3, 3>> triangles;  ///< millimetres
 };
 
-std::vector<TriangleSoup> readModelFile(const std::filesystem::path& file, std::vector<std::string>& warnings);
+std::vector<TriangleSoup> readModelFile(const std::filesystem::path& file,
+                                        std::vector<std::string>& warnings);
 
 }  // namespace mixengine

@@ -35,12 +35,14 @@ std::vector<TriangleSoup> soupsOf(const MeshInput& input, Log& log) {
     return soups;
 }
 
-void addMeshes(const Scene& scene, const MeshInput& input, SceneGroup& group, Log& log) {
+void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshInput& input, SceneGroup& group,
+               Log& log) {
     std::vector<TriangleSoup> soups = soupsOf(input, log);
     for (std::size_t part = 0; part < soups.size(); ++part) {
         const std::string name = soups.size() == 1 ? input.name : input.name + "#" + soups[part].name;
         Settings settings =
-            resolveMesh(scene.definitions, scene.machine, group.settings, input.settings, input.default_extruder, name);
+            resolveMesh(scene.definitions, request_user, scene.machine, group.settings, input.settings,
+                        input.default_extruder, name);
         MeshBuildStats stats;
         Mesh mesh = buildMesh(soups[part], input.transform, &stats);
         if (stats.degenerate_dropped || stats.duplicates_dropped) {
@@ -74,7 +76,7 @@ Scene prepareSettings(const SliceRequest& request) {
 Scene prepareScene(const SliceRequest& request, Log& log) {
     Scene scene = prepareSettings(request);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
-        for (const MeshInput& input : request.groups[g].meshes) addMeshes(scene, input, scene.groups[g], log);
+        for (const MeshInput& input : request.groups[g].meshes) addMeshes(scene, request.user, input, scene.groups[g], log);
     }
     bool any = false;
     for (const SceneGroup& group : scene.groups) any = any || !group.meshes.empty();

@@ -7,8 +7,10 @@
 //   inclusive — the top of the slab is cut but the union over the slab is wanted; we cut at the
 //               slab's top and bottom and union the two outlines (see Slicer);
 //   exclusive — the intersection of the cuts at the slab's top and bottom.
-// Layer count = floor((z_max − layer_height_0) / layer_height) + 1 (0 when z_max < layer_height_0
-// would give nothing printable; at least 1 when z_max > 0).
+// Layer count = floor((z_max − layer_height_0) / layer_height) + 1, with two edge cases: no layer at
+// all when z_max ≤ 0, and exactly one layer when 0 < z_max < layer_height_0 (a model thinner than
+// the first layer still gets layer 0). Halves of odd micron heights are rounded down.
+// Throws InputError when layer_height_0 or layer_height is not positive.
 #include <vector>
 
 #include "geometry/Point.h"

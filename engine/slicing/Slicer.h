@@ -10,7 +10,18 @@
 //     gaps (≤ max_gap_um) are closed; polylines that cannot be closed are reported in
 //     `open_polylines` and are not part of `outlines`;
 //   - outlines are the union of all closed loops (overlapping shells merged, holes by nesting,
-//     independent of facet winding): outer contours counter-clockwise, holes clockwise.
+//     independent of facet winding): outer contours counter-clockwise, holes clockwise
+//     (slicing/OutlineBuilder.h has the exact rules);
+//   - a cut at height z is taken just below z (vertices on the plane count as above it,
+//     slicing/FacetPlane.h): a plane through the top face of a body still cuts the body, a plane
+//     through its bottom face does not;
+//   - slicing_tolerance: middle cuts at LayerZ::slice_z; inclusive / exclusive cut just below the
+//     slab's top (print_z) and just above its bottom (bottom_z) and take the union / intersection,
+//     so a body standing on z = 0 is present in layer 0 in every mode;
+//   - only facets whose z-range contains a plane are cut there (slicing/FacetBuckets.h); layers are
+//     sliced in parallel (slicing/ParallelFor.h); the result does not depend on the thread count.
+// Errors: InputError for a mesh beyond ±1 km (the exact 64-bit interpolation's range), InternalError
+// for a face index out of range. A warning names the mesh when open polylines were left out.
 #include <vector>
 
 #include "common/Log.h"
@@ -22,23 +33,24 @@ namespace mixengine {
 
 struct SliceOptions {
     SlicingTolerance tolerance = SlicingTolerance::Middle;
-    coord_um max_gap_um = 100;        ///< gaps up to this size are closed while stitching
+    coord_um max_gap_um = 100;          ///< gaps up to this size are closed while stitching
     coord_um min_polygon_area_um2 = 0;  ///< loops with |area| below this are dropped (noise)
-    int threads = 2;                  ///< layers are sliced in parallel
+    int threads = 2;                    ///< layers are sliced in parallel (values < 1 mean 1)
 };
 
 struct SlicedLayer {
     coord_um print_z = 0;
     coord_um slice_z = 0;
-    Paths outlines;         ///< closed, unioned; outer CCW, holes CW
-    Paths open_polylines;   ///< pieces that could not be closed (kept out of outlines)
+    Paths outlines;        ///< closed, unioned; outer CCW, holes CW
+    Paths open_polylines;  ///< pieces that could not be closed (kept out of outlines)
 };
 
 /// Cuts the mesh at every layer of `layers`; result[i] belongs to layers[i].
-std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& layers, const SliceOptions& options,
-                                   Log& log);
+std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& layers,
+                                   const SliceOptions& options, Log& log);
 
-/// One plane only (used by tests and by the cut at exact heights).
+/// One plane only, cut just below z (used by tests and by the cut at exact heights);
+/// options.tolerance and options.threads are not used; open pieces are not logged.
 SlicedLayer slicePlane(const Mesh& mesh, coord_um z, const SliceOptions& options);
 
 }  // namespace mixengine

@@ -1,0 +1,94 @@
+#pragma once
+// Cura's setting stack, evaluated: the value of every setting in every scope as Cura 4.13 would
+// compute it, `value` / `resolve` / `limit_to_extruder` formulas included.
+//
+// Scopes and the order in which a key is looked up (first hit wins):
+//   global       user -s values; the `resolve` formula (unless the user set the key); the value of
+//                the extruder named by `limit_to_extruder` (settable-per-extruder keys only); the
+//                machine definition's `value` formula, else its `default_value`.
+//   extruder N   keys that are not settable per extruder: the global value. Otherwise the value of
+//                the extruder named by `limit_to_extruder` when it is another one (looked up there
+//                without limiting again, so never recursively); -eN user values; global user
+//                values; the extruder definition's value; the machine definition's value.
+//   mesh         its own user values; the extruder named by `limit_to_extruder`; then as its
+//                extruder train, with formulas evaluated in the mesh's scope so that a per-mesh
+//                value (e.g. infill_sparse_density) flows into the keys computed from it.
+// Formulas are evaluated in the scope that asked ("the root stack", as in Cura), lazily, with
+// memoisation and cycle detection. Cura's functions extruderValue, extruderValues,
+// resolveOrValue, defaultExtruderPosition, anyExtruderWithMaterial and
+// anyExtruderNrWithOrDefault are provided; every extruder counts as enabled.
+//
+// Errors: a cycle, or a formula that fails, is an InputError naming the setting and the formula.
+// allText() evaluates every key; a failing *definition* formula there falls back to the
+// definition's default_value and is reported in failures() instead of stopping the slice.
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "common/Error.h"
+#include "settings/DefinitionSet.h"
+#include "settings/Resolver.h"
+#include "settings/formula/Expression.h"
+#include "settings/formula/Value.h"
+
+namespace mixengine {
+
+/// A value the user gave (-s, or Cura's message) that does not fit its setting's type.
+class UserValueError : public InputError {
+public:
+    using InputError::InputError;
+};
+
+class StackEvaluator {
+public:
+    StackEvaluator(const DefinitionSet& definitions, const UserSettings& user, int extruder_count);
+    ~StackEvaluator();
+    StackEvaluator(const StackEvaluator&) = delete;
+    StackEvaluator& operator=(const StackEvaluator&) = delete;
+
+    static constexpr int kGlobal = 0;
+    static int extruderScope(int extruder_nr) { return 1 + extruder_nr; }
+    int extruderCount() const { return extruder_count_; }
+
+    /// Adds a mesh scope on top of extruder train `extruder`; returns its scope id.
+    int addMeshScope(SettingValues user, int extruder);
+
+    /// The value of `key` in `scope`; nullopt when no definition and no user value has it.
+    std::optional<formula::Value> value(int scope, std::string_view key);
+
+    /// Every key known in `scope` (definitions and user values) as text.
+    SettingValues allText(int scope);
+
+    /// "setting: formula: problem" lines for definition formulas that failed in allText().
+    const std::vector<std::string>& failures() const { return failures_; }
+
+private:
+    struct Scope;
+    class ScopeEnvironment;
+    enum class Mode { Normal, NoLimit, Raw };
+
+    formula::Value resolve(int scope, std::string_view key, Mode mode);
+    std::optional<formula::Value> resolveGlobal(std::string_view key, Mode mode);
+    std::optional<formula::Value> resolveTrain(int scope, std::string_view key, Mode mode);
+    std::optional<formula::Value> fromDefinitions(int scope, std::string_view key);
+    std::optional<int> limitTarget(int scope, const SettingDefinition& def);
+    formula::Value evaluateFormula(int scope, std::string_view key, const std::string& formula);
+    formula::Value userValue(std::string_view key, const std::string& text) const;
+    std::optional<formula::Value> callCuraFunction(int scope, std::string_view name,
+                                                   const std::vector<formula::Value>& args);
+    const SettingDefinition* extruderOwn(int extruder, std::string_view key) const;
+    const SettingDefinition* anyDefinition(std::string_view key) const;
+    const formula::Expression& compiled(const std::string& formula);
+
+    const DefinitionSet& definitions_;
+    const UserSettings& user_;
+    int extruder_count_;
+    std::vector<std::unique_ptr<Scope>> scopes_;
+    std::unordered_map<const std::string*, std::unique_ptr<formula::Expression>> expressions_;
+    std::vector<std::string> failures_;
+};
+
+}  // namespace mixengine

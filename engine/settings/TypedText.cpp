@@ -1,0 +1,63 @@
+#include "settings/TypedText.h"
+
+#include <cmath>
+#include <optional>
+
+#include "common/Error.h"
+#include "settings/ValueParse.h"
+#include "settings/formula/Formula.h"
+
+namespace mixengine {
+namespace {
+
+/// Formulas with no names, to read Python literals such as lists.
+class NoNames : public formula::Environment {
+public:
+    std::optional<formula::Value> lookup(std::string_view) const override { return std::nullopt; }
+    std::optional<formula::Value> callFunction(std::string_view, const std::vector<formula::Value>&) const override {
+        return std::nullopt;
+    }
+};
+
+formula::Value literal(std::string_view key, std::string_view text) {
+    try {
+        return formula::evaluate(formula::parse(text), NoNames());
+    } catch (const InputError&) {
+        throw InputError("setting '" + std::string(key) + "': value '" + std::string(text) + "' is not a Python literal");
+    }
+}
+
+bool looksLikeNumber(std::string_view text) {
+    try {
+        parseReal("", text);
+        return true;
+    } catch (const InputError&) {
+        return false;
+    }
+}
+
+}  // namespace
+
+formula::Value valueFromText(std::string_view key, std::string_view type, std::string_view text) {
+    if (type == "float") return parseReal(key, text);
+    if (type == "int" || type == "extruder" || type == "optional_extruder") {
+        const double number = parseReal(key, text);
+        return static_cast<std::int64_t>(std::llround(number));
+    }
+    if (type == "bool") return parseBool(key, text);
+    if (type == "polygon" || type == "polygons" || type == "[int]") return literal(key, text);
+    if (type == "str" || type == "enum") return std::string(text);
+    // Unknown keys: numbers as numbers, Python booleans as booleans, everything else as text.
+    if (text == "True" || text == "False") return text == "True";
+    if (looksLikeNumber(text)) {
+        const double number = parseReal(key, text);
+        const bool integral = text.find_first_of(".eE") == std::string_view::npos;
+        if (integral && std::fabs(number) < 9e15) return static_cast<std::int64_t>(number);
+        return number;
+    }
+    return std::string(text);
+}
+
+std::string textFromValue(const formula::Value& value) { return formula::toPythonStr(value); }
+
+}  // namespace mixengine

@@ -1,0 +1,281 @@
+#include "settings/formula/Builtins.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <string>
+
+#include "settings/formula/FormulaError.h"
+#include "settings/formula/Numeric.h"
+#include "settings/formula/Operators.h"
+
+namespace mixengine::formula {
+
+namespace {
+
+using detail::EvalProblem;
+
+constexpr int kVariadic = -1;
+
+struct BuiltinInfo {
+    Builtin id;
+    std::string_view name;
+    int minArgs;
+    int maxArgs;
+};
+
+constexpr std::array<BuiltinInfo, 36> kBuiltins = {{
+    {Builtin::Abs, "abs", 1, 1},
+    {Builtin::All, "all", 1, 1},
+    {Builtin::Any, "any", 1, 1},
+    {Builtin::Bool, "bool", 0, 1},
+    {Builtin::Float, "float", 0, 1},
+    {Builtin::Int, "int", 0, 1},
+    {Builtin::Len, "len", 1, 1},
+    {Builtin::List, "list", 0, 1},
+    {Builtin::Map, "map", 2, kVariadic},
+    {Builtin::Max, "max", 1, kVariadic},
+    {Builtin::Min, "min", 1, kVariadic},
+    {Builtin::Round, "round", 1, 2},
+    {Builtin::Sorted, "sorted", 1, 1},
+    {Builtin::Str, "str", 0, 1},
+    {Builtin::Sum, "sum", 1, 2},
+    {Builtin::MathSqrt, "math.sqrt", 1, 1},
+    {Builtin::MathCeil, "math.ceil", 1, 1},
+    {Builtin::MathFloor, "math.floor", 1, 1},
+    {Builtin::MathTrunc, "math.trunc", 1, 1},
+    {Builtin::MathLog, "math.log", 1, 2},
+    {Builtin::MathLog10, "math.log10", 1, 1},
+    {Builtin::MathLog2, "math.log2", 1, 1},
+    {Builtin::MathExp, "math.exp", 1, 1},
+    {Builtin::MathSin, "math.sin", 1, 1},
+    {Builtin::MathCos, "math.cos", 1, 1},
+    {Builtin::MathTan, "math.tan", 1, 1},
+    {Builtin::MathAsin, "math.asin", 1, 1},
+    {Builtin::MathAcos, "math.acos", 1, 1},
+    {Builtin::MathAtan, "math.atan", 1, 1},
+    {Builtin::MathAtan2, "math.atan2", 2, 2},
+    {Builtin::MathRadians, "math.radians", 1, 1},
+    {Builtin::MathDegrees, "math.degrees", 1, 1},
+    {Builtin::MathFabs, "math.fabs", 1, 1},
+    {Builtin::MathPow, "math.pow", 2, 2},
+    {Builtin::MathIsclose, "math.isclose", 2, 2},
+    {Builtin::MathHypot, "math.hypot", 2, 2},
+}};
+
+constexpr bool tableMatchesEnum() {
+    for (std::size_t i = 0; i < kBuiltins.size(); ++i) {
+        if (static_cast<std::size_t>(kBuiltins[i].id) != i)
+            return false;
+    }
+    return true;
+}
+static_assert(tableMatchesEnum(), "kBuiltins must list the Builtin ids in enum order");
+
+const BuiltinInfo& info(Builtin id) {
+    return kBuiltins[static_cast<std::size_t>(id)];
+}
+
+void checkArgCount(const BuiltinInfo& b, std::size_t given) {
+    const auto n = static_cast<int>(given);
+    if (n >= b.minArgs && (b.maxArgs == kVariadic || n <= b.maxArgs))
+        return;
+    std::string expected;
+    if (b.minArgs == b.maxArgs) {
+        expected = "exactly " + std::to_string(b.minArgs);
+    } else if (b.maxArgs == kVariadic) {
+        expected = "at least " + std::to_string(b.minArgs);
+    } else {
+        expected = "from " + std::to_string(b.minArgs) + " to " + std::to_string(b.maxArgs);
+    }
+    throw EvalProblem(std::string(b.name) + "() takes " + expected + " argument(s) (" +
+                      std::to_string(given) + " given)");
+}
+
+bool isIntLike(const Value& v) {
+    return v.is<bool>() || v.is<std::int64_t>();
+}
+
+Value absValue(const Value& v) {
+    if (v.is<double>())
+        return std::fabs(v.as<double>());
+    if (isIntLike(v))
+        return asInt(v) < 0 ? negInt(asInt(v)) : asInt(v);
+    throw EvalProblem("bad operand type for abs(): '" + std::string(typeName(v)) + "'");
+}
+
+Value toFloat(const Value& v) {
+    if (v.isNumber())
+        return asDouble(v);
+    if (v.is<std::string>())
+        return parseFloatString(v.as<std::string>());
+    throw EvalProblem("float() argument must be a string or a real number, not '" + std::string(typeName(v)) +
+                      "'");
+}
+
+Value toInt(const Value& v) {
+    if (isIntLike(v))
+        return asInt(v);
+    if (v.is<double>())
+        return truncToInt(v.as<double>());
+    if (v.is<std::string>())
+        return parseIntString(v.as<std::string>());
+    throw EvalProblem("int() argument must be a string or a real number, not '" + std::string(typeName(v)) +
+                      "'");
+}
+
+Value length(const Value& v) {
+    if (v.is<std::string>())
+        return utf8Characters(v.as<std::string>()).size();
+    if (v.is<List>())
+        return v.as<List>().size();
+    throw EvalProblem("object of type '" + std::string(typeName(v)) + "' has no len()");
+}
+
+Value mapValues(const std::vector<Value>& args) {
+    if (!args[0].is<FunctionRef>()) {
+        throw EvalProblem("map(): '" + std::string(typeName(args[0])) + "' object is not callable");
+    }
+    std::vector<List> iterables;
+    std::size_t shortest = SIZE_MAX;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+        iterables.push_back(iterate(args[i], "map()"));
+        shortest = std::min(shortest, iterables.back().size());
+    }
+    List out;
+    for (std::size_t k = 0; k < shortest; ++k) {
+        std::vector<Value> callArgs;
+        for (const List& it : iterables)
+            callArgs.push_back(it[k]);
+        out.push_back(callBuiltin(args[0].as<FunctionRef>().id, callArgs));
+    }
+    return out;
+}
+
+Value extreme(const std::vector<Value>& args, bool wantMax) {
+    const char* name = wantMax ? "max" : "min";
+    const List items = args.size() == 1 ? iterate(args[0], std::string(name) + "()") : List(args);
+    if (items.empty())
+        throw EvalProblem(std::string(name) + "() arg is an empty sequence");
+    const Value* best = &items[0];
+    for (std::size_t i = 1; i < items.size(); ++i) {
+        const auto order = pythonOrder(items[i], *best, wantMax ? ">" : "<");
+        if (wantMax ? order > 0 : order < 0)
+            best = &items[i];
+    }
+    return *best;
+}
+
+Value roundValue(const std::vector<Value>& args) {
+    const Value& x = args[0];
+    if (!x.isNumber())
+        throw EvalProblem("type " + std::string(typeName(x)) + " doesn't define __round__ method");
+    if (args.size() == 1 || args[1].isNone())
+        return x.is<double>() ? Value(roundToInt(x.as<double>())) : asInt(x);
+    if (!isIntLike(args[1])) {
+        throw EvalProblem("round(): '" + std::string(typeName(args[1])) +
+                          "' object cannot be interpreted as an integer");
+    }
+    const std::int64_t ndigits = asInt(args[1]);
+    if (x.is<double>())
+        return roundFloatDigits(x.as<double>(), ndigits);
+    return roundIntDigits(asInt(x), ndigits);
+}
+
+Value sortedValues(const Value& iterable) {
+    List items = iterate(iterable, "sorted()");
+    std::stable_sort(items.begin(), items.end(),
+                     [](const Value& a, const Value& b) { return pythonOrder(a, b, "<") < 0; });
+    return items;
+}
+
+Value sumValues(const std::vector<Value>& args) {
+    Value total = args.size() > 1 ? args[1] : Value(0);
+    if (total.is<std::string>())
+        throw EvalProblem("sum() can't sum strings [use ''.join(seq) instead]");
+    for (const Value& item : iterate(args[0], "sum()"))
+        total = binaryOp(detail::BinaryOp::Add, total, item);
+    return total;
+}
+
+bool anyAll(const Value& iterable, bool wantAll) {
+    for (const Value& item : iterate(iterable, wantAll ? "all()" : "any()")) {
+        if (truthy(item) != wantAll)
+            return !wantAll;
+    }
+    return wantAll;
+}
+
+}  // namespace
+
+std::string_view builtinName(Builtin id) {
+    return info(id).name;
+}
+
+std::optional<Builtin> findBuiltin(std::string_view name) {
+    for (const BuiltinInfo& b : kBuiltins) {
+        if (b.name == name)
+            return b.id;
+    }
+    return std::nullopt;
+}
+
+std::optional<Value> findMathMember(std::string_view name) {
+    if (name == "pi")
+        return std::numbers::pi;
+    if (name == "e")
+        return std::numbers::e;
+    if (name == "tau")
+        return 2 * std::numbers::pi;
+    if (name == "inf")
+        return std::numeric_limits<double>::infinity();
+    if (name == "nan")
+        return std::numeric_limits<double>::quiet_NaN();
+    const auto found = findBuiltin("math." + std::string(name));
+    if (found)
+        return Value(FunctionRef{*found});
+    return std::nullopt;
+}
+
+Value callBuiltin(Builtin id, const std::vector<Value>& args) {
+    checkArgCount(info(id), args.size());
+    switch (id) {
+        case Builtin::Abs:
+            return absValue(args[0]);
+        case Builtin::All:
+            return anyAll(args[0], true);
+        case Builtin::Any:
+            return anyAll(args[0], false);
+        case Builtin::Bool:
+            return !args.empty() && truthy(args[0]);
+        case Builtin::Float:
+            return args.empty() ? Value(0.0) : toFloat(args[0]);
+        case Builtin::Int:
+            return args.empty() ? Value(0) : toInt(args[0]);
+        case Builtin::Len:
+            return length(args[0]);
+        case Builtin::List:
+            return args.empty() ? Value(List{}) : Value(iterate(args[0], "list()"));
+        case Builtin::Map:
+            return mapValues(args);
+        case Builtin::Max:
+            return extreme(args, true);
+        case Builtin::Min:
+            return extreme(args, false);
+        case Builtin::Round:
+            return roundValue(args);
+        case Builtin::Sorted:
+            return sortedValues(args[0]);
+        case Builtin::Str:
+            return args.empty() ? Value("") : Value(toPythonStr(args[0]));
+        case Builtin::Sum:
+            return sumValues(args);
+        default:
+            return callMathBuiltin(id, args);
+    }
+}
+
+}  // namespace mixengine::formula

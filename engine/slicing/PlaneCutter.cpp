@@ -1,0 +1,55 @@
+#include "slicing/PlaneCutter.h"
+
+#include <climits>
+#include <string>
+
+#include "common/Error.h"
+#include "slicing/OutlineBuilder.h"
+#include "slicing/Slicer.h"
+
+namespace mixengine {
+namespace {
+
+bool withinRange(const Point3& p) {
+    auto ok = [](coord_um c) { return c >= -kMaxSliceCoordinateUm && c <= kMaxSliceCoordinateUm; };
+    return ok(p.x) && ok(p.y) && ok(p.z);
+}
+
+}  // namespace
+
+void validateMeshForSlicing(const Mesh& mesh) {
+    if (mesh.faces.size() > static_cast<std::size_t>(INT32_MAX)) {
+        throw InputError("mesh '" + mesh.name + "' has too many faces to slice (" +
+                         std::to_string(mesh.faces.size()) + ")");
+    }
+    for (const Point3& p : mesh.vertices) {
+        if (!withinRange(p)) {
+            throw InputError("mesh '" + mesh.name + "' extends beyond 1 km from the origin; check its units");
+        }
+    }
+    for (const Face& face : mesh.faces) {
+        for (std::uint32_t v : face.v) {
+            if (v >= mesh.vertices.size())
+                throw InternalError("mesh '" + mesh.name + "': face index out of range");
+        }
+    }
+}
+
+Paths PlaneCutter::cut(const Mesh& mesh, std::span<const std::uint32_t> facets, coord_um plane_z,
+                       OnPlaneRule rule, const SliceOptions& options, Paths& open_polylines) {
+    segments_.clear();
+    for (std::uint32_t f : facets) {
+        const Face& face = mesh.faces[f];
+        const auto segment = cutFacet(mesh.vertices[face.v[0]], mesh.vertices[face.v[1]],
+                                      mesh.vertices[face.v[2]], plane_z, rule);
+        if (segment)
+            segments_.push_back(*segment);
+    }
+    segment_count_ += segments_.size();
+    StitchResult stitched = stitcher_.stitch(segments_, options.max_gap_um);
+    for (Path& open : stitched.open_polylines)
+        open_polylines.push_back(std::move(open));
+    return buildOutlines(stitched.loops, static_cast<double>(options.min_polygon_area_um2));
+}
+
+}  // namespace mixengine

@@ -1,0 +1,54 @@
+#pragma once
+// Joins the cut segments of one plane into closed loops (linear time).
+//
+// Contract:
+//   - segments are chained through a hash of their exact end points (PointMultimap): both facets
+//     sharing a crossed edge compute the same integer point (slicing/FacetPlane.h), so a closed
+//     surface chains without tolerance. Zero-length segments are ignored.
+//   - the chaining does not depend on segment direction; where several segments meet at one
+//     point it prefers the one that continues in facet direction (consistent winding), so
+//     touching shells separate cleanly.
+//   - open chains whose ends lie within max_gap_um of each other are then joined, nearest ends
+//     first (slicing/GapCloser.h); what stays open is returned in `open_polylines`.
+//   - every loop records how much of its length follows the facets' direction and how much runs
+//     against it; the outline builder uses this to tell a solid nested in a solid from a cavity.
+#include <vector>
+
+#include "geometry/Point.h"
+#include "slicing/FacetPlane.h"
+#include "slicing/PointMultimap.h"
+
+namespace mixengine {
+
+/// A chain of cut segments in microns.
+struct StitchedPath {
+    Path points;                   ///< for a loop: closed, first point not repeated
+    double along_facets_um = 0;    ///< length of segments traversed in their facet direction
+    double against_facets_um = 0;  ///< length of segments traversed against it
+};
+
+struct StitchResult {
+    std::vector<StitchedPath> loops;  ///< closed loops, any orientation
+    Paths open_polylines;             ///< chains that could not be closed
+};
+
+/// Reusable (keeps its buffers between cuts); one per thread.
+class SegmentStitcher {
+  public:
+    StitchResult stitch(const std::vector<FacetSegment>& segments, coord_um max_gap_um);
+
+  private:
+    /// Marks and returns an unused segment end at `point` (kNone if there is none), preferring a
+    /// segment that starts there (prefer_start) or ends there (!prefer_start).
+    std::int32_t takeEndAt(const Point2& point, bool prefer_start);
+    /// Appends segments at the back of `path` until it closes (returns true) or runs out.
+    bool extendForward(StitchedPath& path, const std::vector<FacetSegment>& segments);
+    /// Prepends segments at the front of an open `path` until it runs out.
+    void extendBackward(StitchedPath& path, const std::vector<FacetSegment>& segments);
+
+    PointMultimap ends_;
+    std::vector<char> used_;
+    Path prefix_;
+};
+
+}  // namespace mixengine

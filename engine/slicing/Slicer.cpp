@@ -1,0 +1,153 @@
+#include "slicing/Slicer.h"
+
+#include <algorithm>
+#include <mutex>
+#include <string>
+
+#include "slicing/FacetBuckets.h"
+#include "slicing/ParallelFor.h"
+#include "slicing/PlaneCutter.h"
+
+namespace mixengine {
+namespace {
+
+/// One cut of a layer: a plane (index into the sorted heights) and the side it is taken on.
+struct Cut {
+    std::size_t plane = 0;
+    OnPlaneRule rule = OnPlaneRule::CountAsAbove;
+};
+
+/// The heights to cut at (ascending, unique) and, per layer, its one or two cuts.
+struct CutPlan {
+    std::vector<coord_um> plane_z;
+    std::vector<std::vector<Cut>> layer_cuts;
+};
+
+std::size_t planeIndex(const std::vector<coord_um>& plane_z, coord_um z) {
+    return static_cast<std::size_t>(std::lower_bound(plane_z.begin(), plane_z.end(), z) - plane_z.begin());
+}
+
+/// Middle: the slab's middle, taken just below. Inclusive / exclusive: the slab's top taken just
+/// below it and the slab's bottom taken just above it, i.e. the two extremes inside the slab.
+CutPlan planCuts(const std::vector<LayerZ>& layers, SlicingTolerance tolerance) {
+    CutPlan plan;
+    for (const LayerZ& layer : layers) {
+        if (tolerance == SlicingTolerance::Middle) {
+            plan.plane_z.push_back(layer.slice_z);
+        } else {
+            plan.plane_z.push_back(layer.print_z);
+            plan.plane_z.push_back(layer.bottom_z);
+        }
+    }
+    std::sort(plan.plane_z.begin(), plan.plane_z.end());
+    plan.plane_z.erase(std::unique(plan.plane_z.begin(), plan.plane_z.end()), plan.plane_z.end());
+    for (const LayerZ& layer : layers) {
+        if (tolerance == SlicingTolerance::Middle) {
+            plan.layer_cuts.push_back({{planeIndex(plan.plane_z, layer.slice_z), OnPlaneRule::CountAsAbove}});
+        } else {
+            plan.layer_cuts.push_back(
+                {{planeIndex(plan.plane_z, layer.print_z), OnPlaneRule::CountAsAbove},
+                 {planeIndex(plan.plane_z, layer.bottom_z), OnPlaneRule::CountAsBelow}});
+        }
+    }
+    return plan;
+}
+
+/// Inclusive: union of the two cuts; exclusive: their intersection.
+Paths combineCuts(const Paths& top, const Paths& bottom, SlicingTolerance tolerance) {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(top, ClipperLib::ptSubject, true);
+    clipper.AddPaths(bottom, ClipperLib::ptClip, true);
+    const auto type =
+        tolerance == SlicingTolerance::Inclusive ? ClipperLib::ctUnion : ClipperLib::ctIntersection;
+    Paths result;
+    clipper.Execute(type, result, ClipperLib::pftPositive, ClipperLib::pftPositive);
+    return result;
+}
+
+/// Reports progress every ~2 % of the layers, in order, from any thread.
+class ProgressReporter {
+  public:
+    ProgressReporter(Log& log, std::size_t total)
+        : log_(log), total_(total), step_(std::max<std::size_t>(1, total / 50)) {}
+    void layerDone() {
+        std::lock_guard lock(mutex_);
+        ++done_;
+        if (done_ % step_ == 0 || done_ == total_)
+            log_.progress("slicing", static_cast<double>(done_) / total_);
+    }
+
+  private:
+    Log& log_;
+    std::size_t total_;
+    std::size_t step_;
+    std::size_t done_ = 0;
+    std::mutex mutex_;
+};
+
+void reportOpenPolylines(const std::vector<SlicedLayer>& result, const Mesh& mesh, Log& log) {
+    std::size_t layers_with_open = 0;
+    std::size_t open_count = 0;
+    coord_um first_z = 0;
+    for (const SlicedLayer& layer : result) {
+        if (layer.open_polylines.empty())
+            continue;
+        if (layers_with_open++ == 0)
+            first_z = layer.print_z;
+        open_count += layer.open_polylines.size();
+    }
+    if (layers_with_open == 0)
+        return;
+    log.warning("mesh '" + mesh.name + "' is not closed: " + std::to_string(open_count) +
+                " open outline pieces left out in " + std::to_string(layers_with_open) +
+                " layers (first at z = " + std::to_string(micronsToMm(first_z)) + " mm)");
+}
+
+}  // namespace
+
+std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& layers,
+                                   const SliceOptions& options, Log& log) {
+    validateMeshForSlicing(mesh);
+    const CutPlan plan = planCuts(layers, options.tolerance);
+    const FacetBuckets buckets(mesh, plan.plane_z);
+    std::vector<PlaneCutter> cutters(static_cast<std::size_t>(workerCount(layers.size(), options.threads)));
+    std::vector<SlicedLayer> result(layers.size());
+    ProgressReporter progress(log, layers.size());
+    parallelFor(layers.size(), options.threads, [&](std::size_t i, int worker) {
+        PlaneCutter& cutter = cutters[static_cast<std::size_t>(worker)];
+        SlicedLayer& out = result[i];
+        out.print_z = layers[i].print_z;
+        out.slice_z = layers[i].slice_z;
+        std::vector<Paths> cuts;
+        for (const Cut& cut : plan.layer_cuts[i]) {
+            cuts.push_back(cutter.cut(mesh, buckets.facetsAt(cut.plane), plan.plane_z[cut.plane], cut.rule,
+                                      options, out.open_polylines));
+        }
+        out.outlines =
+            cuts.size() == 1 ? std::move(cuts[0]) : combineCuts(cuts[0], cuts[1], options.tolerance);
+        progress.layerDone();
+    });
+    std::size_t segments = 0;
+    for (const PlaneCutter& cutter : cutters)
+        segments += cutter.segmentCount();
+    log.info("sliced '" + mesh.name + "': " + std::to_string(layers.size()) + " layers, " +
+             std::to_string(mesh.faces.size()) + " facets, " + std::to_string(segments) + " segments");
+    reportOpenPolylines(result, mesh, log);
+    return result;
+}
+
+SlicedLayer slicePlane(const Mesh& mesh, coord_um z, const SliceOptions& options) {
+    validateMeshForSlicing(mesh);
+    std::vector<std::uint32_t> all_facets(mesh.faces.size());
+    for (std::size_t f = 0; f < all_facets.size(); ++f)
+        all_facets[f] = static_cast<std::uint32_t>(f);
+    SlicedLayer layer;
+    layer.print_z = z;
+    layer.slice_z = z;
+    PlaneCutter cutter;
+    layer.outlines =
+        cutter.cut(mesh, all_facets, z, OnPlaneRule::CountAsAbove, options, layer.open_polylines);
+    return layer;
+}
+
+}  // namespace mixengine
