@@ -26,9 +26,18 @@ struct MeshGroupInput {
     std::vector<MeshInput> meshes;
 };
 
+/// Cura's profile containers to stack under the user's values (settings/ProfileStack.h). Empty
+/// names mean the machine's default (its metadata: preferred_variant_name, preferred_material,
+/// preferred_quality_type); `enabled` false means definitions only, as CuraEngine's CLI does.
+struct ProfileSelection {
+    bool enabled = false;
+    std::string variant, material, quality, intent;
+};
+
 struct SliceRequest {
     std::string definition = "fdmprinter";  ///< -j: a path or a definition id
     UserSettings user;                      ///< global and -eN values
+    ProfileSelection profiles;              ///< --variant/--material/--quality/--intent
     std::vector<MeshGroupInput> groups;     ///< --next starts a new group (one-at-a-time printing)
     std::filesystem::path output;           ///< -o; empty = standard output
     int threads = 0;                        ///< -m; 0 = all cores

@@ -42,7 +42,7 @@ void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshI
         const std::string name = soups.size() == 1 ? input.name : input.name + "#" + soups[part].name;
         Settings settings =
             resolveMesh(scene.definitions, request_user, scene.machine, group.settings, input.settings,
-                        input.default_extruder, name);
+                        input.default_extruder, name, &scene.profiles);
         MeshBuildStats stats;
         Mesh mesh = buildMesh(soups[part], input.transform, &stats);
         if (stats.degenerate_dropped || stats.duplicates_dropped) {
@@ -64,7 +64,7 @@ void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshI
 Scene prepareSettings(const SliceRequest& request) {
     Scene scene;
     scene.definitions = loadDefinitionSet(request.definition, defaultSearchPath(std::getenv("CURA_ENGINE_SEARCH_PATH")));
-    scene.machine = resolveMachine(scene.definitions, request.user);
+    scene.machine = resolveMachine(scene.definitions, request.user, &scene.profiles);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
         SceneGroup group;
         group.settings = resolveMeshGroup(scene.machine, request.groups[g].settings, static_cast<int>(g));

@@ -27,6 +27,7 @@ struct SceneGroup {
 
 struct Scene {
     DefinitionSet definitions;
+    ProfileStack profiles;  ///< empty unless the request selected profiles
     ResolvedMachine machine;
     std::vector<SceneGroup> groups;
 };

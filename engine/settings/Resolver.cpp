@@ -17,15 +17,16 @@ int userExtruderCount(const DefinitionSet& definitions, const UserSettings& user
 
 }  // namespace
 
-ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSettings& user) {
+ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSettings& user,
+                               const ProfileStack* profiles) {
     int count = std::clamp(userExtruderCount(definitions, user), 1, 16);
     {
-        StackEvaluator probe(definitions, user, count);
+        StackEvaluator probe(definitions, user, count, profiles);
         if (auto declared = probe.value(StackEvaluator::kGlobal, "machine_extruder_count")) {
             if (declared->is<std::int64_t>()) count = std::clamp(static_cast<int>(declared->as<std::int64_t>()), count, 16);
         }
     }
-    StackEvaluator stack(definitions, user, count);
+    StackEvaluator stack(definitions, user, count, profiles);
     ResolvedMachine machine;
     machine.global = Settings("global settings", stack.allText(StackEvaluator::kGlobal));
     for (int nr = 0; nr < count; ++nr) {
@@ -42,7 +43,7 @@ Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& g
 
 Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user, const ResolvedMachine& machine,
                      const Settings& group, const SettingValues& mesh_user, int default_extruder,
-                     const std::string& mesh_name) {
+                     const std::string& mesh_name, const ProfileStack* profiles) {
     int extruder = default_extruder;
     if (auto it = mesh_user.find("extruder_nr"); it != mesh_user.end()) {
         extruder = static_cast<int>(parseInteger("extruder_nr", it->second));
@@ -63,7 +64,7 @@ Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user,
     if (own.empty()) {
         values = machine.extruders[static_cast<std::size_t>(extruder)].all();
     } else {
-        StackEvaluator stack(definitions, user, count);
+        StackEvaluator stack(definitions, user, count, profiles);
         values = stack.allText(stack.addMeshScope(own, extruder));
     }
     values["extruder_nr"] = std::to_string(extruder);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "settings/DefinitionSet.h"
+#include "settings/ProfileStack.h"
 #include "settings/Settings.h"
 
 namespace mixengine {
@@ -22,7 +23,8 @@ struct ResolvedMachine {
 };
 
 /// Evaluates every setting of the global scope and of each extruder train (settings/StackEvaluator.h).
-ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSettings& user);
+ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSettings& user,
+                               const ProfileStack* profiles = nullptr);
 
 /// A mesh group's view: the global view with the group's own values on top.
 Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& group_user, int group_index);
@@ -32,6 +34,6 @@ Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& g
 /// its own. Throws InputError when the extruder does not exist.
 Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user, const ResolvedMachine& machine,
                      const Settings& group, const SettingValues& mesh_user, int default_extruder,
-                     const std::string& mesh_name);
+                     const std::string& mesh_name, const ProfileStack* profiles = nullptr);
 
 }  // namespace mixengine

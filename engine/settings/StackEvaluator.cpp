@@ -68,8 +68,9 @@ std::string argumentKey(const std::vector<formula::Value>& args, std::size_t ind
 
 }  // namespace
 
-StackEvaluator::StackEvaluator(const DefinitionSet& definitions, const UserSettings& user, int extruder_count)
-    : definitions_(definitions), user_(user), extruder_count_(std::max(1, extruder_count)) {
+StackEvaluator::StackEvaluator(const DefinitionSet& definitions, const UserSettings& user, int extruder_count,
+                               const ProfileStack* profiles)
+    : definitions_(definitions), user_(user), profiles_(profiles), extruder_count_(std::max(1, extruder_count)) {
     scopes_.push_back(std::make_unique<Scope>());
     for (int e = 0; e < extruder_count_; ++e) {
         auto scope = std::make_unique<Scope>();
@@ -205,13 +206,32 @@ std::optional<formula::Value> StackEvaluator::resolveTrain(int scope, std::strin
     return fromDefinitions(scope, key);
 }
 
+std::optional<formula::Value> StackEvaluator::fromContainers(int scope, const std::vector<InstanceContainer>& containers,
+                                                             std::string_view key) {
+    for (const InstanceContainer& container : containers) {
+        auto it = container.values.find(key);
+        if (it == container.values.end()) continue;
+        if (it->second.is_formula) return evaluateFormula(scope, key, it->second.text);
+        return userValue(key, it->second.text);
+    }
+    return std::nullopt;
+}
+
 std::optional<formula::Value> StackEvaluator::fromDefinitions(int scope, std::string_view key) {
     const int extruder = scopes_[static_cast<std::size_t>(scope)]->extruder;
     const SettingDefinition* def = definitions_.find(key);
     const SettingDefinition* own = extruder >= 0 ? extruderOwn(extruder, key) : nullptr;
     const std::string type = def ? def->type : (own ? own->type : std::string());
+    if (profiles_ && extruder >= 0) {
+        if (auto it = profiles_->extruders.find(extruder); it != profiles_->extruders.end()) {
+            if (auto v = fromContainers(scope, it->second, key)) return v;
+        }
+    }
     for (const SettingDefinition* source : {own, def}) {
         if (!source) continue;
+        if (source == def && profiles_) {
+            if (auto v = fromContainers(scope, profiles_->global, key)) return v;
+        }
         if (source->value_formula) return evaluateFormula(scope, key, *source->value_formula);
         if (source == own && source->default_value.empty() && source->type.empty()) continue;
         return valueFromText(key, type, source->default_value);

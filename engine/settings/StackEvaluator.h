@@ -3,13 +3,15 @@
 // compute it, `value` / `resolve` / `limit_to_extruder` formulas included.
 //
 // Scopes and the order in which a key is looked up (first hit wins):
-//   global       user -s values; the `resolve` formula (unless the user set the key); the value of
-//                the extruder named by `limit_to_extruder` (settable-per-extruder keys only); the
-//                machine definition's `value` formula, else its `default_value`.
+//   global       the `resolve` formula (unless the user set the key); the value of the extruder
+//                named by `limit_to_extruder` (settable-per-extruder keys only); user -s values; the
+//                global profile containers; the machine definition's `value` formula, else its
+//                `default_value`.
 //   extruder N   keys that are not settable per extruder: the global value. Otherwise the value of
 //                the extruder named by `limit_to_extruder` when it is another one (looked up there
 //                without limiting again, so never recursively); -eN user values; global user
-//                values; the extruder definition's value; the machine definition's value.
+//                values; the extruder's profile containers (settings/ProfileStack.h); the extruder
+//                definition's value; the global profile containers; the machine definition's value.
 //   mesh         its own user values; the extruder named by `limit_to_extruder`; then as its
 //                extruder train, with formulas evaluated in the mesh's scope so that a per-mesh
 //                value (e.g. infill_sparse_density) flows into the keys computed from it.
@@ -30,6 +32,7 @@
 
 #include "common/Error.h"
 #include "settings/DefinitionSet.h"
+#include "settings/ProfileStack.h"
 #include "settings/Resolver.h"
 #include "settings/formula/Expression.h"
 #include "settings/formula/Value.h"
@@ -44,7 +47,8 @@ public:
 
 class StackEvaluator {
 public:
-    StackEvaluator(const DefinitionSet& definitions, const UserSettings& user, int extruder_count);
+    StackEvaluator(const DefinitionSet& definitions, const UserSettings& user, int extruder_count,
+                   const ProfileStack* profiles = nullptr);
     ~StackEvaluator();
     StackEvaluator(const StackEvaluator&) = delete;
     StackEvaluator& operator=(const StackEvaluator&) = delete;
@@ -82,9 +86,12 @@ private:
     const SettingDefinition* extruderOwn(int extruder, std::string_view key) const;
     const SettingDefinition* anyDefinition(std::string_view key) const;
     const formula::Expression& compiled(const std::string& formula);
+    std::optional<formula::Value> fromContainers(int scope, const std::vector<InstanceContainer>& containers,
+                                                 std::string_view key);
 
     const DefinitionSet& definitions_;
     const UserSettings& user_;
+    const ProfileStack* profiles_;
     int extruder_count_;
     std::vector<std::unique_ptr<Scope>> scopes_;
     std::unordered_map<const std::string*, std::unique_ptr<formula::Expression>> expressions_;
