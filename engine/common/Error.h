@@ -11,12 +11,12 @@
 namespace mixengine {
 
 class InputError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 class InternalError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

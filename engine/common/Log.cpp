@@ -6,12 +6,14 @@ namespace mixengine {
 
 void Log::write(std::string_view prefix, std::string_view message) {
     std::lock_guard lock(mutex_);
-    if (prefix == "[warning] ") ++warnings_;
+    if (prefix == "[warning] ")
+        ++warnings_;
     out_ << prefix << message << '\n';
 }
 
 void Log::progress(std::string_view stage, double fraction) {
-    if (!progress_) return;
+    if (!progress_)
+        return;
     std::lock_guard lock(mutex_);
     out_ << "Progress: " << stage << ' ' << static_cast<int>(std::lround(fraction * 100.0)) << "%\n";
 }

@@ -8,15 +8,17 @@
 namespace mixengine {
 
 class Log {
-public:
+  public:
     explicit Log(std::ostream& out, int verbosity = 0) : out_(out), verbosity_(verbosity) {}
 
     void warning(std::string_view message) { write("[warning] ", message); }
     void info(std::string_view message) {
-        if (verbosity_ >= 1) write("[info] ", message);
+        if (verbosity_ >= 1)
+            write("[info] ", message);
     }
     void debug(std::string_view message) {
-        if (verbosity_ >= 2) write("[debug] ", message);
+        if (verbosity_ >= 2)
+            write("[debug] ", message);
     }
     /// Progress of a long stage, 0..1; printed only when progress reporting is on (-p).
     void progress(std::string_view stage, double fraction);
@@ -25,7 +27,7 @@ public:
     void setProgress(bool enabled) { progress_ = enabled; }
     int warningCount() const { return warnings_; }
 
-private:
+  private:
     void write(std::string_view prefix, std::string_view message);
 
     std::ostream& out_;

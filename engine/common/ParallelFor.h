@@ -15,7 +15,8 @@ template <typename Body>
 void parallelFor(std::size_t count, int threads, Body body) {
     const std::size_t workers = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), count);
     if (workers <= 1) {
-        for (std::size_t i = 0; i < count; ++i) body(i);
+        for (std::size_t i = 0; i < count; ++i)
+            body(i);
         return;
     }
     std::atomic<std::size_t> next{0};
@@ -23,23 +24,29 @@ void parallelFor(std::size_t count, int threads, Body body) {
     std::mutex error_mutex;
     auto work = [&] {
         try {
-            for (std::size_t i = next++; i < count; i = next++) body(i);
+            for (std::size_t i = next++; i < count; i = next++)
+                body(i);
         } catch (...) {
             std::lock_guard lock(error_mutex);
-            if (!error) error = std::current_exception();
+            if (!error)
+                error = std::current_exception();
             next = count;
         }
     };
     std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < workers; ++t) pool.emplace_back(work);
+    for (std::size_t t = 1; t < workers; ++t)
+        pool.emplace_back(work);
     work();
-    for (std::thread& t : pool) t.join();
-    if (error) std::rethrow_exception(error);
+    for (std::thread& t : pool)
+        t.join();
+    if (error)
+        std::rethrow_exception(error);
 }
 
 /// The thread count to use: `requested` if > 0, else the machine's cores.
 inline int effectiveThreads(int requested) {
-    if (requested > 0) return requested;
+    if (requested > 0)
+        return requested;
     return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 

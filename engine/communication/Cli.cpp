@@ -18,10 +18,14 @@ int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
         out << helpText();
         return 0;
     }
-    if (command == "slice") return runSliceCommand(words, out, err);
-    if (command == "layers") return runLayersCommand(words, out, err);
-    if (command == "settings") return runSettingsCommand(words, out, err);
-    if (command == "demo") return runDemoCommand(words, out, err);
+    if (command == "slice")
+        return runSliceCommand(words, out, err);
+    if (command == "layers")
+        return runLayersCommand(words, out, err);
+    if (command == "settings")
+        return runSettingsCommand(words, out, err);
+    if (command == "demo")
+        return runDemoCommand(words, out, err);
     throw InputError("unknown command '" + command + "' (commands: help, slice, layers, settings, demo)");
 }
 

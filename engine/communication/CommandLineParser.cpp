@@ -36,23 +36,28 @@ struct ParseState {
     const std::string* rotationText() {
         const SettingValues* chain[] = {&focusValues(), &group().settings, &request().user.global};
         for (const SettingValues* values : chain) {
-            if (auto it = values->find("mesh_rotation_matrix"); it != values->end()) return &it->second;
+            if (auto it = values->find("mesh_rotation_matrix"); it != values->end())
+                return &it->second;
         }
         return nullptr;
     }
 };
 
 const std::string& nextWord(const std::vector<std::string>& args, std::size_t& i, const std::string& flag) {
-    if (i + 1 >= args.size()) throw InputError("option " + flag + " needs a value");
+    if (i + 1 >= args.size())
+        throw InputError("option " + flag + " needs a value");
     return args[++i];
 }
 
 int parseDigits(const std::string& text, const std::string& flag) {
-    if (text.empty()) throw InputError("option " + flag + " needs a number");
+    if (text.empty())
+        throw InputError("option " + flag + " needs a number");
     for (char c : text) {
-        if (!std::isdigit(static_cast<unsigned char>(c))) throw InputError("option " + flag + ": '" + text + "' is not a number");
+        if (!std::isdigit(static_cast<unsigned char>(c)))
+            throw InputError("option " + flag + ": '" + text + "' is not a number");
     }
-    if (text.size() > 3) throw InputError("option " + flag + ": '" + text + "' is out of range");
+    if (text.size() > 3)
+        throw InputError("option " + flag + ": '" + text + "' is out of range");
     return std::stoi(text);
 }
 
@@ -62,7 +67,8 @@ void loadModel(ParseState& state, const std::string& path) {
     mesh.file = path;
     mesh.default_extruder = state.extruder;
     if (const std::string* text = state.rotationText()) {
-        mesh.transform = Settings("command line", {{"mesh_rotation_matrix", *text}}).matrix3("mesh_rotation_matrix");
+        mesh.transform =
+            Settings("command line", {{"mesh_rotation_matrix", *text}}).matrix3("mesh_rotation_matrix");
     }
     state.group().meshes.push_back(std::move(mesh));
     state.focus = Focus::Mesh;
@@ -76,7 +82,8 @@ std::pair<std::string, std::string> splitSettingArgument(const std::string& word
         throw InputError("-s '" + word + "': expected key=value");
     }
     std::string value = word.substr(eq + 1);
-    if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
+    if (value.size() >= 2 && value.front() == '"' && value.back() == '"')
+        value = value.substr(1, value.size() - 2);
     return {word.substr(0, eq), value};
 }
 
@@ -90,7 +97,8 @@ ParsedSliceArgs parseSliceArguments(const std::vector<std::string>& args) {
         } else if (word == "-p") {
             state.request().progress = true;
         } else if (word.rfind("-m", 0) == 0) {
-            state.request().threads = parseDigits(word.size() > 2 ? word.substr(2) : nextWord(args, i, word), "-m");
+            state.request().threads =
+                parseDigits(word.size() > 2 ? word.substr(2) : nextWord(args, i, word), "-m");
         } else if (word == "-j") {
             state.request().definition = nextWord(args, i, word);
         } else if (word == "-s") {

@@ -20,7 +20,7 @@ void putFloat(std::string& out, float value) {
 /// A binary STL of an axis-aligned cube with edge `size_mm`, centred in XY, bottom at z=0.
 std::string cubeStl(float size_mm) {
     const float h = size_mm / 2;
-    const float v[8][3] = {{-h, -h, 0}, {h, -h, 0}, {h, h, 0}, {-h, h, 0},
+    const float v[8][3] = {{-h, -h, 0},       {h, -h, 0},       {h, h, 0},       {-h, h, 0},
                            {-h, -h, size_mm}, {h, -h, size_mm}, {h, h, size_mm}, {-h, h, size_mm}};
     const int faces[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
                               {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
@@ -29,9 +29,11 @@ std::string cubeStl(float size_mm) {
     const std::uint32_t count = 12;
     out.append(reinterpret_cast<const char*>(&count), 4);
     for (const auto& face : faces) {
-        for (int k = 0; k < 3; ++k) putFloat(out, 0.0f);
+        for (int k = 0; k < 3; ++k)
+            putFloat(out, 0.0f);
         for (int corner : face)
-            for (int k = 0; k < 3; ++k) putFloat(out, v[corner][k]);
+            for (int k = 0; k < 3; ++k)
+                putFloat(out, v[corner][k]);
         out.append(2, '\0');
     }
     return out;
@@ -46,7 +48,8 @@ int runDemoCommand(const Words& args, std::ostream& out, std::ostream& err) {
     const std::filesystem::path gcode = dir / "demo.gcode";
     writeFileAtomically(model, cubeStl(20.0f));
     const int code = runSliceCommand({"-l", model.string(), "-o", gcode.string()}, out, err);
-    if (code == 0) out << "G-code written to " << std::filesystem::absolute(gcode).string() << '\n';
+    if (code == 0)
+        out << "G-code written to " << std::filesystem::absolute(gcode).string() << '\n';
     return code;
 }
 

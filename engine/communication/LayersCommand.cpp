@@ -30,7 +30,8 @@ std::vector<SlicedLayer> mergeMeshes(const SlicedGroup& sliced) {
             merged[i].open_polylines.insert(merged[i].open_polylines.end(), mesh[i].open_polylines.begin(),
                                             mesh[i].open_polylines.end());
         }
-        clipper.Execute(ClipperLib::ctUnion, merged[i].outlines, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+        clipper.Execute(ClipperLib::ctUnion, merged[i].outlines, ClipperLib::pftNonZero,
+                        ClipperLib::pftNonZero);
         merged[i].print_z = sliced.heights[i].print_z;
         merged[i].slice_z = sliced.heights[i].slice_z;
     }
@@ -43,7 +44,8 @@ nlohmann::json layerJson(const SlicedLayer& layer, std::size_t index) {
     for (const Path& path : layer.outlines) {
         area_um2 += ClipperLib::Area(path);
         nlohmann::json points = nlohmann::json::array();
-        for (const Point2& p : path) points.push_back({micronsToMm(p.X), micronsToMm(p.Y)});
+        for (const Point2& p : path)
+            points.push_back({micronsToMm(p.X), micronsToMm(p.Y)});
         outlines.push_back(std::move(points));
     }
     return {{"index", index},
@@ -59,19 +61,22 @@ nlohmann::json layerJson(const SlicedLayer& layer, std::size_t index) {
 int runLayersCommand(const Words& args, std::ostream& out, std::ostream& err) {
     ParsedSliceArgs parsed = parseSliceArguments(args);
     SliceRequest& request = parsed.request;
-    if (request.output.empty()) throw InputError("layers: give the output folder with -o DIR");
+    if (request.output.empty())
+        throw InputError("layers: give the output folder with -o DIR");
     request.user.global["machine_center_is_zero"] = "True";
     Log log(err, request.verbosity);
     log.setProgress(request.progress);
     const Scene scene = prepareScene(request, log);
     const SceneGroup& group = scene.groups.front();
-    const std::vector<SlicedLayer> layers = mergeMeshes(sliceGroup(group, effectiveThreads(request.threads), log));
+    const std::vector<SlicedLayer> layers =
+        mergeMeshes(sliceGroup(group, effectiveThreads(request.threads), log));
 
     const std::filesystem::path dir = request.output;
     std::filesystem::create_directories(dir);
     nlohmann::json doc;
     doc["meshes"] = nlohmann::json::array();
-    for (const SceneMesh& mesh : group.meshes) doc["meshes"].push_back(mesh.mesh.name);
+    for (const SceneMesh& mesh : group.meshes)
+        doc["meshes"].push_back(mesh.mesh.name);
     doc["layers"] = nlohmann::json::array();
     for (std::size_t i = 0; i < layers.size(); ++i) {
         doc["layers"].push_back(layerJson(layers[i], i));

@@ -14,7 +14,8 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view tex
     const fs::path temp = path.string() + ".tmp-" + std::to_string(::getpid());
     {
         std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-        if (!out) throw InputError(path.string() + ": cannot write output file");
+        if (!out)
+            throw InputError(path.string() + ": cannot write output file");
         out.write(text.data(), static_cast<std::streamsize>(text.size()));
         out.flush();
         if (!out) {

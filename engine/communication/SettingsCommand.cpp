@@ -2,8 +2,8 @@
 #include <nlohmann/json.hpp>
 
 #include "common/Error.h"
-#include "communication/Commands.h"
 #include "communication/CommandLineParser.h"
+#include "communication/Commands.h"
 #include "pipeline/Scene.h"
 
 namespace mixengine {
@@ -13,7 +13,8 @@ void printText(const Settings& settings, std::ostream& out) {
     out << "[" << settings.scope() << "]\n";
     for (const auto& [key, value] : settings.all()) {
         std::string shown = value;
-        for (std::size_t p = shown.find('\n'); p != std::string::npos; p = shown.find('\n', p + 2)) shown.replace(p, 1, "\\n");
+        for (std::size_t p = shown.find('\n'); p != std::string::npos; p = shown.find('\n', p + 2))
+            shown.replace(p, 1, "\\n");
         out << key << " = " << shown << '\n';
     }
 }
@@ -38,13 +39,15 @@ int runSettingsCommand(const Words& args, std::ostream& out, std::ostream& err) 
         nlohmann::json doc;
         doc["machine"] = scene.definitions.machine_id;
         doc["global"] = scene.machine.global.all();
-        for (const Settings& extruder : scene.machine.extruders) doc["extruders"].push_back(extruder.all());
+        for (const Settings& extruder : scene.machine.extruders)
+            doc["extruders"].push_back(extruder.all());
         out << doc.dump(1) << '\n';
         return 0;
     }
     out << "machine: " << scene.definitions.machine_id << '\n';
     printText(scene.machine.global, out);
-    for (const Settings& extruder : scene.machine.extruders) printText(extruder, out);
+    for (const Settings& extruder : scene.machine.extruders)
+        printText(extruder, out);
     return 0;
 }
 

@@ -3,8 +3,8 @@
 
 #include "common/Log.h"
 #include "common/ParallelFor.h"
-#include "communication/Commands.h"
 #include "communication/CommandLineParser.h"
+#include "communication/Commands.h"
 #include "communication/OutputFile.h"
 #include "pipeline/FffProcessor.h"
 

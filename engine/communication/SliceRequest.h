@@ -13,12 +13,12 @@
 namespace mixengine {
 
 struct MeshInput {
-    std::string name;                                ///< ;MESH: name (CLI: the -l path)
-    std::optional<std::filesystem::path> file;       ///< CLI: load from here
-    std::vector<TriangleSoup> soups;                 ///< socket: Cura's triangle soup (mm, Cura frame converted)
-    Matrix3 transform;                               ///< mesh_rotation_matrix in force when it was given
-    SettingValues settings;                          ///< per-object user values
-    int default_extruder = 0;                        ///< the extruder train in focus when it was given
+    std::string name;                           ///< ;MESH: name (CLI: the -l path)
+    std::optional<std::filesystem::path> file;  ///< CLI: load from here
+    std::vector<TriangleSoup> soups;            ///< socket: Cura's triangle soup (mm, Cura frame converted)
+    Matrix3 transform;                          ///< mesh_rotation_matrix in force when it was given
+    SettingValues settings;                     ///< per-object user values
+    int default_extruder = 0;                   ///< the extruder train in focus when it was given
 };
 
 struct MeshGroupInput {

@@ -30,7 +30,8 @@ std::string ExtrusionAxis::move(double delta_mm) {
 }
 
 std::string ExtrusionAxis::reset() {
-    if (relative_) return "";
+    if (relative_)
+        return "";
     position_mm_ = 0;
     return std::string("G92 ") + letter_ + "0";
 }

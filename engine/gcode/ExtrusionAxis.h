@@ -10,7 +10,7 @@
 namespace mixengine {
 
 class ExtrusionAxis {
-public:
+  public:
     ExtrusionAxis(char letter, bool relative) : letter_(letter), relative_(relative) {}
 
     char letter() const { return letter_; }
@@ -26,13 +26,13 @@ public:
     double position() const { return position_mm_; }
     double totalExtrudedMm() const { return total_mm_; }  ///< forward motion only, retractions excluded
 
-private:
+  private:
     char letter_;
     bool relative_;
-    double position_mm_ = 0;       ///< firmware's idea of the position (absolute mode)
-    double written_mm_ = 0;        ///< rounded value last written, so rounding never accumulates
+    double position_mm_ = 0;  ///< firmware's idea of the position (absolute mode)
+    double written_mm_ = 0;   ///< rounded value last written, so rounding never accumulates
     double total_mm_ = 0;
-    double retracted_mm_ = 0;      ///< outstanding retraction, re-primed moves are not new filament
+    double retracted_mm_ = 0;  ///< outstanding retraction, re-primed moves are not new filament
 };
 
 }  // namespace mixengine

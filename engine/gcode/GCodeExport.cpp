@@ -7,7 +7,8 @@
 
 namespace mixengine {
 
-GCodeExport::GCodeExport(const ExportParams& params) : params_(params), axis_('E', params.relative_extrusion) {}
+GCodeExport::GCodeExport(const ExportParams& params)
+    : params_(params), axis_('E', params.relative_extrusion) {}
 
 void GCodeExport::line(std::string_view text) {
     out_ += text;
@@ -20,20 +21,24 @@ void GCodeExport::comment(std::string_view text) {
 }
 
 std::string GCodeExport::feedrateWord(double speed_mm_s) {
-    if (speed_mm_s == feedrate_mm_s_) return "";
+    if (speed_mm_s == feedrate_mm_s_)
+        return "";
     feedrate_mm_s_ = speed_mm_s;
     return " F" + formatFeedrate(speed_mm_s);
 }
 
 double GCodeExport::volumeToAxisMm(double volume_mm3) const {
-    if (params_.volumetric) return volume_mm3;
+    if (params_.volumetric)
+        return volume_mm3;
     const double radius = params_.filament_diameter_mm / 2.0;
     return volume_mm3 / (std::numbers::pi * radius * radius);
 }
 
 void GCodeExport::travel(const Point2& to, double speed_mm_s) {
-    if (to == position_) return;
-    const double distance_mm = std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
+    if (to == position_)
+        return;
+    const double distance_mm =
+        std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
     line("G0" + feedrateWord(speed_mm_s) + " X" + formatCoordMm(micronsToMm(to.X)) + " Y" +
          formatCoordMm(micronsToMm(to.Y)));
     position_ = to;
@@ -41,15 +46,18 @@ void GCodeExport::travel(const Point2& to, double speed_mm_s) {
 }
 
 void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
-    if (z == z_) return;
+    if (z == z_)
+        return;
     elapsed_s_ += std::fabs(micronsToMm(z - z_)) / speed_mm_s;
     line("G0" + feedrateWord(speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z)));
     z_ = z;
 }
 
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {
-    if (retracted_) unretract();
-    const double distance_mm = std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
+    if (retracted_)
+        unretract();
+    const double distance_mm =
+        std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
     line("G1" + feedrateWord(speed_mm_s) + " X" + formatCoordMm(micronsToMm(to.X)) + " Y" +
          formatCoordMm(micronsToMm(to.Y)) + " " + axis_.move(volumeToAxisMm(volume_mm3)));
     position_ = to;
@@ -57,16 +65,21 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
 }
 
 void GCodeExport::retract() {
-    if (retracted_ || params_.retraction_amount_mm <= 0) return;
-    line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + axis_.move(-params_.retraction_amount_mm));
+    if (retracted_ || params_.retraction_amount_mm <= 0)
+        return;
+    line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " +
+         axis_.move(-params_.retraction_amount_mm));
     elapsed_s_ += params_.retraction_amount_mm / params_.retraction_speed_mm_s;
     retracted_ = true;
-    if (params_.retraction_hop_um > 0) moveZ(z_ + params_.retraction_hop_um, params_.retraction_speed_mm_s);
+    if (params_.retraction_hop_um > 0)
+        moveZ(z_ + params_.retraction_hop_um, params_.retraction_speed_mm_s);
 }
 
 void GCodeExport::unretract() {
-    if (!retracted_) return;
-    if (params_.retraction_hop_um > 0) moveZ(z_ - params_.retraction_hop_um, params_.retraction_speed_mm_s);
+    if (!retracted_)
+        return;
+    if (params_.retraction_hop_um > 0)
+        moveZ(z_ - params_.retraction_hop_um, params_.retraction_speed_mm_s);
     line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + axis_.move(params_.retraction_amount_mm));
     elapsed_s_ += params_.retraction_amount_mm / params_.prime_speed_mm_s;
     retracted_ = false;
@@ -74,11 +87,13 @@ void GCodeExport::unretract() {
 
 void GCodeExport::resetExtrusionAxis() {
     std::string reset = axis_.reset();
-    if (!reset.empty()) line(reset);
+    if (!reset.empty())
+        line(reset);
 }
 
 void GCodeExport::setFan(double ratio) {
-    if (ratio == fan_ratio_) return;
+    if (ratio == fan_ratio_)
+        return;
     fan_ratio_ = ratio;
     if (ratio <= 0) {
         line("M107");

@@ -13,16 +13,16 @@ namespace mixengine {
 
 struct ExportParams {
     double filament_diameter_mm = 2.85;
-    bool volumetric = false;           ///< E in mm³ (RepRap (Volumetric))
-    bool relative_extrusion = false;   ///< M83
+    bool volumetric = false;          ///< E in mm³ (RepRap (Volumetric))
+    bool relative_extrusion = false;  ///< M83
     double retraction_amount_mm = 6.5;
     double retraction_speed_mm_s = 25;
     double prime_speed_mm_s = 25;
-    coord_um retraction_hop_um = 0;    ///< z-hop while retracted (0 = off)
+    coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
 };
 
 class GCodeExport {
-public:
+  public:
     explicit GCodeExport(const ExportParams& params);
 
     void line(std::string_view text);     ///< a raw line
@@ -32,8 +32,8 @@ public:
     void extrude(const Point2& to, double volume_mm3, double speed_mm_s);
     void retract();
     void unretract();
-    void resetExtrusionAxis();           ///< G92 E0 in absolute mode
-    void setFan(double ratio);           ///< M106 S0..255 / M107
+    void resetExtrusionAxis();  ///< G92 E0 in absolute mode
+    void setFan(double ratio);  ///< M106 S0..255 / M107
 
     const std::string& text() const { return out_; }
     std::string takeText() { return std::move(out_); }
@@ -42,7 +42,7 @@ public:
     coord_um z() const { return z_; }
     bool retracted() const { return retracted_; }
 
-private:
+  private:
     std::string feedrateWord(double speed_mm_s);
     double volumeToAxisMm(double volume_mm3) const;
 

@@ -7,11 +7,16 @@
 namespace mixengine {
 
 Flavor flavorFromSetting(const std::string& text) {
-    if (text == "RepRap (Marlin/Sprinter)") return Flavor::Marlin;
-    if (text == "RepRap (Volumetric)") return Flavor::MarlinVolumetric;
-    if (text == "RepRap (RepRap)") return Flavor::RepRap;
-    if (text == "Griffin") return Flavor::Griffin;
-    if (text == "UltiGCode") return Flavor::UltiGCode;
+    if (text == "RepRap (Marlin/Sprinter)")
+        return Flavor::Marlin;
+    if (text == "RepRap (Volumetric)")
+        return Flavor::MarlinVolumetric;
+    if (text == "RepRap (RepRap)")
+        return Flavor::RepRap;
+    if (text == "Griffin")
+        return Flavor::Griffin;
+    if (text == "UltiGCode")
+        return Flavor::UltiGCode;
     return Flavor::Other;
 }
 
@@ -39,7 +44,8 @@ std::string filamentList(const PrintSummary& summary) {
     std::string text;
     const bool volumetric = summary.flavor == Flavor::MarlinVolumetric;
     for (std::size_t i = 0; i < summary.filament_per_extruder.size(); ++i) {
-        if (i) text += ", ";
+        if (i)
+            text += ", ";
         const double value = summary.filament_per_extruder[i];
         text += volumetric ? formatDecimal(value, 2) + "mm3" : formatDecimal(value / 1000.0, 6) + "m";
     }

@@ -19,7 +19,7 @@ struct PrintSummary {
     double print_time_s = 0;
     std::vector<double> filament_per_extruder;  ///< mm of filament (mm³ when volumetric)
     double layer_height_mm = 0.1;
-    Point3 min{}, max{};                          ///< bounds of the extruded moves, microns
+    Point3 min{}, max{};  ///< bounds of the extruded moves, microns
     std::string engine_version;
 };
 

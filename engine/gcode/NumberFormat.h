@@ -6,8 +6,12 @@
 namespace mixengine {
 
 std::string formatDecimal(double value, int decimals);
-inline std::string formatCoordMm(double mm) { return formatDecimal(mm, 3); }
-inline std::string formatExtrusionMm(double mm) { return formatDecimal(mm, 5); }
+inline std::string formatCoordMm(double mm) {
+    return formatDecimal(mm, 3);
+}
+inline std::string formatExtrusionMm(double mm) {
+    return formatDecimal(mm, 5);
+}
 /// Feedrate in mm/min from mm/s, at most one decimal ("F1500", "F1687.5").
 std::string formatFeedrate(double mm_per_s);
 

@@ -14,7 +14,8 @@ void extendBounds(WrittenLayers& out, const Point2& p, coord_um z) {
 void writeStep(const PlanStep& step, const PrintPlan& plan, GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
-            if (step.retract) gcode.retract();
+            if (step.retract)
+                gcode.retract();
             gcode.travel(step.to, step.speed_mm_s);
             break;
         case PlanStep::Kind::Extrude:
@@ -25,8 +26,9 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, GCodeExport& gcode, 
             gcode.comment("TYPE:" + std::string(featureMarker(step.feature)));
             break;
         case PlanStep::Kind::SetMesh:
-            gcode.comment("MESH:" + (step.mesh_index < 0 ? std::string("NONMESH")
-                                                          : plan.mesh_names[static_cast<std::size_t>(step.mesh_index)]));
+            gcode.comment("MESH:" + (step.mesh_index < 0
+                                         ? std::string("NONMESH")
+                                         : plan.mesh_names[static_cast<std::size_t>(step.mesh_index)]));
             break;
         case PlanStep::Kind::SetFan:
             gcode.setFan(step.fan_ratio);
@@ -41,9 +43,11 @@ WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, G
     for (const PlannedLayer& layer : plan.layers) {
         gcode.takeText();  // start a fresh chunk
         gcode.comment("LAYER:" + std::to_string(layer.index));
-        if (params.reset_e_each_layer && !gcode.retracted()) gcode.resetExtrusionAxis();
+        if (params.reset_e_each_layer && !gcode.retracted())
+            gcode.resetExtrusionAxis();
         gcode.moveZ(layer.z, params.layer_change_speed_mm_s);
-        for (const PlanStep& step : layer.steps) writeStep(step, plan, gcode, out);
+        for (const PlanStep& step : layer.steps)
+            writeStep(step, plan, gcode, out);
         char elapsed[64];
         std::snprintf(elapsed, sizeof elapsed, "TIME_ELAPSED:%.6f", gcode.elapsedSeconds());
         gcode.comment(elapsed);

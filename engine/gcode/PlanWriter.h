@@ -19,7 +19,7 @@ struct WrittenLayers {
 
 struct PlanWriterParams {
     double layer_change_speed_mm_s = 10;  ///< Z moves
-    bool reset_e_each_layer = true;      ///< G92 E0 at each layer start in absolute mode
+    bool reset_e_each_layer = true;       ///< G92 E0 at each layer start in absolute mode
 };
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode);

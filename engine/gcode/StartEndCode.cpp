@@ -29,7 +29,8 @@ namespace {
 
 void appendLine(std::string& out, const std::string& line) {
     out += line;
-    if (out.empty() || out.back() != '\n') out += '\n';
+    if (out.empty() || out.back() != '\n')
+        out += '\n';
 }
 
 std::string temperature(const Settings& settings, const char* key) {
@@ -45,25 +46,30 @@ std::string startCode(const Settings& global, const Settings& extruder0, bool re
         const std::string bed = temperature(global, "material_bed_temperature_layer_0");
         appendLine(out, "M140 S" + bed);
         appendLine(out, "M105");
-        if (global.boolean("material_bed_temp_wait")) appendLine(out, "M190 S" + bed);
+        if (global.boolean("material_bed_temp_wait"))
+            appendLine(out, "M190 S" + bed);
     }
     if (global.boolean("material_print_temp_prepend")) {
         const std::string nozzle = temperature(extruder0, "material_print_temperature_layer_0");
         appendLine(out, "M104 S" + nozzle);
         appendLine(out, "M105");
-        if (global.boolean("material_print_temp_wait")) appendLine(out, "M109 S" + nozzle);
+        if (global.boolean("material_print_temp_wait"))
+            appendLine(out, "M109 S" + nozzle);
     }
     appendLine(out, "M82 ;absolute extrusion mode");
     appendLine(out, expandTokens(global.text("machine_start_gcode"), global));
-    if (relative_extrusion) appendLine(out, "M83 ;relative extrusion mode");
+    if (relative_extrusion)
+        appendLine(out, "M83 ;relative extrusion mode");
     return out;
 }
 
 std::string endCode(const Settings& global, bool relative_extrusion) {
     std::string out;
-    if (relative_extrusion) appendLine(out, "M82 ;absolute extrusion mode");
+    if (relative_extrusion)
+        appendLine(out, "M82 ;absolute extrusion mode");
     appendLine(out, expandTokens(global.text("machine_end_gcode"), global));
-    if (relative_extrusion) appendLine(out, "M82 ;absolute extrusion mode");
+    if (relative_extrusion)
+        appendLine(out, "M82 ;absolute extrusion mode");
     return out;
 }
 

@@ -19,8 +19,12 @@ using Paths = ClipperLib::Paths;
 
 constexpr double kMicronsPerMm = 1000.0;
 
-inline coord_um mmToMicrons(double mm) { return static_cast<coord_um>(std::llround(mm * kMicronsPerMm)); }
-inline double micronsToMm(coord_um um) { return static_cast<double>(um) / kMicronsPerMm; }
+inline coord_um mmToMicrons(double mm) {
+    return static_cast<coord_um>(std::llround(mm * kMicronsPerMm));
+}
+inline double micronsToMm(coord_um um) {
+    return static_cast<double>(um) / kMicronsPerMm;
+}
 
 struct Vec3 {
     double x = 0, y = 0, z = 0;
@@ -33,8 +37,12 @@ struct Vec3 {
 inline Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
-inline double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-inline double length(const Vec3& a) { return std::sqrt(dot(a, a)); }
+inline double dot(const Vec3& a, const Vec3& b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+inline double length(const Vec3& a) {
+    return std::sqrt(dot(a, a));
+}
 
 struct Point3 {
     coord_um x = 0, y = 0, z = 0;

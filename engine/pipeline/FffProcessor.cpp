@@ -14,8 +14,10 @@ namespace {
 
 SlicingTolerance toleranceOf(const Settings& s) {
     const std::string text = s.has("slicing_tolerance") ? s.text("slicing_tolerance") : "middle";
-    if (text == "inclusive") return SlicingTolerance::Inclusive;
-    if (text == "exclusive") return SlicingTolerance::Exclusive;
+    if (text == "inclusive")
+        return SlicingTolerance::Inclusive;
+    if (text == "exclusive")
+        return SlicingTolerance::Exclusive;
     return SlicingTolerance::Middle;
 }
 
@@ -49,20 +51,24 @@ PrintPlan planGroup(const SceneGroup& group, const SlicedGroup& sliced, int thre
 
 std::string GCodeOutput::joined() const {
     std::string text = prefix;
-    for (const std::string& chunk : layer_chunks) text += chunk;
+    for (const std::string& chunk : layer_chunks)
+        text += chunk;
     return text + suffix;
 }
 
 SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log) {
     SlicedGroup sliced;
     coord_um max_z = 0;
-    for (const SceneMesh& m : group.meshes) max_z = std::max(max_z, m.mesh.bounds().max.z);
+    for (const SceneMesh& m : group.meshes)
+        max_z = std::max(max_z, m.mesh.bounds().max.z);
     const Settings& s = group.settings;
-    sliced.heights = computeLayerHeights(max_z, s.lengthMicrons("layer_height_0"), s.lengthMicrons("layer_height"));
+    sliced.heights =
+        computeLayerHeights(max_z, s.lengthMicrons("layer_height_0"), s.lengthMicrons("layer_height"));
     SliceOptions options;
     options.tolerance = toleranceOf(s);
     options.threads = threads;
-    for (const SceneMesh& m : group.meshes) sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
+    for (const SceneMesh& m : group.meshes)
+        sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
     return sliced;
 }
 
@@ -77,22 +83,28 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log) {
     output.summary.max = {INT64_MIN, INT64_MIN, INT64_MIN};
     int layer_offset = 0;
     for (const SceneGroup& group : scene.groups) {
-        if (group.meshes.empty()) continue;
+        if (group.meshes.empty())
+            continue;
         log.progress("slicing", 0.0);
         SlicedGroup sliced = sliceGroup(group, threads, log);
         log.progress("toolpaths", 0.3);
         PrintPlan plan = planGroup(group, sliced, threads);
-        for (PlannedLayer& layer : plan.layers) layer.index += layer_offset;
+        for (PlannedLayer& layer : plan.layers)
+            layer.index += layer_offset;
         layer_offset += static_cast<int>(plan.layers.size());
         log.progress("gcode", 0.8);
         WrittenLayers written = writePlan(plan, writer, gcode);
-        output.summary.min = {std::min(output.summary.min.x, written.min.x), std::min(output.summary.min.y, written.min.y),
+        output.summary.min = {std::min(output.summary.min.x, written.min.x),
+                              std::min(output.summary.min.y, written.min.y),
                               std::min(output.summary.min.z, written.min.z)};
-        output.summary.max = {std::max(output.summary.max.x, written.max.x), std::max(output.summary.max.y, written.max.y),
+        output.summary.max = {std::max(output.summary.max.x, written.max.x),
+                              std::max(output.summary.max.y, written.max.y),
                               std::max(output.summary.max.z, written.max.z)};
-        for (std::string& chunk : written.chunks) output.layer_chunks.push_back(std::move(chunk));
+        for (std::string& chunk : written.chunks)
+            output.layer_chunks.push_back(std::move(chunk));
     }
-    if (output.layer_chunks.empty()) output.summary.min = output.summary.max = {};
+    if (output.layer_chunks.empty())
+        output.summary.min = output.summary.max = {};
 
     const bool relative = global.boolean("relative_extrusion");
     output.summary.flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
@@ -101,7 +113,8 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log) {
     output.summary.layer_height_mm = global.millimetres("layer_height");
     output.summary.engine_version = MIXENGINE_VERSION;
     output.prefix = makeHeader(output.summary) + startCode(global, scene.machine.extruders.front(), relative);
-    if (!relative) output.prefix += "G92 E0\n";
+    if (!relative)
+        output.prefix += "G92 E0\n";
     output.prefix += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
     output.suffix = endCode(global, relative) + ";End of Gcode\n";
     log.progress("done", 1.0);

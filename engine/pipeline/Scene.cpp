@@ -21,28 +21,32 @@ void placeMesh(Mesh& mesh, const Settings& group, const Settings& settings) {
         dy -= (box.min.y + box.max.y) / 2;
         dz -= box.min.z;
     }
-    if (settings.has("mesh_position_x")) dx += settings.lengthMicrons("mesh_position_x");
-    if (settings.has("mesh_position_y")) dy += settings.lengthMicrons("mesh_position_y");
-    if (settings.has("mesh_position_z")) dz += settings.lengthMicrons("mesh_position_z");
+    if (settings.has("mesh_position_x"))
+        dx += settings.lengthMicrons("mesh_position_x");
+    if (settings.has("mesh_position_y"))
+        dy += settings.lengthMicrons("mesh_position_y");
+    if (settings.has("mesh_position_z"))
+        dz += settings.lengthMicrons("mesh_position_z");
     mesh.translate(dx, dy, dz);
 }
 
 std::vector<TriangleSoup> soupsOf(const MeshInput& input, Log& log) {
-    if (!input.file) return input.soups;
+    if (!input.file)
+        return input.soups;
     std::vector<std::string> warnings;
     std::vector<TriangleSoup> soups = readModelFile(*input.file, warnings);
-    for (const std::string& warning : warnings) log.warning(warning);
+    for (const std::string& warning : warnings)
+        log.warning(warning);
     return soups;
 }
 
-void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshInput& input, SceneGroup& group,
-               Log& log) {
+void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshInput& input,
+               SceneGroup& group, Log& log) {
     std::vector<TriangleSoup> soups = soupsOf(input, log);
     for (std::size_t part = 0; part < soups.size(); ++part) {
         const std::string name = soups.size() == 1 ? input.name : input.name + "#" + soups[part].name;
-        Settings settings =
-            resolveMesh(scene.definitions, request_user, scene.machine, group.settings, input.settings,
-                        input.default_extruder, name, &scene.profiles);
+        Settings settings = resolveMesh(scene.definitions, request_user, scene.machine, group.settings,
+                                        input.settings, input.default_extruder, name, &scene.profiles);
         MeshBuildStats stats;
         Mesh mesh = buildMesh(soups[part], input.transform, &stats);
         if (stats.degenerate_dropped || stats.duplicates_dropped) {
@@ -63,7 +67,8 @@ void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshI
 
 Scene prepareSettings(const SliceRequest& request) {
     Scene scene;
-    scene.definitions = loadDefinitionSet(request.definition, defaultSearchPath(std::getenv("CURA_ENGINE_SEARCH_PATH")));
+    scene.definitions =
+        loadDefinitionSet(request.definition, defaultSearchPath(std::getenv("CURA_ENGINE_SEARCH_PATH")));
     scene.machine = resolveMachine(scene.definitions, request.user, &scene.profiles);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
         SceneGroup group;
@@ -76,11 +81,14 @@ Scene prepareSettings(const SliceRequest& request) {
 Scene prepareScene(const SliceRequest& request, Log& log) {
     Scene scene = prepareSettings(request);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
-        for (const MeshInput& input : request.groups[g].meshes) addMeshes(scene, request.user, input, scene.groups[g], log);
+        for (const MeshInput& input : request.groups[g].meshes)
+            addMeshes(scene, request.user, input, scene.groups[g], log);
     }
     bool any = false;
-    for (const SceneGroup& group : scene.groups) any = any || !group.meshes.empty();
-    if (!any) throw InputError("nothing to slice: no model given (use -l model.stl)");
+    for (const SceneGroup& group : scene.groups)
+        any = any || !group.meshes.empty();
+    if (!any)
+        throw InputError("nothing to slice: no model given (use -l model.stl)");
     return scene;
 }
 

@@ -29,7 +29,7 @@ struct PlanStep {
 
 struct PlannedLayer {
     int index = 0;
-    coord_um z = 0;          ///< nozzle height
+    coord_um z = 0;  ///< nozzle height
     int extruder = 0;
     std::vector<PlanStep> steps;
 };

@@ -17,7 +17,8 @@ std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& bes
     if (path.closed) {
         for (std::size_t i = 0; i < path.points.size(); ++i) {
             double d = distanceUm(head, path.points[i]);
-            if (d < best_distance) best_distance = d, best = i;
+            if (d < best_distance)
+                best_distance = d, best = i;
         }
         return best;
     }
@@ -49,7 +50,8 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
         extrude.kind = PlanStep::Kind::Extrude;
         extrude.to = to;
         extrude.speed_mm_s = path.speed_mm_s;
-        extrude.volume_mm3 = extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, path.flow);
+        extrude.volume_mm3 =
+            extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, path.flow);
         steps.push_back(extrude);
         head = to;
     }
@@ -70,12 +72,15 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
         std::size_t best = paths.size(), best_start = 0;
         double best_distance = std::numeric_limits<double>::max();
         for (std::size_t i = 0; i < paths.size(); ++i) {
-            if (done[i] || paths[i].points.size() < 2) continue;
+            if (done[i] || paths[i].points.size() < 2)
+                continue;
             double d = 0;
             std::size_t start = bestStart(paths[i], head, d);
-            if (d < best_distance) best = i, best_start = start, best_distance = d;
+            if (d < best_distance)
+                best = i, best_start = start, best_distance = d;
         }
-        if (best == paths.size()) break;
+        if (best == paths.size())
+            break;
         done[best] = true;
         if (feature != paths[best].feature) {
             PlanStep marker;

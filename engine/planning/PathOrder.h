@@ -25,6 +25,7 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps);
 
 /// The volume of a line: length × width × layer thickness × flow, in mm³.
-double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um, double flow);
+double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um,
+                          double flow);
 
 }  // namespace mixengine

@@ -7,11 +7,13 @@
 namespace mixengine {
 
 double fanRatioForLayer(const Settings& s, int layer) {
-    if (!s.boolean("cool_fan_enabled")) return 0;
+    if (!s.boolean("cool_fan_enabled"))
+        return 0;
     const double first = s.ratio("cool_fan_speed_0");
     const double regular = s.ratio("cool_fan_speed_min");
     const int full = std::max(1, static_cast<int>(s.integer("cool_fan_full_layer")) - 1);
-    if (layer >= full) return regular;
+    if (layer >= full)
+        return regular;
     return first + (regular - first) * static_cast<double>(layer) / static_cast<double>(full);
 }
 
@@ -26,10 +28,11 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness) {
     return p;
 }
 
-void planMeshLayer(const MeshToolpathsInput& mesh, int mesh_index, int layer, coord_um thickness, Point2& head,
-                   PlannedLayer& planned) {
+void planMeshLayer(const MeshToolpathsInput& mesh, int mesh_index, int layer, coord_um thickness,
+                   Point2& head, PlannedLayer& planned) {
     const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(layer)];
-    if (groups.inner_walls.empty() && groups.outer_walls.empty() && groups.skin.empty() && groups.infill.empty())
+    if (groups.inner_walls.empty() && groups.outer_walls.empty() && groups.skin.empty() &&
+        groups.infill.empty())
         return;
     PlanStep marker;
     marker.kind = PlanStep::Kind::SetMesh;
@@ -47,7 +50,8 @@ void planMeshLayer(const MeshToolpathsInput& mesh, int mesh_index, int layer, co
 PrintPlan planPrint(const std::vector<LayerZ>& heights, const std::vector<MeshToolpathsInput>& meshes,
                     const Settings& global) {
     PrintPlan plan;
-    for (const MeshToolpathsInput& mesh : meshes) plan.mesh_names.push_back(mesh.name);
+    for (const MeshToolpathsInput& mesh : meshes)
+        plan.mesh_names.push_back(mesh.name);
     Point2 head{0, 0};
     for (std::size_t i = 0; i < heights.size(); ++i) {
         PlannedLayer planned;

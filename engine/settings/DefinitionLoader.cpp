@@ -21,7 +21,8 @@ constexpr const char* kCuraResources = "/usr/share/cura/resources";
 
 json readJsonFile(const fs::path& file) {
     std::ifstream in(file);
-    if (!in) throw InputError(file.string() + ": cannot open definition file");
+    if (!in)
+        throw InputError(file.string() + ": cannot open definition file");
     try {
         return json::parse(in);
     } catch (const json::parse_error& e) {
@@ -31,13 +32,16 @@ json readJsonFile(const fs::path& file) {
 
 fs::path findDefinition(const std::string& name_or_path, const std::vector<fs::path>& search) {
     fs::path direct(name_or_path);
-    if (std::error_code ec; fs::is_regular_file(direct, ec)) return direct;
+    if (std::error_code ec; fs::is_regular_file(direct, ec))
+        return direct;
     std::string id = direct.filename().string();
     const std::string suffix = ".def.json";
-    if (id.size() > suffix.size() && id.ends_with(suffix)) id.resize(id.size() - suffix.size());
+    if (id.size() > suffix.size() && id.ends_with(suffix))
+        id.resize(id.size() - suffix.size());
     for (const fs::path& dir : search) {
         fs::path candidate = dir / (id + suffix);
-        if (std::error_code ec; fs::is_regular_file(candidate, ec)) return candidate;
+        if (std::error_code ec; fs::is_regular_file(candidate, ec))
+            return candidate;
     }
     throw InputError(name_or_path + ": definition not found (searched CURA_ENGINE_SEARCH_PATH and " +
                      std::string(kCuraResources) + ")");
@@ -45,49 +49,63 @@ fs::path findDefinition(const std::string& name_or_path, const std::vector<fs::p
 
 std::optional<std::string> optionalText(const json& node, const char* property) {
     auto it = node.find(property);
-    if (it == node.end()) return std::nullopt;
+    if (it == node.end())
+        return std::nullopt;
     return jsonToPythonText(*it);
 }
 
 void applyProperties(SettingDefinition& def, const json& node) {
-    if (auto it = node.find("type"); it != node.end()) def.type = it->get<std::string>();
-    if (auto it = node.find("default_value"); it != node.end()) def.default_value = jsonToPythonText(*it);
-    if (auto v = optionalText(node, "value")) def.value_formula = v;
-    if (auto v = optionalText(node, "resolve")) def.resolve_formula = v;
-    if (auto v = optionalText(node, "limit_to_extruder")) def.limit_to_extruder = v;
-    if (auto v = optionalText(node, "minimum_value")) def.minimum_value = v;
-    if (auto v = optionalText(node, "maximum_value")) def.maximum_value = v;
-    if (auto it = node.find("unit"); it != node.end() && it->is_string()) def.unit = it->get<std::string>();
+    if (auto it = node.find("type"); it != node.end())
+        def.type = it->get<std::string>();
+    if (auto it = node.find("default_value"); it != node.end())
+        def.default_value = jsonToPythonText(*it);
+    if (auto v = optionalText(node, "value"))
+        def.value_formula = v;
+    if (auto v = optionalText(node, "resolve"))
+        def.resolve_formula = v;
+    if (auto v = optionalText(node, "limit_to_extruder"))
+        def.limit_to_extruder = v;
+    if (auto v = optionalText(node, "minimum_value"))
+        def.minimum_value = v;
+    if (auto v = optionalText(node, "maximum_value"))
+        def.maximum_value = v;
+    if (auto it = node.find("unit"); it != node.end() && it->is_string())
+        def.unit = it->get<std::string>();
     if (auto it = node.find("settable_per_mesh"); it != node.end() && it->is_boolean())
         def.settable_per_mesh = it->get<bool>();
     if (auto it = node.find("settable_per_extruder"); it != node.end() && it->is_boolean())
         def.settable_per_extruder = it->get<bool>();
     if (auto it = node.find("options"); it != node.end() && it->is_object()) {
         def.enum_options.clear();
-        for (const auto& [option, label] : it->items()) def.enum_options.push_back(option);
+        for (const auto& [option, label] : it->items())
+            def.enum_options.push_back(option);
     }
 }
 
 void collectSettings(const json& tree, SettingDefinitionMap& out) {
     for (const auto& [key, node] : tree.items()) {
-        if (!node.is_object()) continue;
+        if (!node.is_object())
+            continue;
         if (node.value("type", "") != "category") {
             SettingDefinition& def = out[key];
             def.key = key;
             applyProperties(def, node);
         }
-        if (auto children = node.find("children"); children != node.end()) collectSettings(*children, out);
+        if (auto children = node.find("children"); children != node.end())
+            collectSettings(*children, out);
     }
 }
 
 void collectMetadata(const json& metadata, std::map<std::string, std::string>& out) {
     for (const auto& [key, value] : metadata.items()) {
-        if (!value.is_object()) out[key] = jsonToPythonText(value);
+        if (!value.is_object())
+            out[key] = jsonToPythonText(value);
     }
 }
 
 /// The chain of files from the root (fdmprinter / fdmextruder) to `leaf`.
-std::vector<std::pair<fs::path, json>> loadChain(const std::string& leaf, const std::vector<fs::path>& search) {
+std::vector<std::pair<fs::path, json>> loadChain(const std::string& leaf,
+                                                 const std::vector<fs::path>& search) {
     std::vector<std::pair<fs::path, json>> chain;
     std::set<fs::path> seen;
     std::string next = leaf;
@@ -96,7 +114,8 @@ std::vector<std::pair<fs::path, json>> loadChain(const std::string& leaf, const 
         if (!seen.insert(fs::weakly_canonical(file)).second)
             throw InputError(file.string() + ": inherits chain loops back to this file");
         json doc = readJsonFile(file);
-        if (!doc.is_object()) throw InputError(file.string() + ": definition is not a JSON object");
+        if (!doc.is_object())
+            throw InputError(file.string() + ": definition is not a JSON object");
         next = doc.value("inherits", "");
         chain.emplace_back(file, std::move(doc));
     }
@@ -115,7 +134,8 @@ MergedChain mergeChain(const std::vector<std::pair<fs::path, json>>& chain) {
     MergedChain merged;
     for (const auto& [file, doc] : chain) {
         merged.files.insert(merged.files.begin(), file);
-        if (auto it = doc.find("settings"); it != doc.end()) collectSettings(*it, merged.settings);
+        if (auto it = doc.find("settings"); it != doc.end())
+            collectSettings(*it, merged.settings);
         if (auto it = doc.find("metadata"); it != doc.end() && it->is_object()) {
             collectMetadata(*it, merged.metadata);
             if (auto trains = it->find("machine_extruder_trains"); trains != it->end())
@@ -152,8 +172,10 @@ std::vector<fs::path> defaultSearchPath(const char* env_search_path) {
         std::size_t start = 0;
         while (start <= list.size()) {
             std::size_t end = list.find_first_of(":;", start);
-            if (end == std::string::npos) end = list.size();
-            if (end > start) dirs.emplace_back(list.substr(start, end - start));
+            if (end == std::string::npos)
+                end = list.size();
+            if (end > start)
+                dirs.emplace_back(list.substr(start, end - start));
             start = end + 1;
         }
     }
@@ -172,7 +194,8 @@ DefinitionSet loadDefinitionSet(const std::string& name_or_path, const std::vect
     MergedChain merged = mergeChain(chain);
     DefinitionSet set;
     set.machine_id = chain.back().first.filename().string();
-    if (set.machine_id.ends_with(".def.json")) set.machine_id.resize(set.machine_id.size() - 9);
+    if (set.machine_id.ends_with(".def.json"))
+        set.machine_id.resize(set.machine_id.size() - 9);
     set.files = merged.files;
     set.settings = std::move(merged.settings);
     set.metadata = std::move(merged.metadata);
@@ -180,10 +203,12 @@ DefinitionSet loadDefinitionSet(const std::string& name_or_path, const std::vect
     std::map<int, std::string> trains;
     if (merged.extruder_trains.is_object()) {
         for (const auto& [position, id] : merged.extruder_trains.items()) {
-            if (id.is_string()) trains[std::atoi(position.c_str())] = id.get<std::string>();
+            if (id.is_string())
+                trains[std::atoi(position.c_str())] = id.get<std::string>();
         }
     }
-    if (trains.empty()) trains[0] = "fdmextruder";
+    if (trains.empty())
+        trains[0] = "fdmextruder";
     for (const auto& [position, id] : trains) {
         set.extruders.push_back(loadExtruder(id, position, search, set.files));
     }

@@ -12,16 +12,16 @@
 namespace mixengine {
 
 struct ExtruderDefinition {
-    std::string id;                 ///< definition id, e.g. "creality_base_extruder_0"
-    int position = 0;               ///< extruder_nr
+    std::string id;                  ///< definition id, e.g. "creality_base_extruder_0"
+    int position = 0;                ///< extruder_nr
     SettingDefinitionMap overrides;  ///< what this extruder's chain changes relative to the global one
 };
 
 struct DefinitionSet {
-    std::string machine_id;  ///< e.g. "creality_ender3" or "fdmprinter"
+    std::string machine_id;                    ///< e.g. "creality_ender3" or "fdmprinter"
     std::vector<std::filesystem::path> files;  ///< every file read, most derived first
     SettingDefinitionMap settings;
-    std::vector<ExtruderDefinition> extruders;  ///< ordered by position; at least one
+    std::vector<ExtruderDefinition> extruders;    ///< ordered by position; at least one
     std::map<std::string, std::string> metadata;  ///< scalar metadata values (str() form)
 
     const SettingDefinition* find(std::string_view key) const {
@@ -36,6 +36,7 @@ std::vector<std::filesystem::path> defaultSearchPath(const char* env_search_path
 
 /// Loads `name_or_path` (a path to a .def.json, or an id like "creality_ender3") with its whole
 /// inherits chain and its extruder trains. Throws InputError naming the file at fault.
-DefinitionSet loadDefinitionSet(const std::string& name_or_path, const std::vector<std::filesystem::path>& search);
+DefinitionSet loadDefinitionSet(const std::string& name_or_path,
+                                const std::vector<std::filesystem::path>& search);
 
 }  // namespace mixengine

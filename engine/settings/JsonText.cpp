@@ -1,7 +1,7 @@
 #include "settings/JsonText.h"
 
-#include <charconv>
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,15 +10,18 @@
 namespace mixengine {
 
 std::string pythonFloatText(double value) {
-    if (std::isnan(value)) return "nan";
-    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+    if (std::isnan(value))
+        return "nan";
+    if (std::isinf(value))
+        return value > 0 ? "inf" : "-inf";
     // Shortest round-trip digits in scientific form, then laid out the way Python's repr does:
     // fixed notation for decimal exponents -4 <= e < 16, scientific otherwise.
     char buffer[64];
     auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific);
     std::string sci(buffer, end);
     const bool negative = sci[0] == '-';
-    if (negative) sci.erase(0, 1);
+    if (negative)
+        sci.erase(0, 1);
     const auto e_pos = sci.find('e');
     const int exponent = std::stoi(sci.substr(e_pos + 1));
     std::string digits = sci.substr(0, e_pos);
@@ -34,7 +37,8 @@ std::string pythonFloatText(double value) {
         }
     } else {
         text = digits.substr(0, 1);
-        if (digits.size() > 1) text += "." + digits.substr(1);
+        if (digits.size() > 1)
+            text += "." + digits.substr(1);
         char exp_text[16];
         std::snprintf(exp_text, sizeof exp_text, "e%c%02d", exponent < 0 ? '-' : '+', std::abs(exponent));
         text += exp_text;
@@ -59,7 +63,8 @@ std::string jsonToPythonText(const nlohmann::json& value) {
         case nlohmann::json::value_t::array: {
             std::string text = "[";
             for (std::size_t i = 0; i < value.size(); ++i) {
-                if (i) text += ", ";
+                if (i)
+                    text += ", ";
                 const auto& item = value[i];
                 text += item.is_string() ? "'" + item.get<std::string>() + "'" : jsonToPythonText(item);
             }

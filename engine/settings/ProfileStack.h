@@ -14,7 +14,7 @@
 namespace mixengine {
 
 struct ContainerValue {
-    std::string text;         ///< literal text, or the formula when is_formula
+    std::string text;  ///< literal text, or the formula when is_formula
     bool is_formula = false;
 };
 
@@ -25,7 +25,7 @@ struct InstanceContainer {
 };
 
 struct ProfileStack {
-    std::vector<InstanceContainer> global;                   ///< top first
+    std::vector<InstanceContainer> global;                    ///< top first
     std::map<int, std::vector<InstanceContainer>> extruders;  ///< by extruder_nr, top first
 };
 

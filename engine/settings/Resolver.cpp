@@ -11,7 +11,8 @@ namespace {
 
 int userExtruderCount(const DefinitionSet& definitions, const UserSettings& user) {
     int count = static_cast<int>(definitions.extruders.size());
-    if (!user.extruders.empty()) count = std::max(count, user.extruders.rbegin()->first + 1);
+    if (!user.extruders.empty())
+        count = std::max(count, user.extruders.rbegin()->first + 1);
     return count;
 }
 
@@ -23,7 +24,8 @@ ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSetti
     {
         StackEvaluator probe(definitions, user, count, profiles);
         if (auto declared = probe.value(StackEvaluator::kGlobal, "machine_extruder_count")) {
-            if (declared->is<std::int64_t>()) count = std::clamp(static_cast<int>(declared->as<std::int64_t>()), count, 16);
+            if (declared->is<std::int64_t>())
+                count = std::clamp(static_cast<int>(declared->as<std::int64_t>()), count, 16);
         }
     }
     StackEvaluator stack(definitions, user, count, profiles);
@@ -41,9 +43,9 @@ Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& g
     return machine.global.with("mesh group " + std::to_string(group_index), group_user);
 }
 
-Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user, const ResolvedMachine& machine,
-                     const Settings& group, const SettingValues& mesh_user, int default_extruder,
-                     const std::string& mesh_name, const ProfileStack* profiles) {
+Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user,
+                     const ResolvedMachine& machine, const Settings& group, const SettingValues& mesh_user,
+                     int default_extruder, const std::string& mesh_name, const ProfileStack* profiles) {
     int extruder = default_extruder;
     if (auto it = mesh_user.find("extruder_nr"); it != mesh_user.end()) {
         extruder = static_cast<int>(parseInteger("extruder_nr", it->second));
@@ -58,7 +60,8 @@ Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user,
     own.erase("extruder_nr");
     // Group-level values (-g) sit between the train and the mesh.
     for (const auto& [key, value] : group.all()) {
-        if (!machine.global.has(key) || machine.global.text(key) != value) own.emplace(key, value);
+        if (!machine.global.has(key) || machine.global.text(key) != value)
+            own.emplace(key, value);
     }
     SettingValues values;
     if (own.empty()) {

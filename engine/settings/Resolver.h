@@ -18,7 +18,7 @@ struct UserSettings {
 
 struct ResolvedMachine {
     Settings global;
-    std::vector<Settings> extruders;              ///< index = extruder_nr; at least one
+    std::vector<Settings> extruders;            ///< index = extruder_nr; at least one
     std::vector<std::string> formula_failures;  ///< definition formulas that fell back to default_value
 };
 
@@ -32,8 +32,9 @@ Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& g
 /// A mesh's view. `default_extruder` is the train in focus when the mesh was given; the mesh's own
 /// extruder_nr, if set, wins. Formulas are re-evaluated in the mesh's scope when it has values of
 /// its own. Throws InputError when the extruder does not exist.
-Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user, const ResolvedMachine& machine,
-                     const Settings& group, const SettingValues& mesh_user, int default_extruder,
-                     const std::string& mesh_name, const ProfileStack* profiles = nullptr);
+Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user,
+                     const ResolvedMachine& machine, const Settings& group, const SettingValues& mesh_user,
+                     int default_extruder, const std::string& mesh_name,
+                     const ProfileStack* profiles = nullptr);
 
 }  // namespace mixengine

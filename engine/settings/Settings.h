@@ -17,9 +17,10 @@ namespace mixengine {
 using SettingValues = std::map<std::string, std::string, std::less<>>;
 
 class Settings {
-public:
+  public:
     Settings() = default;
-    Settings(std::string scope, SettingValues values) : scope_(std::move(scope)), values_(std::move(values)) {}
+    Settings(std::string scope, SettingValues values)
+        : scope_(std::move(scope)), values_(std::move(values)) {}
 
     const std::string& scope() const { return scope_; }
     bool has(std::string_view key) const { return values_.find(key) != values_.end(); }
@@ -47,7 +48,7 @@ public:
     /// Returns a copy with `overlay` applied on top (used for mesh groups and meshes).
     Settings with(std::string scope, const SettingValues& overlay) const;
 
-private:
+  private:
     std::string scope_;
     SettingValues values_;
 };

@@ -17,15 +17,17 @@ struct StackEvaluator::Scope {
 };
 
 class StackEvaluator::ScopeEnvironment : public formula::Environment {
-public:
+  public:
     ScopeEnvironment(StackEvaluator& stack, int scope) : stack_(stack), scope_(scope) {}
-    std::optional<formula::Value> lookup(std::string_view name) const override { return stack_.value(scope_, name); }
+    std::optional<formula::Value> lookup(std::string_view name) const override {
+        return stack_.value(scope_, name);
+    }
     std::optional<formula::Value> callFunction(std::string_view name,
                                                const std::vector<formula::Value>& args) const override {
         return stack_.callCuraFunction(scope_, name, args);
     }
 
-private:
+  private:
     StackEvaluator& stack_;
     int scope_;
 };
@@ -34,7 +36,7 @@ namespace {
 
 /// Removes `key` from a busy set when the evaluation of `key` ends, also by an exception.
 class BusyGuard {
-public:
+  public:
     BusyGuard(std::unordered_set<std::string>& set, std::string key) : set_(set), key_(std::move(key)) {
         set_.insert(key_);
     }
@@ -42,15 +44,18 @@ public:
     BusyGuard(const BusyGuard&) = delete;
     BusyGuard& operator=(const BusyGuard&) = delete;
 
-private:
+  private:
     std::unordered_set<std::string>& set_;
     std::string key_;
 };
 
 std::optional<long long> asInteger(const formula::Value& v) {
-    if (v.is<std::int64_t>()) return v.as<std::int64_t>();
-    if (v.is<bool>()) return v.as<bool>() ? 1 : 0;
-    if (v.is<double>() && std::isfinite(v.as<double>())) return static_cast<long long>(v.as<double>());
+    if (v.is<std::int64_t>())
+        return v.as<std::int64_t>();
+    if (v.is<bool>())
+        return v.as<bool>() ? 1 : 0;
+    if (v.is<double>() && std::isfinite(v.as<double>()))
+        return static_cast<long long>(v.as<double>());
     if (v.is<std::string>()) {
         try {
             return std::stoll(v.as<std::string>());
@@ -62,7 +67,8 @@ std::optional<long long> asInteger(const formula::Value& v) {
 }
 
 std::string argumentKey(const std::vector<formula::Value>& args, std::size_t index) {
-    if (index < args.size() && args[index].is<std::string>()) return args[index].as<std::string>();
+    if (index < args.size() && args[index].is<std::string>())
+        return args[index].as<std::string>();
     throw InputError("formula function argument " + std::to_string(index + 1) + " must be a setting name");
 }
 
@@ -70,7 +76,10 @@ std::string argumentKey(const std::vector<formula::Value>& args, std::size_t ind
 
 StackEvaluator::StackEvaluator(const DefinitionSet& definitions, const UserSettings& user, int extruder_count,
                                const ProfileStack* profiles)
-    : definitions_(definitions), user_(user), profiles_(profiles), extruder_count_(std::max(1, extruder_count)) {
+    : definitions_(definitions),
+      user_(user),
+      profiles_(profiles),
+      extruder_count_(std::max(1, extruder_count)) {
     scopes_.push_back(std::make_unique<Scope>());
     for (int e = 0; e < extruder_count_; ++e) {
         auto scope = std::make_unique<Scope>();
@@ -92,7 +101,8 @@ int StackEvaluator::addMeshScope(SettingValues user, int extruder) {
 
 const SettingDefinition* StackEvaluator::extruderOwn(int extruder, std::string_view key) const {
     for (const ExtruderDefinition& e : definitions_.extruders) {
-        if (e.position != extruder) continue;
+        if (e.position != extruder)
+            continue;
         auto it = e.overrides.find(key);
         return it == e.overrides.end() ? nullptr : &it->second;
     }
@@ -100,14 +110,16 @@ const SettingDefinition* StackEvaluator::extruderOwn(int extruder, std::string_v
 }
 
 const SettingDefinition* StackEvaluator::anyDefinition(std::string_view key) const {
-    if (const SettingDefinition* def = definitions_.find(key)) return def;
+    if (const SettingDefinition* def = definitions_.find(key))
+        return def;
     return extruderOwn(0, key);
 }
 
 const formula::Expression& StackEvaluator::compiled(const std::string& formula) {
     auto it = expressions_.find(&formula);
     if (it == expressions_.end()) {
-        it = expressions_.emplace(&formula, std::make_unique<formula::Expression>(formula::parse(formula))).first;
+        it = expressions_.emplace(&formula, std::make_unique<formula::Expression>(formula::parse(formula)))
+                 .first;
     }
     return *it->second;
 }
@@ -136,7 +148,8 @@ std::optional<formula::Value> StackEvaluator::value(int scope, std::string_view 
         const Scope& s = *scopes_[static_cast<std::size_t>(scope)];
         const bool in_train_user = s.extruder >= 0 && user_.extruders.count(s.extruder) &&
                                    user_.extruders.at(s.extruder).count(std::string(key));
-        if (!in_train_user && !s.mesh_user.count(std::string(key))) return std::nullopt;
+        if (!in_train_user && !s.mesh_user.count(std::string(key)))
+            return std::nullopt;
     }
     return resolve(scope, key, Mode::Normal);
 }
@@ -144,19 +157,23 @@ std::optional<formula::Value> StackEvaluator::value(int scope, std::string_view 
 formula::Value StackEvaluator::resolve(int scope, std::string_view key, Mode mode) {
     Scope& s = *scopes_[static_cast<std::size_t>(scope)];
     // A global key whose `resolve` formula is being evaluated is read without resolving again.
-    if (scope == kGlobal && mode == Mode::Normal && s.busy[static_cast<int>(Mode::Normal)].count(std::string(key)))
+    if (scope == kGlobal && mode == Mode::Normal &&
+        s.busy[static_cast<int>(Mode::Normal)].count(std::string(key)))
         mode = Mode::Raw;
     const int m = static_cast<int>(mode);
     const std::string name(key);
-    if (auto it = s.memo[m].find(name); it != s.memo[m].end()) return it->second;
+    if (auto it = s.memo[m].find(name); it != s.memo[m].end())
+        return it->second;
     if (s.busy[m].count(name)) {
         const SettingDefinition* def = anyDefinition(key);
         const std::string formula = def && def->value_formula ? *def->value_formula : std::string("?");
         throw InputError("setting '" + name + "': formula '" + formula + "' depends on itself");
     }
     BusyGuard guard(s.busy[m], name);
-    std::optional<formula::Value> result = scope == kGlobal ? resolveGlobal(key, mode) : resolveTrain(scope, key, mode);
-    if (!result) throw InputError("setting '" + name + "' has no value in any definition");
+    std::optional<formula::Value> result =
+        scope == kGlobal ? resolveGlobal(key, mode) : resolveTrain(scope, key, mode);
+    if (!result)
+        throw InputError("setting '" + name + "' has no value in any definition");
     s.memo[m].emplace(name, *result);
     return *result;
 }
@@ -165,8 +182,10 @@ std::optional<formula::Value> StackEvaluator::resolveGlobal(std::string_view key
     const SettingDefinition* def = definitions_.find(key);
     auto user = user_.global.find(key);
     if (!def) {
-        if (user != user_.global.end()) return userValue(key, user->second);
-        if (extruderOwn(0, key)) return resolve(extruderScope(0), key, Mode::Normal);
+        if (user != user_.global.end())
+            return userValue(key, user->second);
+        if (extruderOwn(0, key))
+            return resolve(extruderScope(0), key, Mode::Normal);
         return std::nullopt;
     }
     if (def->resolve_formula && user == user_.global.end() && mode != Mode::Raw) {
@@ -175,43 +194,54 @@ std::optional<formula::Value> StackEvaluator::resolveGlobal(std::string_view key
     if (def->limit_to_extruder && def->settable_per_extruder) {
         std::optional<int> target = limitTarget(kGlobal, *def);
         const int extruder = target.value_or(0) < 0 ? 0 : target.value_or(0);
-        if (target && extruder < extruder_count_) return resolve(extruderScope(extruder), key, Mode::NoLimit);
+        if (target && extruder < extruder_count_)
+            return resolve(extruderScope(extruder), key, Mode::NoLimit);
     }
-    if (user != user_.global.end()) return userValue(key, user->second);
+    if (user != user_.global.end())
+        return userValue(key, user->second);
     return fromDefinitions(kGlobal, key);
 }
 
 std::optional<formula::Value> StackEvaluator::resolveTrain(int scope, std::string_view key, Mode mode) {
     Scope& s = *scopes_[static_cast<std::size_t>(scope)];
     if (s.is_mesh) {
-        if (auto it = s.mesh_user.find(key); it != s.mesh_user.end()) return userValue(key, it->second);
+        if (auto it = s.mesh_user.find(key); it != s.mesh_user.end())
+            return userValue(key, it->second);
     }
     const SettingDefinition* def = definitions_.find(key);
     const SettingDefinition* own = extruderOwn(s.extruder, key);
     if (mode == Mode::Normal && def && !own) {
         const bool per_scope = def->settable_per_extruder || (s.is_mesh && def->settable_per_mesh);
-        if (!per_scope) return resolve(kGlobal, key, Mode::Normal);
+        if (!per_scope)
+            return resolve(kGlobal, key, Mode::Normal);
     }
     if (mode == Mode::Normal && def && def->limit_to_extruder) {
         std::optional<int> target = limitTarget(scope, *def);
         if (target && *target >= 0 && *target < extruder_count_ && (*target != s.extruder || s.is_mesh)) {
-            if (*target != s.extruder || s.mesh_user.empty()) return resolve(extruderScope(*target), key, Mode::NoLimit);
+            if (*target != s.extruder || s.mesh_user.empty())
+                return resolve(extruderScope(*target), key, Mode::NoLimit);
         }
     }
     if (auto train = user_.extruders.find(s.extruder); train != user_.extruders.end()) {
-        if (auto it = train->second.find(key); it != train->second.end()) return userValue(key, it->second);
+        if (auto it = train->second.find(key); it != train->second.end())
+            return userValue(key, it->second);
     }
-    if (auto it = user_.global.find(key); it != user_.global.end()) return userValue(key, it->second);
-    if (s.is_mesh && s.mesh_user.empty()) return resolve(extruderScope(s.extruder), key, mode);
+    if (auto it = user_.global.find(key); it != user_.global.end())
+        return userValue(key, it->second);
+    if (s.is_mesh && s.mesh_user.empty())
+        return resolve(extruderScope(s.extruder), key, mode);
     return fromDefinitions(scope, key);
 }
 
-std::optional<formula::Value> StackEvaluator::fromContainers(int scope, const std::vector<InstanceContainer>& containers,
+std::optional<formula::Value> StackEvaluator::fromContainers(int scope,
+                                                             const std::vector<InstanceContainer>& containers,
                                                              std::string_view key) {
     for (const InstanceContainer& container : containers) {
         auto it = container.values.find(key);
-        if (it == container.values.end()) continue;
-        if (it->second.is_formula) return evaluateFormula(scope, key, it->second.text);
+        if (it == container.values.end())
+            continue;
+        if (it->second.is_formula)
+            return evaluateFormula(scope, key, it->second.text);
         return userValue(key, it->second.text);
     }
     return std::nullopt;
@@ -224,16 +254,21 @@ std::optional<formula::Value> StackEvaluator::fromDefinitions(int scope, std::st
     const std::string type = def ? def->type : (own ? own->type : std::string());
     if (profiles_ && extruder >= 0) {
         if (auto it = profiles_->extruders.find(extruder); it != profiles_->extruders.end()) {
-            if (auto v = fromContainers(scope, it->second, key)) return v;
+            if (auto v = fromContainers(scope, it->second, key))
+                return v;
         }
     }
     for (const SettingDefinition* source : {own, def}) {
-        if (!source) continue;
+        if (!source)
+            continue;
         if (source == def && profiles_) {
-            if (auto v = fromContainers(scope, profiles_->global, key)) return v;
+            if (auto v = fromContainers(scope, profiles_->global, key))
+                return v;
         }
-        if (source->value_formula) return evaluateFormula(scope, key, *source->value_formula);
-        if (source == own && source->default_value.empty() && source->type.empty()) continue;
+        if (source->value_formula)
+            return evaluateFormula(scope, key, *source->value_formula);
+        if (source == own && source->default_value.empty() && source->type.empty())
+            continue;
         return valueFromText(key, type, source->default_value);
     }
     return std::nullopt;
@@ -242,7 +277,8 @@ std::optional<formula::Value> StackEvaluator::fromDefinitions(int scope, std::st
 std::optional<int> StackEvaluator::limitTarget(int scope, const SettingDefinition& def) {
     const formula::Value v = evaluateFormula(scope, def.key + ".limit_to_extruder", *def.limit_to_extruder);
     std::optional<long long> n = asInteger(v);
-    if (!n) return std::nullopt;
+    if (!n)
+        return std::nullopt;
     return static_cast<int>(*n);
 }
 
@@ -252,22 +288,28 @@ std::optional<formula::Value> StackEvaluator::callCuraFunction(int scope, std::s
         std::optional<long long> n = args.empty() ? std::nullopt : asInteger(args[0]);
         const std::string key = argumentKey(args, 1);
         long long nr = n.value_or(0) < 0 ? 0 : n.value_or(0);
-        if (nr >= extruder_count_) return resolve(kGlobal, key, Mode::Normal);
+        if (nr >= extruder_count_)
+            return resolve(kGlobal, key, Mode::Normal);
         return resolve(extruderScope(static_cast<int>(nr)), key, Mode::Raw);
     }
     if (name == "extruderValues") {
         const std::string key = argumentKey(args, 0);
         formula::List values;
-        for (int e = 0; e < extruder_count_; ++e) values.push_back(resolve(extruderScope(e), key, Mode::Raw));
+        for (int e = 0; e < extruder_count_; ++e)
+            values.push_back(resolve(extruderScope(e), key, Mode::Raw));
         return formula::Value(std::move(values));
     }
-    if (name == "resolveOrValue") return resolve(kGlobal, argumentKey(args, 0), Mode::Normal);
-    if (name == "defaultExtruderPosition") return formula::Value(std::string("0"));
+    if (name == "resolveOrValue")
+        return resolve(kGlobal, argumentKey(args, 0), Mode::Normal);
+    if (name == "defaultExtruderPosition")
+        return formula::Value(std::string("0"));
     if (name == "anyExtruderWithMaterial" || name == "anyExtruderNrWithOrDefault") {
         const std::string key = argumentKey(args, 0);
-        if (!anyDefinition(key)) return formula::Value(std::int64_t{0});
+        if (!anyDefinition(key))
+            return formula::Value(std::int64_t{0});
         for (int e = 0; e < extruder_count_; ++e) {
-            if (formula::truthy(resolve(extruderScope(e), key, Mode::Normal))) return formula::Value(std::int64_t{e});
+            if (formula::truthy(resolve(extruderScope(e), key, Mode::Normal)))
+                return formula::Value(std::int64_t{e});
         }
         return formula::Value(std::int64_t{0});
     }
@@ -278,29 +320,37 @@ std::optional<formula::Value> StackEvaluator::callCuraFunction(int scope, std::s
 SettingValues StackEvaluator::allText(int scope) {
     const Scope& s = *scopes_[static_cast<std::size_t>(scope)];
     std::vector<std::string> keys;
-    for (const auto& [key, def] : definitions_.settings) keys.push_back(key);
+    for (const auto& [key, def] : definitions_.settings)
+        keys.push_back(key);
     if (s.extruder >= 0) {
         for (const ExtruderDefinition& e : definitions_.extruders) {
-            if (e.position != s.extruder) continue;
-            for (const auto& [key, def] : e.overrides) keys.push_back(key);
+            if (e.position != s.extruder)
+                continue;
+            for (const auto& [key, def] : e.overrides)
+                keys.push_back(key);
         }
     }
-    for (const auto& [key, text] : user_.global) keys.push_back(key);
+    for (const auto& [key, text] : user_.global)
+        keys.push_back(key);
     if (auto it = user_.extruders.find(s.extruder); s.extruder >= 0 && it != user_.extruders.end()) {
-        for (const auto& [key, text] : it->second) keys.push_back(key);
+        for (const auto& [key, text] : it->second)
+            keys.push_back(key);
     }
-    for (const auto& [key, text] : s.mesh_user) keys.push_back(key);
+    for (const auto& [key, text] : s.mesh_user)
+        keys.push_back(key);
 
     SettingValues out;
     for (const std::string& key : keys) {
-        if (out.count(key)) continue;
+        if (out.count(key))
+            continue;
         try {
             out.emplace(key, textFromValue(resolve(scope, key, Mode::Normal)));
         } catch (const UserValueError&) {
             throw;
         } catch (const InputError& e) {
             const SettingDefinition* def = anyDefinition(key);
-            if (!def) throw;
+            if (!def)
+                throw;
             failures_.push_back(e.what());
             out.emplace(key, def->default_value);
         }

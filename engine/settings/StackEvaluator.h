@@ -41,12 +41,12 @@ namespace mixengine {
 
 /// A value the user gave (-s, or Cura's message) that does not fit its setting's type.
 class UserValueError : public InputError {
-public:
+  public:
     using InputError::InputError;
 };
 
 class StackEvaluator {
-public:
+  public:
     StackEvaluator(const DefinitionSet& definitions, const UserSettings& user, int extruder_count,
                    const ProfileStack* profiles = nullptr);
     ~StackEvaluator();
@@ -69,7 +69,7 @@ public:
     /// "setting: formula: problem" lines for definition formulas that failed in allText().
     const std::vector<std::string>& failures() const { return failures_; }
 
-private:
+  private:
     struct Scope;
     class ScopeEnvironment;
     enum class Mode { Normal, NoLimit, Raw };

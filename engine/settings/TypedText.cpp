@@ -12,9 +12,10 @@ namespace {
 
 /// Formulas with no names, to read Python literals such as lists.
 class NoNames : public formula::Environment {
-public:
+  public:
     std::optional<formula::Value> lookup(std::string_view) const override { return std::nullopt; }
-    std::optional<formula::Value> callFunction(std::string_view, const std::vector<formula::Value>&) const override {
+    std::optional<formula::Value> callFunction(std::string_view,
+                                               const std::vector<formula::Value>&) const override {
         return std::nullopt;
     }
 };
@@ -23,7 +24,8 @@ formula::Value literal(std::string_view key, std::string_view text) {
     try {
         return formula::evaluate(formula::parse(text), NoNames());
     } catch (const InputError&) {
-        throw InputError("setting '" + std::string(key) + "': value '" + std::string(text) + "' is not a Python literal");
+        throw InputError("setting '" + std::string(key) + "': value '" + std::string(text) +
+                         "' is not a Python literal");
     }
 }
 
@@ -39,25 +41,33 @@ bool looksLikeNumber(std::string_view text) {
 }  // namespace
 
 formula::Value valueFromText(std::string_view key, std::string_view type, std::string_view text) {
-    if (type == "float") return parseReal(key, text);
+    if (type == "float")
+        return parseReal(key, text);
     if (type == "int" || type == "extruder" || type == "optional_extruder") {
         const double number = parseReal(key, text);
         return static_cast<std::int64_t>(std::llround(number));
     }
-    if (type == "bool") return parseBool(key, text);
-    if (type == "polygon" || type == "polygons" || type == "[int]") return literal(key, text);
-    if (type == "str" || type == "enum") return std::string(text);
+    if (type == "bool")
+        return parseBool(key, text);
+    if (type == "polygon" || type == "polygons" || type == "[int]")
+        return literal(key, text);
+    if (type == "str" || type == "enum")
+        return std::string(text);
     // Unknown keys: numbers as numbers, Python booleans as booleans, everything else as text.
-    if (text == "True" || text == "False") return text == "True";
+    if (text == "True" || text == "False")
+        return text == "True";
     if (looksLikeNumber(text)) {
         const double number = parseReal(key, text);
         const bool integral = text.find_first_of(".eE") == std::string_view::npos;
-        if (integral && std::fabs(number) < 9e15) return static_cast<std::int64_t>(number);
+        if (integral && std::fabs(number) < 9e15)
+            return static_cast<std::int64_t>(number);
         return number;
     }
     return std::string(text);
 }
 
-std::string textFromValue(const formula::Value& value) { return formula::toPythonStr(value); }
+std::string textFromValue(const formula::Value& value) {
+    return formula::toPythonStr(value);
+}
 
 }  // namespace mixengine

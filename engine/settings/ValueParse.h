@@ -13,11 +13,11 @@
 
 namespace mixengine {
 
-bool parseBool(std::string_view key, std::string_view text);           ///< True/False/true/yes/on/1/0/...
-double parseReal(std::string_view key, std::string_view text);         ///< finite doubles only
-long long parseInteger(std::string_view key, std::string_view text);   ///< "3", also "3.0"
+bool parseBool(std::string_view key, std::string_view text);               ///< True/False/true/yes/on/1/0/...
+double parseReal(std::string_view key, std::string_view text);             ///< finite doubles only
+long long parseInteger(std::string_view key, std::string_view text);       ///< "3", also "3.0"
 coord_um parseLengthMicrons(std::string_view key, std::string_view text);  ///< mm → µm, rounded
-double parseRatio(std::string_view key, std::string_view text);        ///< percent → fraction
+double parseRatio(std::string_view key, std::string_view text);            ///< percent → fraction
 std::vector<double> parseRealList(std::string_view key, std::string_view text);  ///< "[1, 2.5]"
 /// "[[-20, 10], [10, 10], ...]" (one polygon, mm) → microns.
 Path parsePolygonMicrons(std::string_view key, std::string_view text);

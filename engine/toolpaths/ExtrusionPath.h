@@ -13,12 +13,12 @@ enum class Feature { WallOuter, WallInner, Skin, Fill, Support, SupportInterface
 std::string_view featureMarker(Feature feature);  ///< "WALL-OUTER", "FILL", ...
 
 struct ExtrusionPath {
-    Path points;                 ///< microns
-    bool closed = false;         ///< a loop: the printer returns to points.front()
-    coord_um width_um = 0;       ///< line width
+    Path points;            ///< microns
+    bool closed = false;    ///< a loop: the printer returns to points.front()
+    coord_um width_um = 0;  ///< line width
     Feature feature = Feature::Fill;
     double speed_mm_s = 0;
-    double flow = 1.0;           ///< multiplier on the nominal width × thickness volume
+    double flow = 1.0;  ///< multiplier on the nominal width × thickness volume
 };
 
 /// Everything one mesh prints on one layer, in print order once planned.
@@ -29,9 +29,9 @@ struct MeshLayerPaths {
 };
 
 struct LayerToolpaths {
-    int index = 0;                    ///< 0-based layer number (;LAYER:n)
-    coord_um print_z = 0;             ///< nozzle height
-    coord_um thickness_um = 0;        ///< slab thickness (for the extruded volume)
+    int index = 0;                       ///< 0-based layer number (;LAYER:n)
+    coord_um print_z = 0;                ///< nozzle height
+    coord_um thickness_um = 0;           ///< slab thickness (for the extruded volume)
     std::vector<ExtrusionPath> nonmesh;  ///< skirt / brim (;MESH:NONMESH)
     std::vector<MeshLayerPaths> meshes;
 };

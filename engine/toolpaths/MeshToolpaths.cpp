@@ -17,8 +17,8 @@ SpeedSet speedsFor(const Settings& s, int layer) {
         const double v = s.velocityMmPerS("speed_print_layer_0");
         return {v, v, v, v};
     }
-    return {s.velocityMmPerS("speed_wall_0"), s.velocityMmPerS("speed_wall_x"), s.velocityMmPerS("speed_topbottom"),
-            s.velocityMmPerS("speed_infill")};
+    return {s.velocityMmPerS("speed_wall_0"), s.velocityMmPerS("speed_wall_x"),
+            s.velocityMmPerS("speed_topbottom"), s.velocityMmPerS("speed_infill")};
 }
 
 WallParams wallParams(const Settings& s, const SpeedSet& speed) {
@@ -32,7 +32,8 @@ WallParams wallParams(const Settings& s, const SpeedSet& speed) {
     return p;
 }
 
-void appendInfill(const Paths& area, const Settings& s, int layer, double speed, std::vector<ExtrusionPath>& out) {
+void appendInfill(const Paths& area, const Settings& s, int layer, double speed,
+                  std::vector<ExtrusionPath>& out) {
     LineInfillParams p;
     p.line_distance_um = s.lengthMicrons("infill_line_distance");
     p.line_width_um = s.lengthMicrons("infill_line_width");
@@ -53,15 +54,16 @@ void appendInfill(const Paths& area, const Settings& s, int layer, double speed,
 
 }  // namespace
 
-std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers, const Settings& settings,
-                                                   int threads) {
+std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
+                                                   const Settings& settings, int threads) {
     std::vector<MeshLayerGroups> result(layers.size());
     std::vector<Paths> inner_areas(layers.size());
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const SpeedSet speed = speedsFor(settings, static_cast<int>(i));
         WallResult walls = generateWalls(layers[i].outlines, wallParams(settings, speed));
         for (ExtrusionPath& path : walls.walls) {
-            (path.feature == Feature::WallOuter ? result[i].outer_walls : result[i].inner_walls).push_back(std::move(path));
+            (path.feature == Feature::WallOuter ? result[i].outer_walls : result[i].inner_walls)
+                .push_back(std::move(path));
         }
         inner_areas[i] = std::move(walls.inner_area);
     });

@@ -19,7 +19,7 @@ struct MeshLayerGroups {
     std::vector<ExtrusionPath> infill;
 };
 
-std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers, const Settings& settings,
-                                                   int threads);
+std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
+                                                   const Settings& settings, int threads);
 
 }  // namespace mixengine

@@ -22,16 +22,19 @@ Paths differenceOf(const Paths& a, const Paths& b) {
     return result;
 }
 
-std::vector<Paths> computeSkinAreas(const std::vector<Paths>& areas, int top_layers, int bottom_layers, int threads) {
+std::vector<Paths> computeSkinAreas(const std::vector<Paths>& areas, int top_layers, int bottom_layers,
+                                    int threads) {
     const int count = static_cast<int>(areas.size());
     std::vector<Paths> skins(areas.size());
     parallelFor(areas.size(), threads, [&](std::size_t index) {
         const int i = static_cast<int>(index);
-        if (areas[index].empty()) return;
+        if (areas[index].empty())
+            return;
         // The region supported on both sides: covered by every layer in the window.
         Paths interior = areas[index];
         for (int d = 1; d <= top_layers && !interior.empty(); ++d) {
-            interior = i + d < count ? intersectAll(interior, areas[static_cast<std::size_t>(i + d)]) : Paths{};
+            interior =
+                i + d < count ? intersectAll(interior, areas[static_cast<std::size_t>(i + d)]) : Paths{};
         }
         for (int d = 1; d <= bottom_layers && !interior.empty(); ++d) {
             interior = i - d >= 0 ? intersectAll(interior, areas[static_cast<std::size_t>(i - d)]) : Paths{};

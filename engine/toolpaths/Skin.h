@@ -9,7 +9,8 @@ namespace mixengine {
 
 /// `areas[i]` is layer i's area inside the walls. Returns, per layer, the skin area (a subset of
 /// areas[i]). Layers within `bottom_layers` of the bottom and `top_layers` of the top are all skin.
-std::vector<Paths> computeSkinAreas(const std::vector<Paths>& areas, int top_layers, int bottom_layers, int threads);
+std::vector<Paths> computeSkinAreas(const std::vector<Paths>& areas, int top_layers, int bottom_layers,
+                                    int threads);
 
 Paths intersectAll(const Paths& a, const Paths& b);
 Paths differenceOf(const Paths& a, const Paths& b);

@@ -12,9 +12,11 @@ Paths offsetPolygons(const Paths& polygons, coord_um delta_um) {
 
 namespace {
 
-void appendLoops(const Paths& loops, coord_um width, Feature feature, double speed, std::vector<ExtrusionPath>& out) {
+void appendLoops(const Paths& loops, coord_um width, Feature feature, double speed,
+                 std::vector<ExtrusionPath>& out) {
     for (const Path& loop : loops) {
-        if (loop.size() < 3) continue;
+        if (loop.size() < 3)
+            continue;
         ExtrusionPath path;
         path.points = loop;
         path.closed = true;
