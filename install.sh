@@ -14,6 +14,8 @@ PACKAGES=(
   libgtest-dev python3 python3-venv python3-pip
   # Cura's definitions (the engine's embedded defaults) and the reference engine
   cura cura-engine fdm-materials
+  # end-to-end tests with the real Cura under Xvfb
+  xvfb xauth python3-arcus
   # corpus fetching (apt-get download; npm comes with the base machine) and end-to-end tools
   xz-utils unzip ca-certificates
 )

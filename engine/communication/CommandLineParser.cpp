@@ -74,6 +74,24 @@ void loadModel(ParseState& state, const std::string& path) {
     state.focus = Focus::Mesh;
 }
 
+// --- profile selection (settings/profiles/ProfileSelector.h) ---
+/// Handles --variant/--material/--quality/--intent NAME and --profiles; false for other words.
+bool applyProfileOption(ProfileSelection& profiles, const std::vector<std::string>& args, std::size_t& i) {
+    const std::string& word = args[i];
+    std::string* target = word == "--variant"    ? &profiles.variant
+                          : word == "--material" ? &profiles.material
+                          : word == "--quality"  ? &profiles.quality
+                          : word == "--intent"   ? &profiles.intent
+                                                 : nullptr;
+    if (!target && word != "--profiles")
+        return false;
+    if (target)
+        *target = nextWord(args, i, word);
+    profiles.enabled = true;
+    return true;
+}
+// --- end of profile selection ---
+
 }  // namespace
 
 std::pair<std::string, std::string> splitSettingArgument(const std::string& word) {
@@ -120,6 +138,8 @@ ParsedSliceArgs parseSliceArguments(const std::vector<std::string>& args) {
             state.focus = Focus::Group;
         } else if (word == "-o") {
             state.request().output = nextWord(args, i, word);
+        } else if (applyProfileOption(state.request().profiles, args, i)) {
+            // --variant / --material / --quality / --intent NAME, --profiles (settings/profiles/)
         } else if (word == "--dump-layers") {
             state.parsed.dump_layers_dir = nextWord(args, i, word);
         } else {

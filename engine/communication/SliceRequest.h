@@ -43,6 +43,9 @@ struct SliceRequest {
     int threads = 0;                        ///< -m; 0 = all cores
     int verbosity = 0;                      ///< -v count
     bool progress = false;                  ///< -p
+    /// True when the values come from Cura's frontend (the socket), which has already added the
+    /// frontend's values (settings/FrontendValues.h); the command line adds them itself.
+    bool settings_from_frontend = false;
 };
 
 }  // namespace mixengine

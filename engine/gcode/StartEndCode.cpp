@@ -4,27 +4,6 @@
 
 namespace mixengine {
 
-std::string expandTokens(const std::string& code, const Settings& settings) {
-    std::string out;
-    out.reserve(code.size());
-    std::size_t i = 0;
-    while (i < code.size()) {
-        if (code[i] == '{') {
-            const std::size_t close = code.find('}', i);
-            if (close != std::string::npos) {
-                const std::string key = code.substr(i + 1, close - i - 1);
-                if (settings.has(key)) {
-                    out += settings.text(key);
-                    i = close + 1;
-                    continue;
-                }
-            }
-        }
-        out += code[i++];
-    }
-    return out;
-}
-
 namespace {
 
 void appendLine(std::string& out, const std::string& line) {
@@ -57,7 +36,7 @@ std::string startCode(const Settings& global, const Settings& extruder0, bool re
             appendLine(out, "M109 S" + nozzle);
     }
     appendLine(out, "M82 ;absolute extrusion mode");
-    appendLine(out, expandTokens(global.text("machine_start_gcode"), global));
+    appendLine(out, global.text("machine_start_gcode"));
     if (relative_extrusion)
         appendLine(out, "M83 ;relative extrusion mode");
     return out;
@@ -67,7 +46,7 @@ std::string endCode(const Settings& global, bool relative_extrusion) {
     std::string out;
     if (relative_extrusion)
         appendLine(out, "M82 ;absolute extrusion mode");
-    appendLine(out, expandTokens(global.text("machine_end_gcode"), global));
+    appendLine(out, global.text("machine_end_gcode"));
     if (relative_extrusion)
         appendLine(out, "M82 ;absolute extrusion mode");
     return out;

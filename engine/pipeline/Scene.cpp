@@ -5,6 +5,8 @@
 #include "common/Error.h"
 #include "mesh/MeshBuilder.h"
 #include "mesh/ModelReader.h"
+#include "settings/FrontendValues.h"
+#include "settings/profiles/ProfileSelector.h"
 
 namespace mixengine {
 namespace {
@@ -67,9 +69,15 @@ void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshI
 
 Scene prepareSettings(const SliceRequest& request) {
     Scene scene;
-    scene.definitions =
-        loadDefinitionSet(request.definition, defaultSearchPath(std::getenv("CURA_ENGINE_SEARCH_PATH")));
+    const std::vector<std::filesystem::path> search =
+        defaultSearchPath(std::getenv("CURA_ENGINE_SEARCH_PATH"));
+    scene.definitions = loadDefinitionSet(request.definition, search);
+    // --- profile selection (settings/profiles/ProfileSelector.h) ---
+    if (request.profiles.enabled)
+        scene.profiles = selectProfiles(scene.definitions, request.profiles, search);
+    // --- end of profile selection ---
     scene.machine = resolveMachine(scene.definitions, request.user, &scene.profiles);
+    if (!request.settings_from_frontend) applyFrontendValues(scene.machine, request.user);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
         SceneGroup group;
         group.settings = resolveMeshGroup(scene.machine, request.groups[g].settings, static_cast<int>(g));

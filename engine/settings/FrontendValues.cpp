@@ -1,0 +1,107 @@
+#include "settings/FrontendValues.h"
+
+#include <algorithm>
+#include <cctype>
+#include <ctime>
+#include <regex>
+
+namespace mixengine {
+namespace {
+
+std::string withoutComments(const std::string& code) {
+    static const std::regex comment(";.+?(\n|$)");
+    return std::regex_replace(code, comment, "\n");
+}
+
+bool referencesAny(const std::string& code, const std::string& alternatives) {
+    const std::regex pattern("\\{(" + alternatives + ")(,\\s?\\w+)?\\}");
+    return std::regex_search(withoutComments(code), pattern);
+}
+
+std::string formatLocalTime(const char* format) {
+    std::time_t now = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&now, &local);
+    char buffer[64];
+    std::strftime(buffer, sizeof buffer, format, &local);
+    return buffer;
+}
+
+SettingValues withValues(const Settings& settings, const SettingValues& changes) {
+    SettingValues values = settings.all();
+    for (const auto& [key, value] : changes) values[key] = value;
+    return values;
+}
+
+}  // namespace
+
+std::string expandGcodeTokens(const std::string& code, const Settings& scope, const ResolvedMachine& machine) {
+    static const std::regex token("\\{(\\w+)(,\\s?(\\w+))?\\}");
+    std::string out;
+    auto last = code.cbegin();
+    for (std::sregex_iterator it(code.begin(), code.end(), token), end; it != end; ++it) {
+        const std::smatch& m = *it;
+        out.append(last, m[0].first);
+        last = m[0].second;
+        const Settings* source = &scope;
+        if (m[3].matched) {
+            const std::string which = m[3].str();
+            if (std::all_of(which.begin(), which.end(), ::isdigit)) {
+                const std::size_t nr = std::stoul(which);
+                if (nr < machine.extruders.size()) source = &machine.extruders[nr];
+            } else if (scope.has(which)) {
+                const std::string nr_text = scope.text(which);
+                if (!nr_text.empty() && std::all_of(nr_text.begin(), nr_text.end(), ::isdigit) &&
+                    std::stoul(nr_text) < machine.extruders.size())
+                    source = &machine.extruders[std::stoul(nr_text)];
+            }
+        }
+        out += source->has(m[1].str()) ? source->text(m[1].str()) : m[0].str();
+    }
+    out.append(last, code.cend());
+    return out;
+}
+
+void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
+    const Settings& global = machine.global;
+    const std::string start = global.has("machine_start_gcode") ? global.text("machine_start_gcode") : "";
+    SettingValues changes;
+    if (!user.global.count("material_bed_temp_prepend")) {
+        const bool referenced = referencesAny(start, "material_bed_temperature|material_bed_temperature_layer_0");
+        changes["material_bed_temp_prepend"] = referenced ? "False" : "True";
+    }
+    if (!user.global.count("material_print_temp_prepend")) {
+        const bool referenced = referencesAny(
+            start,
+            "material_print_temperature|material_print_temperature_layer_0|default_material_print_temperature|"
+            "material_initial_print_temperature|material_final_print_temperature|material_standby_temperature|"
+            "print_temperature");
+        changes["material_print_temp_prepend"] = referenced ? "False" : "True";
+    }
+    const Settings& initial = machine.extruders.front();
+    for (const char* key : {"machine_start_gcode", "machine_end_gcode"}) {
+        if (global.has(key)) changes[key] = expandGcodeTokens(global.text(key), initial, machine);
+    }
+    if (global.has("material_bed_temperature")) changes["print_bed_temperature"] = global.text("material_bed_temperature");
+    if (global.has("material_print_temperature"))
+        changes["print_temperature"] = global.text("material_print_temperature");
+    if (global.has("speed_travel")) changes["travel_speed"] = global.text("speed_travel");
+    if (!global.has("initial_extruder_nr")) changes["initial_extruder_nr"] = "0";
+    changes["time"] = formatLocalTime("%H:%M:%S");
+    changes["date"] = formatLocalTime("%d-%m-%Y");
+    changes["day"] = formatLocalTime("%a");
+    machine.global = Settings(global.scope(), withValues(global, changes));
+
+    for (Settings& extruder : machine.extruders) {
+        SettingValues own;
+        for (const char* key : {"machine_extruder_start_code", "machine_extruder_end_code"}) {
+            if (extruder.has(key)) own[key] = expandGcodeTokens(extruder.text(key), extruder, machine);
+        }
+        for (const char* key : {"material_bed_temp_prepend", "material_print_temp_prepend"}) {
+            if (auto it = changes.find(key); it != changes.end()) own[key] = it->second;
+        }
+        extruder = Settings(extruder.scope(), withValues(extruder, own));
+    }
+}
+
+}  // namespace mixengine

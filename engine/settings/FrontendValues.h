@@ -1,0 +1,25 @@
+#pragma once
+// What Cura's frontend adds to the settings before it sends them to its engine
+// (CuraEngineBackend/StartSliceJob.py), done here so the command line gives what Cura gives:
+//   - material_bed_temp_prepend / material_print_temp_prepend: True when the start G-code (its
+//     comments removed) references none of the bed / nozzle temperature settings as {key} or
+//     {key, extruder_nr} — unless the user set them;
+//   - machine_start_gcode / machine_end_gcode (global, with the initial extruder's values) and
+//     machine_extruder_start_code / machine_extruder_end_code (each extruder, its own values) with
+//     their {key} and {key, N} tokens expanded; unknown tokens ({print_time}, ...) stay verbatim;
+//   - the renamed copies print_bed_temperature, print_temperature, travel_speed, and
+//     initial_extruder_nr, time, date, day.
+#include <string>
+
+#include "settings/Resolver.h"
+
+namespace mixengine {
+
+/// Expands {key} and {key, N} tokens: `key` read from extruder N's values (or `scope`'s).
+std::string expandGcodeTokens(const std::string& code, const Settings& scope, const ResolvedMachine& machine);
+
+/// Applies the frontend's additions to `machine` (global and extruders). `user` tells which
+/// prepend flags the user set explicitly.
+void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user);
+
+}  // namespace mixengine
