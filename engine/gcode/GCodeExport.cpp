@@ -27,6 +27,13 @@ std::string GCodeExport::feedrateWord(double speed_mm_s) {
     return " F" + formatFeedrate(speed_mm_s);
 }
 
+double GCodeExport::retractionOnAxis() const {
+    if (!params_.volumetric)
+        return params_.retraction_amount_mm;
+    const double radius = params_.filament_diameter_mm / 2.0;
+    return params_.retraction_amount_mm * std::numbers::pi * radius * radius;
+}
+
 double GCodeExport::volumeToAxisMm(double volume_mm3) const {
     if (params_.volumetric)
         return volume_mm3;
@@ -68,7 +75,7 @@ void GCodeExport::retract() {
     if (retracted_ || params_.retraction_amount_mm <= 0)
         return;
     line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " +
-         axis_.move(-params_.retraction_amount_mm));
+         axis_.move(-retractionOnAxis()));
     elapsed_s_ += params_.retraction_amount_mm / params_.retraction_speed_mm_s;
     retracted_ = true;
     if (params_.retraction_hop_um > 0)
@@ -80,7 +87,7 @@ void GCodeExport::unretract() {
         return;
     if (params_.retraction_hop_um > 0)
         moveZ(z_ - params_.retraction_hop_um, params_.retraction_speed_mm_s);
-    line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + axis_.move(params_.retraction_amount_mm));
+    line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + axis_.move(retractionOnAxis()));
     elapsed_s_ += params_.retraction_amount_mm / params_.prime_speed_mm_s;
     retracted_ = false;
 }
@@ -98,7 +105,7 @@ void GCodeExport::setFan(double ratio) {
     if (ratio <= 0) {
         line("M107");
     } else {
-        line("M106 S" + std::to_string(static_cast<int>(std::lround(std::min(ratio, 1.0) * 255.0))));
+        line("M106 S" + formatDecimal(std::min(ratio, 1.0) * 255.0, 1));
     }
 }
 

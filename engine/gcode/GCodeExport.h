@@ -45,6 +45,7 @@ class GCodeExport {
   private:
     std::string feedrateWord(double speed_mm_s);
     double volumeToAxisMm(double volume_mm3) const;
+    double retractionOnAxis() const;  ///< the retraction in the axis unit (mm, or mm³ when volumetric)
 
     ExportParams params_;
     ExtrusionAxis axis_;

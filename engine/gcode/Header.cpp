@@ -1,6 +1,7 @@
 #include "gcode/Header.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "gcode/NumberFormat.h"
 
@@ -40,6 +41,13 @@ std::string flavorName(Flavor flavor) {
 
 namespace {
 
+/// Six significant digits, as CuraEngine prints filament amounts ("2.55346m", "123457mm3").
+std::string significant(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
+    return buffer;
+}
+
 std::string filamentList(const PrintSummary& summary) {
     std::string text;
     const bool volumetric = summary.flavor == Flavor::MarlinVolumetric;
@@ -47,7 +55,7 @@ std::string filamentList(const PrintSummary& summary) {
         if (i)
             text += ", ";
         const double value = summary.filament_per_extruder[i];
-        text += volumetric ? formatDecimal(value, 2) + "mm3" : formatDecimal(value / 1000.0, 6) + "m";
+        text += volumetric ? significant(value) + "mm3" : significant(value / 1000.0) + "m";
     }
     return text.empty() ? "0m" : text;
 }
@@ -57,7 +65,7 @@ std::string filamentList(const PrintSummary& summary) {
 std::string makeHeader(const PrintSummary& summary) {
     std::string h;
     h += ";FLAVOR:" + flavorName(summary.flavor) + "\n";
-    h += ";TIME:" + std::to_string(static_cast<long long>(std::lround(summary.print_time_s))) + "\n";
+    h += ";TIME:" + std::to_string(static_cast<long long>(summary.print_time_s)) + "\n";
     h += ";Filament used: " + filamentList(summary) + "\n";
     h += ";Layer height: " + formatDecimal(summary.layer_height_mm, 3) + "\n";
     h += ";MINX:" + formatCoordMm(micronsToMm(summary.min.x)) + "\n";

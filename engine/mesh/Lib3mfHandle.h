@@ -3,14 +3,16 @@
 //
 //   Lib3mfHandle   — releases the instance it holds (lib3mf_release) when destroyed; move-only.
 //   Lib3mfCaller   — runs a lib3mf call and turns a failure into InputError
-//                    "<file>: cannot read 3MF: <what>: <lib3mf's message>".
+//                    "<file>: cannot read 3MF (<step>): <lib3mf's message>".
 // Include only from .cpp files: lib3mf's headers bring Windows-style type names and macros.
 #include <Model/COM/NMR_DLLInterfaces.h>
 
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "common/Error.h"
+#include "mesh/MessageText.h"
 
 namespace mixengine {
 
@@ -48,8 +50,9 @@ class Lib3mfCaller {
   public:
     explicit Lib3mfCaller(std::string label) : label_(std::move(label)) {}
 
-    /// Throws InputError when `result` is a failure; `instance` is asked for the error message.
-    void check(LIB3MFRESULT result, NMR::PLib3MFBase* instance, const char* what) const {
+    /// Throws InputError when `result` is a failure; `instance` is asked for the error message and
+    /// `step` (may be empty) says what was being read.
+    void check(LIB3MFRESULT result, NMR::PLib3MFBase* instance, std::string_view step) const {
         if (result == 0) {
             return;
         }
@@ -58,9 +61,10 @@ class Lib3mfCaller {
         std::string detail = "lib3mf error " + std::to_string(result);
         if (instance != nullptr && NMR::lib3mf_getlasterror(instance, &code, &message) == 0 &&
             message != nullptr && *message != '\0') {
-            detail = message;
+            detail = oneLine(message);
         }
-        throw InputError(label_ + ": cannot read 3MF: " + what + ": " + detail);
+        const std::string where = step.empty() ? "" : " (" + std::string(step) + ")";
+        throw InputError(label_ + ": cannot read 3MF" + where + ": " + detail);
     }
 
     const std::string& label() const { return label_; }

@@ -24,4 +24,14 @@ inline std::string quoteToken(std::string_view token) {
     return "'" + std::string(token) + "'";
 }
 
+/// `text` with line breaks and tabs turned into spaces, for text from libraries.
+inline std::string oneLine(std::string text) {
+    for (char& c : text) {
+        if (c == '\n' || c == '\r' || c == '\t') {
+            c = ' ';
+        }
+    }
+    return text;
+}
+
 }  // namespace mixengine

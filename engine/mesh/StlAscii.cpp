@@ -23,7 +23,7 @@ class AsciiStlParser {
     void parseFacet();
     std::string_view facetToken();
     Vec3 readVertex();
-    void skipNormal();
+    std::string_view skipNormal();  // returns the word after the normal
     [[noreturn]] void fail(const std::string& defect) const;
 
     std::string_view label_;
@@ -74,11 +74,17 @@ std::string_view AsciiStlParser::facetToken() {
     return token;
 }
 
-void AsciiStlParser::skipNormal() {
+std::string_view AsciiStlParser::skipNormal() {
+    // A normal may be missing altogether ("facet normal" then "outer loop"): the first word that
+    // is not a number ends it and is handed back to the caller.
     bool good = true;
     for (int i = 0; i < 3; ++i) {
         double value = 0;
         const std::string_view token = facetToken();
+        if (sameWord(token, "outer") || sameWord(token, "vertex")) {
+            ++bad_normals_;
+            return token;
+        }
         if (!parseNumber(token, value) || !std::isfinite(value)) {
             good = false;
         }
@@ -86,6 +92,7 @@ void AsciiStlParser::skipNormal() {
     if (!good) {
         ++bad_normals_;
     }
+    return facetToken();
 }
 
 Vec3 AsciiStlParser::readVertex() {
@@ -105,8 +112,7 @@ Vec3 AsciiStlParser::readVertex() {
 void AsciiStlParser::parseFacet() {
     std::string_view token = facetToken();
     if (sameWord(token, "normal")) {
-        skipNormal();
-        token = facetToken();
+        token = skipNormal();
     } else {
         ++bad_normals_;
     }

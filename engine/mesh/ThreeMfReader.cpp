@@ -72,7 +72,7 @@ Affine3 ThreeMfLoader::open(const std::filesystem::path& file, std::vector<std::
     call_.check(NMR::lib3mf_model_queryreader(model_.get(), "3mf", reader.out()), model_.get(),
                 "creating a reader");
     const std::string path = file.string();
-    call_.check(NMR::lib3mf_reader_readfromfileutf8(reader.get(), path.c_str()), reader.get(), "reading");
+    call_.check(NMR::lib3mf_reader_readfromfileutf8(reader.get(), path.c_str()), reader.get(), "");
     DWORD count = 0;
     call_.check(NMR::lib3mf_reader_getwarningcount(reader.get(), &count), reader.get(), "reading warnings");
     for (DWORD i = 0; i < count; ++i) {
@@ -82,7 +82,8 @@ Affine3 ThreeMfLoader::open(const std::filesystem::path& file, std::vector<std::
         if (NMR::lib3mf_reader_getwarningutf8(reader.get(), i, &code, text.data(),
                                               static_cast<ULONG>(text.size()), &needed) == 0) {
             text.resize(std::strlen(text.c_str()));
-            warnings.push_back(call_.label() + ": 3MF reader warning " + std::to_string(code) + ": " + text);
+            warnings.push_back(call_.label() + ": 3MF reader warning " + std::to_string(code) + ": " +
+                               oneLine(text));
         }
     }
     DWORD unit = NMR::MODELUNIT_MILLIMETER;

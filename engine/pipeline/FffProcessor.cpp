@@ -1,6 +1,7 @@
 #include "pipeline/FffProcessor.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "common/Error.h"
 #include "gcode/GCodeExport.h"
@@ -47,6 +48,31 @@ PrintPlan planGroup(const SceneGroup& group, const SlicedGroup& sliced, int thre
     return planPrint(sliced.heights, inputs, group.settings);
 }
 
+double perimeterUm(const Path& path) {
+    double sum = 0;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const Point2& a = path[i];
+        const Point2& b = path[(i + 1) % path.size()];
+        sum += std::hypot(static_cast<double>(b.X - a.X), static_cast<double>(b.Y - a.Y));
+    }
+    return sum;
+}
+
+/// As CuraEngine: loops shorter than minimum_polygon_circumference are dropped, and layers left
+/// empty at the top of the group are removed.
+void dropSmallPolygons(SlicedGroup& sliced, coord_um minimum_circumference_um) {
+    std::size_t top = 0;
+    for (auto& mesh : sliced.meshes) {
+        for (std::size_t i = 0; i < mesh.size(); ++i) {
+            Paths& outlines = mesh[i].outlines;
+            std::erase_if(outlines, [&](const Path& p) { return perimeterUm(p) < double(minimum_circumference_um); });
+            if (!outlines.empty()) top = std::max(top, i + 1);
+        }
+    }
+    sliced.heights.resize(std::min(sliced.heights.size(), top));
+    for (auto& mesh : sliced.meshes) mesh.resize(sliced.heights.size());
+}
+
 }  // namespace
 
 std::string GCodeOutput::joined() const {
@@ -69,6 +95,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log) {
     options.threads = threads;
     for (const SceneMesh& m : group.meshes)
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
+    dropSmallPolygons(sliced, s.lengthMicrons("minimum_polygon_circumference"));
     return sliced;
 }
 

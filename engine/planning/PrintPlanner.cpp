@@ -11,7 +11,7 @@ double fanRatioForLayer(const Settings& s, int layer) {
         return 0;
     const double first = s.ratio("cool_fan_speed_0");
     const double regular = s.ratio("cool_fan_speed_min");
-    const int full = std::max(1, static_cast<int>(s.integer("cool_fan_full_layer")) - 1);
+    const int full = static_cast<int>(s.integer("cool_fan_full_layer")) - 1;  // 0-based layer at full speed
     if (layer >= full)
         return regular;
     return first + (regular - first) * static_cast<double>(layer) / static_cast<double>(full);

@@ -130,23 +130,31 @@ struct MergedChain {
     std::vector<fs::path> files;
 };
 
+void mergeFile(const fs::path& file, const json& doc, MergedChain& merged) {
+    merged.files.insert(merged.files.begin(), file);
+    if (auto it = doc.find("settings"); it != doc.end())
+        collectSettings(*it, merged.settings);
+    if (auto it = doc.find("metadata"); it != doc.end() && it->is_object()) {
+        collectMetadata(*it, merged.metadata);
+        if (auto trains = it->find("machine_extruder_trains"); trains != it->end())
+            merged.extruder_trains = *trains;
+    }
+    if (auto it = doc.find("overrides"); it != doc.end() && it->is_object()) {
+        for (const auto& [key, node] : it->items()) {
+            SettingDefinition& def = merged.settings[key];
+            def.key = key;
+            applyProperties(def, node);
+        }
+    }
+}
+
 MergedChain mergeChain(const std::vector<std::pair<fs::path, json>>& chain) {
     MergedChain merged;
     for (const auto& [file, doc] : chain) {
-        merged.files.insert(merged.files.begin(), file);
-        if (auto it = doc.find("settings"); it != doc.end())
-            collectSettings(*it, merged.settings);
-        if (auto it = doc.find("metadata"); it != doc.end() && it->is_object()) {
-            collectMetadata(*it, merged.metadata);
-            if (auto trains = it->find("machine_extruder_trains"); trains != it->end())
-                merged.extruder_trains = *trains;
-        }
-        if (auto it = doc.find("overrides"); it != doc.end() && it->is_object()) {
-            for (const auto& [key, node] : it->items()) {
-                SettingDefinition& def = merged.settings[key];
-                def.key = key;
-                applyProperties(def, node);
-            }
+        try {
+            mergeFile(file, doc, merged);
+        } catch (const json::exception& e) {
+            throw InputError(file.string() + ": unexpected JSON content: " + e.what());
         }
     }
     return merged;

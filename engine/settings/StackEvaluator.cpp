@@ -323,6 +323,7 @@ SettingValues StackEvaluator::allText(int scope) {
     for (const auto& [key, def] : definitions_.settings)
         keys.push_back(key);
     if (s.extruder >= 0) {
+        keys.push_back("extruder_nr");
         for (const ExtruderDefinition& e : definitions_.extruders) {
             if (e.position != s.extruder)
                 continue;

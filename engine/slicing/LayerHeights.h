@@ -7,9 +7,9 @@
 //   inclusive — the top of the slab is cut but the union over the slab is wanted; we cut at the
 //               slab's top and bottom and union the two outlines (see Slicer);
 //   exclusive — the intersection of the cuts at the slab's top and bottom.
-// Layer count = floor((z_max − layer_height_0) / layer_height) + 1, with two edge cases: no layer at
-// all when z_max ≤ 0, and exactly one layer when 0 < z_max < layer_height_0 (a model thinner than
-// the first layer still gets layer 0). Halves of odd micron heights are rounded down.
+// Layer count = the number of cutting planes at or below z_max, as CuraEngine 4.13 counts:
+// floor((z_max − layer_height_0 + layer_height/2) / layer_height) + 1; no layer when z_max is below
+// the first plane (layer_height_0 / 2). Halves of odd micron heights are rounded down.
 // Throws InputError when layer_height_0 or layer_height is not positive.
 #include <vector>
 

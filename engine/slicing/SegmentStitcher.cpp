@@ -22,28 +22,60 @@ bool isStartEnd(std::int32_t end_id) {
     return end_id % 2 == 0;
 }
 
+/// Signed turn (radians, left positive) from the direction came_from→at to the direction at→next.
+double turnAngle(const Point2& came_from, const Point2& at, const Point2& next) {
+    const double in_x = static_cast<double>(at.X - came_from.X);
+    const double in_y = static_cast<double>(at.Y - came_from.Y);
+    const double out_x = static_cast<double>(next.X - at.X);
+    const double out_y = static_cast<double>(next.Y - at.Y);
+    return std::atan2(in_x * out_y - in_y * out_x, in_x * out_x + in_y * out_y);
+}
+
 }  // namespace
 
-std::int32_t SegmentStitcher::takeEndAt(const Point2& point, bool prefer_start) {
-    std::int32_t fallback = PointMultimap::kNone;
+std::int32_t SegmentStitcher::chooseAmongEnds(const Point2& came_from, const Point2& point, bool forward,
+                                              const std::vector<FacetSegment>& segments) const {
+    std::int32_t best = PointMultimap::kNone;
+    bool best_preferred = false;
+    double best_turn = 0;
     for (std::int32_t id = ends_.first(point); id != PointMultimap::kNone; id = ends_.nextAtSamePoint(id)) {
         if (used_[segmentOf(id)])
             continue;
-        if (isStartEnd(id) == prefer_start) {
-            fallback = id;
-            break;
+        const bool preferred = isStartEnd(id) == forward;
+        if (best_preferred && !preferred)
+            continue;
+        const FacetSegment& segment = segments[segmentOf(id)];
+        const double turn = turnAngle(came_from, point, isStartEnd(id) ? segment.to : segment.from);
+        const double towards_solid = forward ? turn : -turn;
+        if (best == PointMultimap::kNone || (preferred && !best_preferred) || towards_solid > best_turn) {
+            best = id;
+            best_preferred = preferred;
+            best_turn = towards_solid;
         }
-        if (fallback == PointMultimap::kNone)
-            fallback = id;
     }
-    if (fallback != PointMultimap::kNone)
-        used_[segmentOf(fallback)] = 1;
-    return fallback;
+    return best;
+}
+
+std::int32_t SegmentStitcher::takeEndAt(const Point2& came_from, const Point2& point, bool forward,
+                                        const std::vector<FacetSegment>& segments) {
+    std::int32_t only = PointMultimap::kNone;
+    int unused = 0;
+    for (std::int32_t id = ends_.first(point); id != PointMultimap::kNone; id = ends_.nextAtSamePoint(id)) {
+        if (used_[segmentOf(id)])
+            continue;
+        only = id;
+        ++unused;
+    }
+    const std::int32_t taken = unused > 1 ? chooseAmongEnds(came_from, point, forward, segments) : only;
+    if (taken != PointMultimap::kNone)
+        used_[segmentOf(taken)] = 1;
+    return taken;
 }
 
 bool SegmentStitcher::extendForward(StitchedPath& path, const std::vector<FacetSegment>& segments) {
     while (!(path.points.back() == path.points.front())) {
-        const std::int32_t id = takeEndAt(path.points.back(), true);
+        const std::int32_t id =
+            takeEndAt(path.points[path.points.size() - 2], path.points.back(), true, segments);
         if (id == PointMultimap::kNone)
             return false;
         const FacetSegment& segment = segments[segmentOf(id)];
@@ -57,14 +89,16 @@ bool SegmentStitcher::extendForward(StitchedPath& path, const std::vector<FacetS
 
 void SegmentStitcher::extendBackward(StitchedPath& path, const std::vector<FacetSegment>& segments) {
     prefix_.clear();
+    Point2 came_from = path.points[1];
     Point2 current = path.points.front();
     for (;;) {
-        const std::int32_t id = takeEndAt(current, false);
+        const std::int32_t id = takeEndAt(came_from, current, false, segments);
         if (id == PointMultimap::kNone)
             break;
         const FacetSegment& segment = segments[segmentOf(id)];
         const bool along = !isStartEnd(id);  // the segment ends here, so walking towards here follows it
         (along ? path.along_facets_um : path.against_facets_um) += segmentLength(segment);
+        came_from = current;
         current = along ? segment.from : segment.to;
         prefix_.push_back(current);
     }

@@ -6,8 +6,9 @@
 //     sharing a crossed edge compute the same integer point (slicing/FacetPlane.h), so a closed
 //     surface chains without tolerance. Zero-length segments are ignored.
 //   - the chaining does not depend on segment direction; where several segments meet at one
-//     point it prefers the one that continues in facet direction (consistent winding), so
-//     touching shells separate cleanly.
+//     point it prefers one that continues in facet direction (consistent winding) and, among
+//     those, the sharpest turn towards the solid side, so shells touching at a point or an edge
+//     come out as separate loops.
 //   - open chains whose ends lie within max_gap_um of each other are then joined, nearest ends
 //     first (slicing/GapCloser.h); what stays open is returned in `open_polylines`.
 //   - every loop records how much of its length follows the facets' direction and how much runs
@@ -38,9 +39,15 @@ class SegmentStitcher {
     StitchResult stitch(const std::vector<FacetSegment>& segments, coord_um max_gap_um);
 
   private:
-    /// Marks and returns an unused segment end at `point` (kNone if there is none), preferring a
-    /// segment that starts there (prefer_start) or ends there (!prefer_start).
-    std::int32_t takeEndAt(const Point2& point, bool prefer_start);
+    /// Marks and returns an unused segment end at `point`, reached from `came_from` (kNone if
+    /// there is none). Walking forward it prefers a segment that starts there, walking backward
+    /// one that ends there; among several, the sharpest turn towards the solid side (leftmost
+    /// forward, rightmost backward), which keeps loops that touch at a point apart.
+    std::int32_t takeEndAt(const Point2& came_from, const Point2& point, bool forward,
+                           const std::vector<FacetSegment>& segments);
+    /// Like takeEndAt when `point` has two or more unused ends.
+    std::int32_t chooseAmongEnds(const Point2& came_from, const Point2& point, bool forward,
+                                 const std::vector<FacetSegment>& segments) const;
     /// Appends segments at the back of `path` until it closes (returns true) or runs out.
     bool extendForward(StitchedPath& path, const std::vector<FacetSegment>& segments);
     /// Prepends segments at the front of an open `path` until it runs out.

@@ -130,6 +130,18 @@ double trueDivide(double a, double b) {
     return a / b;
 }
 
+double trueDivideInt(std::int64_t a, std::int64_t b) {
+    constexpr std::int64_t kExact = std::int64_t{1} << 53;
+    if (b == 0) {
+        throw detail::EvalProblem("division by zero");
+    }
+    if (a <= kExact && a >= -kExact && b <= kExact && b >= -kExact) {
+        return static_cast<double>(a) / static_cast<double>(b);
+    }
+    // Python rounds the exact quotient once; a wider intermediate comes closest without big ints.
+    return static_cast<double>(static_cast<long double>(a) / static_cast<long double>(b));
+}
+
 Value powInt(std::int64_t base, std::int64_t exponent) {
     if (exponent < 0)
         return powFloat(static_cast<double>(base), static_cast<double>(exponent));

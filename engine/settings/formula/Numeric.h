@@ -34,6 +34,8 @@ std::int64_t modInt(std::int64_t a, std::int64_t b);
 double floorDivFloat(double a, double b);
 double modFloat(double a, double b);
 double trueDivide(double a, double b);
+/// `a / b` for ints: exact when both fit in a double's 53 bits, else via long double.
+double trueDivideInt(std::int64_t a, std::int64_t b);
 
 /// `a ** b`: int for a non-negative int exponent (float if it does not fit), float otherwise.
 /// Python 3 would return a complex number for a negative base and a fractional exponent: an error.

@@ -53,7 +53,7 @@ Value intArithmetic(BinaryOp op, std::int64_t a, std::int64_t b) {
         case BinaryOp::Mul:
             return mulInt(a, b);
         case BinaryOp::Div:
-            return trueDivide(static_cast<double>(a), static_cast<double>(b));
+            return trueDivideInt(a, b);
         case BinaryOp::FloorDiv:
             return floorDivInt(a, b);
         case BinaryOp::Mod:

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Benchmarks MixEngine against CuraEngine 4.13 (prints a table, writes out/bench.json).
+#   tests/bench/run.sh BUILD_DIR [--repeat N] [--phase full|load+slice] [--models a,b] [--out FILE]
+set -euo pipefail
+HERE=$(cd "$(dirname "$0")" && pwd)
+BUILD=${1:?usage: tests/bench/run.sh BUILD_DIR [bench_slice.py options]}
+shift
+BUILD=$(cd "$BUILD" && pwd)
+PY=$("$HERE/../python/venv.sh")
+export MIXENGINE_CORPUS=${MIXENGINE_CORPUS:-$HOME/.cache/mixengine-corpus}
+"$HERE/../corpus/fetch.sh" "$MIXENGINE_CORPUS"
+exec "$PY" "$HERE/bench_slice.py" --bin "$BUILD/mixengine" "$@"

@@ -1,0 +1,159 @@
+// The G-code writer core (gcode/GCodeExport.h): exact text for short move sequences.
+#include "gcode/GCodeExport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace mixengine {
+namespace {
+
+ExportParams marlin175() {
+    ExportParams p;
+    p.filament_diameter_mm = 1.75;
+    p.retraction_amount_mm = 6.5;
+    p.retraction_speed_mm_s = 25;
+    p.prime_speed_mm_s = 25;
+    return p;
+}
+
+TEST(GCodeExport, AbsoluteSequence) {
+    GCodeExport g(marlin175());
+    g.travel({10'000, 20'000}, 150);
+    g.travel({10'000, 20'000}, 150);       // already there: nothing
+    g.extrude({20'000, 20'000}, 1.0, 30);  // 1 mm³ / (π·0.875²) = 0.415752 mm
+    g.extrude({20'000, 30'000}, 1.0, 30);  // feedrate unchanged: no F
+    g.retract();
+    g.retract();  // already retracted: nothing
+    g.travel({0, 0}, 150);
+    g.extrude({10'000, 0}, 1.0, 30);  // primes first
+    g.setFan(1.0);
+    g.setFan(1.0);
+    g.setFan(0.0);
+    g.moveZ(300, 10);
+    g.comment("TYPE:FILL");
+    g.resetExtrusionAxis();
+    g.line("M84");
+    EXPECT_EQ(g.text(),
+              "G0 F9000 X10 Y20\n"
+              "G1 F1800 X20 Y20 E0.41575\n"
+              "G1 X20 Y30 E0.8315\n"
+              "G1 F1500 E-5.6685\n"
+              "G0 F9000 X0 Y0\n"
+              "G1 F1500 E0.8315\n"
+              "G1 F1800 X10 Y0 E1.24726\n"
+              "M106 S255\n"
+              "M107\n"
+              "G0 F600 Z0.3\n"
+              ";TYPE:FILL\n"
+              "G92 E0\n"
+              "M84\n");
+    EXPECT_NEAR(g.filamentUsedMm(), 3.0 / (std::numbers::pi * 0.875 * 0.875), 1e-12);
+    EXPECT_EQ(g.z(), 300);
+    EXPECT_FALSE(g.retracted());
+}
+
+TEST(GCodeExport, RelativeSequence) {
+    ExportParams p = marlin175();
+    p.relative_extrusion = true;
+    GCodeExport g(p);
+    g.extrude({10'000, 0}, 1.0, 30);
+    g.retract();
+    EXPECT_TRUE(g.retracted());
+    g.travel({10'000, 10'000}, 150);
+    g.extrude({0, 10'000}, 1.0, 30);
+    g.resetExtrusionAxis();  // relative: nothing
+    EXPECT_EQ(g.text(),
+              "G1 F1800 X10 Y0 E0.41575\n"
+              "G1 F1500 E-6.5\n"
+              "G0 F9000 X10 Y10\n"
+              "G1 F1500 E6.5\n"
+              "G1 F1800 X0 Y10 E0.41575\n");
+}
+
+TEST(GCodeExport, VolumetricExtrusionInCubicMillimetres) {
+    ExportParams p = marlin175();
+    p.volumetric = true;
+    GCodeExport g(p);
+    g.extrude({10'000, 0}, 1.5, 30);
+    g.extrude({20'000, 0}, 0.25, 30);
+    EXPECT_EQ(g.text(), "G1 F1800 X10 Y0 E1.5\nG1 X20 Y0 E1.75\n");
+    EXPECT_EQ(g.filamentUsedMm(), 1.75);
+}
+
+// BUG (engine/gcode/GCodeExport.cpp, retract()/unretract(): `axis_.move(-params_.retraction_amount_mm)`):
+// in volumetric mode the E axis is in mm³, but the retraction amount (mm of filament) is written
+// unconverted. CuraEngine 4.13 with RepRap (Volumetric) and 2.85 mm filament retracts
+// "G1 F1500 E-41.46608" (6.5 mm × π·1.425² mm²); MixEngine writes 6.5 mm³.
+TEST(GCodeExport, VolumetricRetractionIsConvertedToCubicMillimetres) {
+    ExportParams p = marlin175();
+    p.volumetric = true;
+    p.filament_diameter_mm = 2.85;
+    GCodeExport g(p);
+    g.extrude({10'000, 0}, 10.0, 30);
+    g.retract();
+    g.unretract();
+    EXPECT_EQ(g.text(), "G1 F1800 X10 Y0 E10\nG1 F1500 E-31.46608\nG1 E10\n");
+}
+
+TEST(GCodeExport, RetractionHopLiftsAndLowers) {
+    ExportParams p = marlin175();
+    p.retraction_hop_um = 200;
+    GCodeExport g(p);
+    g.moveZ(300, 10);
+    g.retract();
+    EXPECT_EQ(g.z(), 500);
+    g.travel({5'000, 0}, 150);
+    g.extrude({6'000, 0}, 0.0, 25);
+    EXPECT_EQ(g.z(), 300);
+    // Order: retract, lift, travel, lower, prime, extrude (the Z-move feedrates are not fixed here).
+    const std::string& t = g.text();
+    const auto retract = t.find("G1 F1500 E-6.5\n");
+    const auto lift = t.find(" Z0.5\n");
+    const auto travel = t.find("G0 F9000 X5 Y0\n");
+    const auto lower = t.find(" Z0.3\n", travel);
+    const auto prime = t.find(" E0\n", lower);
+    const auto extrude = t.find("G1 X6 Y0 E0\n");
+    ASSERT_NE(extrude, std::string::npos) << t;
+    EXPECT_LT(retract, lift) << t;
+    EXPECT_LT(lift, travel) << t;
+    EXPECT_LT(travel, lower) << t;
+    EXPECT_LT(lower, prime) << t;
+    EXPECT_LT(prime, extrude) << t;
+}
+
+TEST(GCodeExport, NoRetractionWhenAmountIsZero) {
+    ExportParams p = marlin175();
+    p.retraction_amount_mm = 0;
+    GCodeExport g(p);
+    g.retract();
+    EXPECT_EQ(g.text(), "");
+    EXPECT_FALSE(g.retracted());
+}
+
+TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
+    GCodeExport g(marlin175());
+    g.travel({30'000, 40'000}, 50);   // 50 mm at 50 mm/s: 1 s
+    g.extrude({30'000, 0}, 1.0, 20);  // 40 mm at 20 mm/s: 2 s
+    g.retract();                      // 6.5 mm at 25 mm/s: 0.26 s
+    g.unretract();                    // 0.26 s
+    g.moveZ(2'000, 10);               // 2 mm at 10 mm/s: 0.2 s
+    EXPECT_DOUBLE_EQ(g.elapsedSeconds(), 3.72);
+    g.takeText();
+    EXPECT_EQ(g.text(), "");
+}
+
+// CuraEngine 4.13 writes the fan as `PrecisionedDouble{1, percent * 255 / 100}`: 50 % → "M106 S127.5"
+// (checked with /usr/bin/CuraEngine, cool_fan_speed_min=50). BUG (engine/gcode/GCodeExport.cpp,
+// setFan(): `std::lround(ratio * 255)`) writes "M106 S128".
+TEST(GCodeExport, FanSpeedKeepsOneDecimalLikeCuraEngine) {
+    GCodeExport g(marlin175());
+    g.setFan(0.5);
+    g.setFan(0.3);
+    EXPECT_EQ(g.text(), "M106 S127.5\nM106 S76.5\n");
+}
+
+}  // namespace
+}  // namespace mixengine

@@ -1,0 +1,57 @@
+// Compact G-code number formatting (gcode/NumberFormat.h): fixed decimals, trailing zeros and point
+// removed, never "-0".
+#include "gcode/NumberFormat.h"
+
+#include <gtest/gtest.h>
+
+namespace mixengine {
+namespace {
+
+TEST(NumberFormat, CoordinatesThreeDecimals) {
+    EXPECT_EQ(formatCoordMm(-0.0001), "0");
+    EXPECT_EQ(formatCoordMm(-0.0), "0");
+    EXPECT_EQ(formatCoordMm(0.0), "0");
+    EXPECT_EQ(formatCoordMm(1.23456), "1.235");
+    EXPECT_EQ(formatCoordMm(10.0), "10");
+    EXPECT_EQ(formatCoordMm(100.0), "100");
+    EXPECT_EQ(formatCoordMm(111.353), "111.353");
+    EXPECT_EQ(formatCoordMm(110.5), "110.5");
+    EXPECT_EQ(formatCoordMm(-1.5), "-1.5");
+    EXPECT_EQ(formatCoordMm(-0.0004), "0");
+    EXPECT_EQ(formatCoordMm(-0.0006), "-0.001");
+    EXPECT_EQ(formatCoordMm(0.3), "0.3");
+    EXPECT_EQ(formatCoordMm(1234567.891), "1234567.891");
+}
+
+TEST(NumberFormat, ExtrusionFiveDecimals) {
+    EXPECT_EQ(formatExtrusionMm(0.000004), "0");
+    EXPECT_EQ(formatExtrusionMm(-0.000004), "0");
+    EXPECT_EQ(formatExtrusionMm(1.234567), "1.23457");
+    EXPECT_EQ(formatExtrusionMm(0.03799), "0.03799");
+    EXPECT_EQ(formatExtrusionMm(354.926), "354.926");
+    EXPECT_EQ(formatExtrusionMm(-6.5), "-6.5");
+    EXPECT_EQ(formatExtrusionMm(15.0), "15");
+    EXPECT_EQ(formatExtrusionMm(0.000006), "0.00001");
+}
+
+TEST(NumberFormat, FeedrateInMmPerMinute) {
+    EXPECT_EQ(formatFeedrate(25), "1500");
+    EXPECT_EQ(formatFeedrate(28.125), "1687.5");
+    EXPECT_EQ(formatFeedrate(30), "1800");
+    EXPECT_EQ(formatFeedrate(120), "7200");
+    EXPECT_EQ(formatFeedrate(0.5), "30");
+    EXPECT_EQ(formatFeedrate(33.33333), "2000");
+    EXPECT_EQ(formatFeedrate(1.0 / 60.0), "1");
+}
+
+TEST(NumberFormat, DecimalsZeroKeepsIntegerZeros) {
+    EXPECT_EQ(formatDecimal(1000.0, 0), "1000");
+    EXPECT_EQ(formatDecimal(2.5, 0), "3");
+    EXPECT_EQ(formatDecimal(-2.5, 0), "-3");
+    EXPECT_EQ(formatDecimal(-0.4, 0), "0");
+    EXPECT_EQ(formatDecimal(1.25, 1), "1.3");
+    EXPECT_EQ(formatDecimal(60.0, 1), "60");
+}
+
+}  // namespace
+}  // namespace mixengine

@@ -1,0 +1,144 @@
+// Writing planned layers (gcode/PlanWriter.h): one chunk per layer, ;LAYER:n first and
+// ;TIME_ELAPSED: (6 decimals, cumulative) last.
+#include "gcode/PlanWriter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <regex>
+
+namespace mixengine {
+namespace {
+
+PlanStep step(PlanStep::Kind kind) {
+    PlanStep s;
+    s.kind = kind;
+    return s;
+}
+
+PlanStep travel(Point2 to, bool retract = false) {
+    PlanStep s = step(PlanStep::Kind::Travel);
+    s.to = to;
+    s.speed_mm_s = 150;
+    s.retract = retract;
+    return s;
+}
+
+PlanStep extrude(Point2 to, double volume) {
+    PlanStep s = step(PlanStep::Kind::Extrude);
+    s.to = to;
+    s.speed_mm_s = 30;
+    s.volume_mm3 = volume;
+    return s;
+}
+
+PrintPlan twoLayerPlan() {
+    PrintPlan plan;
+    plan.mesh_names = {"cube.stl"};
+    PlannedLayer first;
+    first.index = 0;
+    first.z = 300;
+    PlanStep fan = step(PlanStep::Kind::SetFan);
+    fan.fan_ratio = 1.0;
+    PlanStep mesh = step(PlanStep::Kind::SetMesh);
+    mesh.mesh_index = 0;
+    PlanStep feature = step(PlanStep::Kind::SetFeature);
+    feature.feature = Feature::WallOuter;
+    first.steps = {fan, mesh, feature, travel({10'000, 10'000}), extrude({20'000, 10'000}, 0.5)};
+    PlannedLayer second;
+    second.index = 1;
+    second.z = 500;
+    PlanStep nonmesh = step(PlanStep::Kind::SetMesh);
+    nonmesh.mesh_index = -1;
+    second.steps = {nonmesh, travel({20'000, 30'000}, true), extrude({5'000, 30'000}, 0.25)};
+    plan.layers = {first, second};
+    return plan;
+}
+
+ExportParams params() {
+    ExportParams p;
+    p.filament_diameter_mm = 1.75;
+    p.volumetric = true;  // E equals the volume: easy to read
+    p.retraction_amount_mm = 1.0;
+    return p;
+}
+
+TEST(GCodePlanWriter, ExactFirstChunk) {
+    GCodeExport gcode(params());
+    const WrittenLayers written = writePlan(twoLayerPlan(), PlanWriterParams{}, gcode);
+    ASSERT_EQ(written.chunks.size(), 2U);
+    // 0.3 mm Z at 10 mm/s + √200 mm travel at 150 mm/s + 10 mm extrusion at 30 mm/s.
+    char elapsed[64];
+    std::snprintf(elapsed, sizeof elapsed, "%.6f", 0.03 + std::sqrt(200.0) / 150.0 + 10.0 / 30.0);
+    EXPECT_STREQ(elapsed, "0.457614");
+    EXPECT_EQ(written.chunks[0],
+              ";LAYER:0\n"
+              "G92 E0\n"
+              "G0 F600 Z0.3\n"
+              "M106 S255\n"
+              ";MESH:cube.stl\n"
+              ";TYPE:WALL-OUTER\n"
+              "G0 F9000 X10 Y10\n"
+              "G1 F1800 X20 Y10 E0.5\n"
+              ";TIME_ELAPSED:0.457614\n");
+}
+
+TEST(GCodePlanWriter, LayerFirstTimeLastInEveryChunk) {
+    GCodeExport gcode(params());
+    const WrittenLayers written = writePlan(twoLayerPlan(), PlanWriterParams{}, gcode);
+    const std::regex time_line(";TIME_ELAPSED:[0-9]+\\.[0-9]{6}\n$");
+    double previous = -1;
+    for (std::size_t i = 0; i < written.chunks.size(); ++i) {
+        const std::string& chunk = written.chunks[i];
+        EXPECT_EQ(chunk.rfind(";LAYER:" + std::to_string(i) + "\n", 0), 0U) << chunk;
+        EXPECT_TRUE(std::regex_search(chunk, time_line)) << chunk;
+        const double time = std::stod(chunk.substr(chunk.rfind(":") + 1));
+        EXPECT_GT(time, previous);
+        previous = time;
+    }
+    EXPECT_NE(written.chunks[1].find(";MESH:NONMESH\n"), std::string::npos) << written.chunks[1];
+    EXPECT_NE(written.chunks[1].find("G0 F600 Z0.5\n"), std::string::npos) << written.chunks[1];
+}
+
+TEST(GCodePlanWriter, BoundsOfExtrudedMoves) {
+    GCodeExport gcode(params());
+    const WrittenLayers written = writePlan(twoLayerPlan(), PlanWriterParams{}, gcode);
+    EXPECT_EQ(written.min, (Point3{5'000, 10'000, 300}));
+    EXPECT_EQ(written.max, (Point3{20'000, 30'000, 500}));
+}
+
+TEST(GCodePlanWriter, NegativeLayerNumbersAndNoReset) {
+    PrintPlan plan;
+    PlannedLayer raft;
+    raft.index = -2;
+    raft.z = 200;
+    raft.steps = {extrude({1'000, 0}, 0.1)};
+    plan.layers = {raft};
+    GCodeExport gcode(params());
+    PlanWriterParams p;
+    p.reset_e_each_layer = false;
+    const WrittenLayers written = writePlan(plan, p, gcode);
+    ASSERT_EQ(written.chunks.size(), 1U);
+    EXPECT_EQ(written.chunks[0].rfind(";LAYER:-2\nG0 F600 Z0.2\nG1 F1800 X1 Y0 E0.1\n;TIME_ELAPSED:", 0), 0U)
+        << written.chunks[0];
+}
+
+TEST(GCodePlanWriter, RetractedTravelAndResetAcrossLayers) {
+    GCodeExport gcode(params());
+    const WrittenLayers written = writePlan(twoLayerPlan(), PlanWriterParams{}, gcode);
+    const std::string& second = written.chunks[1];
+    // E is reset at the layer start, then the retraction, the travel and the prime follow.
+    const auto reset = second.find("G92 E0\n");
+    const auto retract = second.find("G1 F1500 E-1\n");
+    const auto move = second.find("G0 F9000 X20 Y30\n");
+    const auto prime = second.find("G1 F1500 E0\n");
+    ASSERT_NE(prime, std::string::npos) << second;
+    EXPECT_LT(reset, retract) << second;
+    EXPECT_LT(retract, move) << second;
+    EXPECT_LT(move, prime) << second;
+    EXPECT_NE(second.find("G1 F1800 X5 Y30 E0.25\n"), std::string::npos) << second;
+}
+
+}  // namespace
+}  // namespace mixengine

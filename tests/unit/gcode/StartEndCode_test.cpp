@@ -1,0 +1,121 @@
+// Start and end G-code (gcode/StartEndCode.h). The expected temperature lines are those of
+// /usr/bin/CuraEngine 4.13 (FffGcodeWriter::processInitialLayerTemperature), checked by slicing a
+// cube with the flags below.
+#include "gcode/StartEndCode.h"
+
+#include <gtest/gtest.h>
+
+namespace mixengine {
+namespace {
+
+constexpr const char* kM82 = "M82 ;absolute extrusion mode\n";
+constexpr const char* kM83 = "M83 ;relative extrusion mode\n";
+
+SettingValues globalValues() {
+    return {{"machine_heated_bed", "True"},
+            {"material_bed_temp_prepend", "True"},
+            {"material_bed_temp_wait", "True"},
+            {"material_bed_temperature_layer_0", "60"},
+            {"material_print_temp_prepend", "True"},
+            {"material_print_temp_wait", "True"},
+            {"machine_gcode_flavor", "RepRap (Marlin/Sprinter)"},
+            {"machine_depth", "235"},
+            {"machine_start_gcode", "G28 ;Home\nG1 Y{machine_depth} ;{print_time}"},
+            {"machine_end_gcode", "M84"}};
+}
+
+Settings global(const SettingValues& changes = {}) {
+    return Settings("global settings", globalValues()).with("global settings", changes);
+}
+
+Settings extruder0(const char* layer0 = "215", const char* print = "200") {
+    return Settings("extruder 0",
+                    {{"material_print_temperature_layer_0", layer0}, {"material_print_temperature", print}});
+}
+
+// Tokens were expanded before (by Cura, or settings/FrontendValues): startCode keeps them verbatim.
+const std::string kStart = "G28 ;Home\nG1 Y{machine_depth} ;{print_time}\n";
+
+TEST(GCodeStartEndCode, WaitForBedAndNozzle) {
+    EXPECT_EQ(startCode(global(), extruder0(), false),
+              "M140 S60\nM105\nM190 S60\nM104 S215\nM105\nM109 S215\n" + std::string(kM82) + kStart);
+}
+
+TEST(GCodeStartEndCode, NoPrependNoTemperatureLines) {
+    const Settings g =
+        global({{"material_bed_temp_prepend", "False"}, {"material_print_temp_prepend", "False"}});
+    EXPECT_EQ(startCode(g, extruder0(), false), kM82 + kStart);
+}
+
+TEST(GCodeStartEndCode, UnheatedBedGetsNoBedLines) {
+    const Settings g = global({{"machine_heated_bed", "False"}});
+    EXPECT_EQ(startCode(g, extruder0("212.5"), false),
+              "M104 S212.5\nM105\nM109 S212.5\n" + std::string(kM82) + kStart);
+}
+
+TEST(GCodeStartEndCode, RelativeExtrusionSwitchesAfterTheStartCode) {
+    const Settings g =
+        global({{"material_bed_temp_prepend", "False"}, {"material_print_temp_prepend", "False"}});
+    EXPECT_EQ(startCode(g, extruder0(), true), kM82 + kStart + kM83);
+    EXPECT_EQ(endCode(g, true), std::string(kM82) + "M84\n" + kM82);
+}
+
+TEST(GCodeStartEndCode, CodeIsWrittenVerbatim) {
+    const Settings g = global({{"material_bed_temp_prepend", "False"},
+                               {"material_print_temp_prepend", "False"},
+                               {"machine_end_gcode", "G1 X{machine_depth}\nM84 ;{jobname}"}});
+    EXPECT_EQ(endCode(g, false).rfind("G1 X{machine_depth}\nM84 ;{jobname}\n", 0), 0U) << endCode(g, false);
+    EXPECT_NE(startCode(g, extruder0(), false).find("G1 Y{machine_depth} ;{print_time}\n"),
+              std::string::npos);
+}
+
+TEST(GCodeStartEndCode, StartCodeEndingInNewlineGetsNoBlankLine) {
+    const Settings g = global({{"material_bed_temp_prepend", "False"},
+                               {"material_print_temp_prepend", "False"},
+                               {"machine_start_gcode", "G28\n"}});
+    EXPECT_EQ(startCode(g, extruder0(), false), std::string(kM82) + "G28\n");
+}
+
+// BUG (engine/gcode/StartEndCode.cpp, startCode: `appendLine(out, "M105")` after M140 and after M104
+// unconditionally): CuraEngine writes M105 only as part of the wait sequence (Marlin:
+// "M140 S60 / M105 / M190 S60", "M105 / M109 S215"). With material_bed_temp_wait=False and
+// material_print_temp_wait=False /usr/bin/CuraEngine writes just "M140 S60\nM104 S215\n".
+TEST(GCodeStartEndCode, NoM105WithoutWaiting) {
+    const Settings no_wait =
+        global({{"material_bed_temp_wait", "False"}, {"material_print_temp_wait", "False"}});
+    EXPECT_EQ(startCode(no_wait, extruder0(), false), "M140 S60\nM104 S215\n" + std::string(kM82) + kStart);
+    const Settings bed_wait = global({{"material_print_temp_wait", "False"}});
+    EXPECT_EQ(startCode(bed_wait, extruder0(), false),
+              "M140 S60\nM105\nM190 S60\nM104 S215\n" + std::string(kM82) + kStart);
+}
+
+// BUG (engine/gcode/StartEndCode.cpp, startCode): CuraEngine skips the bed lines when
+// material_bed_temperature_layer_0 is 0 and uses material_print_temperature when
+// material_print_temperature_layer_0 is 0 (checked: "M104 S205 / M105 / M109 S205", no M140/M190).
+// MixEngine writes "M140 S0 ... M190 S0" and "M104 S0 ... M109 S0".
+TEST(GCodeStartEndCode, ZeroInitialTemperaturesLikeCuraEngine) {
+    const Settings g = global({{"material_bed_temperature_layer_0", "0"}});
+    EXPECT_EQ(startCode(g, extruder0("0", "205"), false),
+              "M104 S205\nM105\nM109 S205\n" + std::string(kM82) + kStart);
+}
+
+// BUG (engine/gcode/StartEndCode.cpp, endCode): CuraEngine always sets the extrusion mode after the
+// end code — "M82 ;absolute extrusion mode" (Marlin), "M83 ;relative extrusion mode" for
+// RepRap (RepRap) — also without relative_extrusion. MixEngine writes it only when relative.
+TEST(GCodeStartEndCode, EndCodeRestoresTheExtrusionModeLikeCuraEngine) {
+    EXPECT_EQ(endCode(global(), false), "M84\n" + std::string(kM82));
+    const Settings reprap = global({{"machine_gcode_flavor", "RepRap (RepRap)"}});
+    EXPECT_EQ(endCode(reprap, false), "M84\n" + std::string(kM83));
+}
+
+// BUG (engine/gcode/StartEndCode.cpp, startCode ignores machine_gcode_flavor): for RepRap (RepRap)
+// CuraEngine writes "T0" first, no "M140" before "M190" and no "M105" lines (observed:
+// "T0 / M190 S60 / M104 S212.5 / M109 S212.5").
+TEST(GCodeStartEndCode, DISABLED_RepRapFlavourTemperatureLinesLikeCuraEngine) {
+    const Settings reprap = global({{"machine_gcode_flavor", "RepRap (RepRap)"}});
+    EXPECT_EQ(startCode(reprap, extruder0("212.5"), false),
+              "T0\nM190 S60\nM104 S212.5\nM109 S212.5\n" + std::string(kM82) + kStart);
+}
+
+}  // namespace
+}  // namespace mixengine
