@@ -3,7 +3,7 @@ file(GLOB_RECURSE sources ${ROOT}/engine/*.cpp ${ROOT}/engine/*.h ${ROOT}/tests/
 execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${sources}
                 RESULT_VARIABLE result ERROR_VARIABLE errors)
 if(NOT result EQUAL 0)
-  string(REGEX MATCHALL "[^\n]*warning:[^\n]*" lines "${errors}")
+  string(REGEX MATCHALL "[^\n]*(warning|error):[^\n]*" lines "${errors}")
   list(LENGTH lines count)
   list(SUBLIST lines 0 10 first)
   string(REPLACE ";" "\n" shown "${first}")

@@ -74,8 +74,7 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
 void GCodeExport::retract() {
     if (retracted_ || params_.retraction_amount_mm <= 0)
         return;
-    line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " +
-         axis_.move(-retractionOnAxis()));
+    line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + axis_.move(-retractionOnAxis()));
     elapsed_s_ += params_.retraction_amount_mm / params_.retraction_speed_mm_s;
     retracted_ = true;
     if (params_.retraction_hop_um > 0)

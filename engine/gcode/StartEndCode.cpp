@@ -12,8 +12,6 @@ void appendLine(std::string& out, const std::string& line) {
         out += '\n';
 }
 
-
-
 }  // namespace
 
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion) {

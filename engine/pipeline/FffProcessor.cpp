@@ -58,19 +58,15 @@ double perimeterUm(const Path& path) {
     return sum;
 }
 
-/// As CuraEngine: loops shorter than minimum_polygon_circumference are dropped, and layers left
-/// empty at the top of the group are removed.
+/// As CuraEngine: loops shorter than minimum_polygon_circumference are dropped. The layer count
+/// stays what the layer heights say, even when the top layers end up empty.
 void dropSmallPolygons(SlicedGroup& sliced, coord_um minimum_circumference_um) {
-    std::size_t top = 0;
     for (auto& mesh : sliced.meshes) {
-        for (std::size_t i = 0; i < mesh.size(); ++i) {
-            Paths& outlines = mesh[i].outlines;
-            std::erase_if(outlines, [&](const Path& p) { return perimeterUm(p) < double(minimum_circumference_um); });
-            if (!outlines.empty()) top = std::max(top, i + 1);
+        for (SlicedLayer& layer : mesh) {
+            std::erase_if(layer.outlines,
+                          [&](const Path& p) { return perimeterUm(p) < double(minimum_circumference_um); });
         }
     }
-    sliced.heights.resize(std::min(sliced.heights.size(), top));
-    for (auto& mesh : sliced.meshes) mesh.resize(sliced.heights.size());
 }
 
 }  // namespace

@@ -77,7 +77,8 @@ Scene prepareSettings(const SliceRequest& request) {
         scene.profiles = selectProfiles(scene.definitions, request.profiles, search);
     // --- end of profile selection ---
     scene.machine = resolveMachine(scene.definitions, request.user, &scene.profiles);
-    if (!request.settings_from_frontend) applyFrontendValues(scene.machine, request.user);
+    if (!request.settings_from_frontend)
+        applyFrontendValues(scene.machine, request.user);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
         SceneGroup group;
         group.settings = resolveMeshGroup(scene.machine, request.groups[g].settings, static_cast<int>(g));

@@ -29,13 +29,15 @@ std::string formatLocalTime(const char* format) {
 
 SettingValues withValues(const Settings& settings, const SettingValues& changes) {
     SettingValues values = settings.all();
-    for (const auto& [key, value] : changes) values[key] = value;
+    for (const auto& [key, value] : changes)
+        values[key] = value;
     return values;
 }
 
 }  // namespace
 
-std::string expandGcodeTokens(const std::string& code, const Settings& scope, const ResolvedMachine& machine) {
+std::string expandGcodeTokens(const std::string& code, const Settings& scope,
+                              const ResolvedMachine& machine) {
     static const std::regex token("\\{(\\w+)(,\\s?(\\w+))?\\}");
     std::string out;
     auto last = code.cbegin();
@@ -48,7 +50,8 @@ std::string expandGcodeTokens(const std::string& code, const Settings& scope, co
             const std::string which = m[3].str();
             if (std::all_of(which.begin(), which.end(), ::isdigit)) {
                 const std::size_t nr = std::stoul(which);
-                if (nr < machine.extruders.size()) source = &machine.extruders[nr];
+                if (nr < machine.extruders.size())
+                    source = &machine.extruders[nr];
             } else if (scope.has(which)) {
                 const std::string nr_text = scope.text(which);
                 if (!nr_text.empty() && std::all_of(nr_text.begin(), nr_text.end(), ::isdigit) &&
@@ -67,26 +70,32 @@ void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
     const std::string start = global.has("machine_start_gcode") ? global.text("machine_start_gcode") : "";
     SettingValues changes;
     if (!user.global.count("material_bed_temp_prepend")) {
-        const bool referenced = referencesAny(start, "material_bed_temperature|material_bed_temperature_layer_0");
+        const bool referenced =
+            referencesAny(start, "material_bed_temperature|material_bed_temperature_layer_0");
         changes["material_bed_temp_prepend"] = referenced ? "False" : "True";
     }
     if (!user.global.count("material_print_temp_prepend")) {
-        const bool referenced = referencesAny(
-            start,
-            "material_print_temperature|material_print_temperature_layer_0|default_material_print_temperature|"
-            "material_initial_print_temperature|material_final_print_temperature|material_standby_temperature|"
-            "print_temperature");
+        const bool referenced = referencesAny(start,
+                                              "material_print_temperature|material_print_temperature_layer_0|"
+                                              "default_material_print_temperature|"
+                                              "material_initial_print_temperature|material_final_print_"
+                                              "temperature|material_standby_temperature|"
+                                              "print_temperature");
         changes["material_print_temp_prepend"] = referenced ? "False" : "True";
     }
     const Settings& initial = machine.extruders.front();
     for (const char* key : {"machine_start_gcode", "machine_end_gcode"}) {
-        if (global.has(key)) changes[key] = expandGcodeTokens(global.text(key), initial, machine);
+        if (global.has(key))
+            changes[key] = expandGcodeTokens(global.text(key), initial, machine);
     }
-    if (global.has("material_bed_temperature")) changes["print_bed_temperature"] = global.text("material_bed_temperature");
+    if (global.has("material_bed_temperature"))
+        changes["print_bed_temperature"] = global.text("material_bed_temperature");
     if (global.has("material_print_temperature"))
         changes["print_temperature"] = global.text("material_print_temperature");
-    if (global.has("speed_travel")) changes["travel_speed"] = global.text("speed_travel");
-    if (!global.has("initial_extruder_nr")) changes["initial_extruder_nr"] = "0";
+    if (global.has("speed_travel"))
+        changes["travel_speed"] = global.text("speed_travel");
+    if (!global.has("initial_extruder_nr"))
+        changes["initial_extruder_nr"] = "0";
     changes["time"] = formatLocalTime("%H:%M:%S");
     changes["date"] = formatLocalTime("%d-%m-%Y");
     changes["day"] = formatLocalTime("%a");
@@ -95,10 +104,12 @@ void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
     for (Settings& extruder : machine.extruders) {
         SettingValues own;
         for (const char* key : {"machine_extruder_start_code", "machine_extruder_end_code"}) {
-            if (extruder.has(key)) own[key] = expandGcodeTokens(extruder.text(key), extruder, machine);
+            if (extruder.has(key))
+                own[key] = expandGcodeTokens(extruder.text(key), extruder, machine);
         }
         for (const char* key : {"material_bed_temp_prepend", "material_print_temp_prepend"}) {
-            if (auto it = changes.find(key); it != changes.end()) own[key] = it->second;
+            if (auto it = changes.find(key); it != changes.end())
+                own[key] = it->second;
         }
         extruder = Settings(extruder.scope(), withValues(extruder, own));
     }

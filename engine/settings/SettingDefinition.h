@@ -20,7 +20,7 @@ struct SettingDefinition {
     std::optional<std::string> maximum_value;
     std::string unit;
     std::vector<std::string> enum_options;  ///< keys of `options` for enums
-    bool settable_per_mesh = true;  // Cura registers both flags with default True
+    bool settable_per_mesh = true;          // Cura registers both flags with default True
     bool settable_per_extruder = true;
 };
 

@@ -3,8 +3,8 @@
 //
 // Contract: cut(…) runs cutFacet on the given facets (slicing/FacetPlane.h), stitches the
 // segments (slicing/SegmentStitcher.h), builds the outlines (slicing/OutlineBuilder.h) and
-// appends what stayed open to `open_polylines`. A PlaneCutter keeps its buffers between cuts; use
-// one per thread. validateMeshForSlicing checks what the exact arithmetic relies on.
+// appends what stayed open to `open_polylines`. A PlaneCutter keeps its buffers between cuts and
+// is not thread-safe. validateMeshForSlicing checks what the exact arithmetic relies on.
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -33,7 +33,7 @@ struct StitchResult {
     Paths open_polylines;             ///< chains that could not be closed
 };
 
-/// Reusable (keeps its buffers between cuts); one per thread.
+/// Reusable (keeps its buffers between cuts); not thread-safe.
 class SegmentStitcher {
   public:
     StitchResult stitch(const std::vector<FacetSegment>& segments, coord_um max_gap_um);

@@ -1,11 +1,12 @@
 #include "slicing/Slicer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <mutex>
 #include <string>
 
+#include "common/ParallelFor.h"
 #include "slicing/FacetBuckets.h"
-#include "slicing/ParallelFor.h"
 #include "slicing/PlaneCutter.h"
 
 namespace mixengine {
@@ -110,11 +111,11 @@ std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& 
     validateMeshForSlicing(mesh);
     const CutPlan plan = planCuts(layers, options.tolerance);
     const FacetBuckets buckets(mesh, plan.plane_z);
-    std::vector<PlaneCutter> cutters(static_cast<std::size_t>(workerCount(layers.size(), options.threads)));
     std::vector<SlicedLayer> result(layers.size());
     ProgressReporter progress(log, layers.size());
-    parallelFor(layers.size(), options.threads, [&](std::size_t i, int worker) {
-        PlaneCutter& cutter = cutters[static_cast<std::size_t>(worker)];
+    std::atomic<std::size_t> segments{0};
+    parallelFor(layers.size(), options.threads, [&](std::size_t i) {
+        PlaneCutter cutter;  // per layer: its buffers are small next to the layer's work
         SlicedLayer& out = result[i];
         out.print_z = layers[i].print_z;
         out.slice_z = layers[i].slice_z;
@@ -125,13 +126,11 @@ std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& 
         }
         out.outlines =
             cuts.size() == 1 ? std::move(cuts[0]) : combineCuts(cuts[0], cuts[1], options.tolerance);
+        segments += cutter.segmentCount();
         progress.layerDone();
     });
-    std::size_t segments = 0;
-    for (const PlaneCutter& cutter : cutters)
-        segments += cutter.segmentCount();
     log.info("sliced '" + mesh.name + "': " + std::to_string(layers.size()) + " layers, " +
-             std::to_string(mesh.faces.size()) + " facets, " + std::to_string(segments) + " segments");
+             std::to_string(mesh.faces.size()) + " facets, " + std::to_string(segments.load()) + " segments");
     reportOpenPolylines(result, mesh, log);
     return result;
 }

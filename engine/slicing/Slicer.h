@@ -19,7 +19,7 @@
 //     slab's top (print_z) and just above its bottom (bottom_z) and take the union / intersection,
 //     so a body standing on z = 0 is present in layer 0 in every mode;
 //   - only facets whose z-range contains a plane are cut there (slicing/FacetBuckets.h); layers are
-//     sliced in parallel (slicing/ParallelFor.h); the result does not depend on the thread count.
+//     sliced in parallel (common/ParallelFor.h); the result does not depend on the thread count.
 // Errors: InputError for a mesh beyond ±1 km (the exact 64-bit interpolation's range), InternalError
 // for a face index out of range. A warning names the mesh when open polylines were left out.
 #include <vector>

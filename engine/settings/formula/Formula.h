@@ -53,7 +53,8 @@ class Environment {
 Expression parse(std::string_view source);
 
 /// Evaluates a parsed formula. Throws FormulaError for runtime errors (unknown name or function,
-/// type error, division by zero, math domain error, int64 overflow, ...).
+/// type error, division by zero, math domain or range error, an int conversion outside int64, ...).
+/// Thread-safe: an Expression can be evaluated concurrently; the Environment must allow it too.
 Value evaluate(const Expression& expression, const Environment& environment);
 
 /// The setting keys the formula depends on, sorted and unique: every free name that is not a

@@ -3,7 +3,9 @@
 //
 //   None      — NoneValue
 //   bool      — bool
-//   int       — std::int64_t (Python ints are unbounded; results that do not fit raise FormulaError)
+//   int       — std::int64_t. Python ints are unbounded: int arithmetic (+ - * // ** unary -, abs,
+//               sum) whose result does not fit continues as float; int(), round() and
+//               math.ceil/floor/trunc of values outside int64 throw FormulaError.
 //   float     — double
 //   str       — std::string holding UTF-8
 //   list      — List (std::vector<Value>); tuples and the results of map() and generator

@@ -2,6 +2,7 @@
 // crashes, whatever the input.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 
 #include "unit/formula/FormulaTestSupport.h"
@@ -173,6 +174,33 @@ TEST(FormulaErrors, HostileInputIsRefusedNotCrashed) {
     for (int i = 0; i < 500; ++i)
         shortSum += "+1";
     EXPECT_EQ(eval(shortSum), Value(501));
+}
+
+// Random sequences of formula fragments either evaluate or throw FormulaError; nothing else.
+TEST(FormulaErrors, RandomInputOnlyEverThrowsFormulaError) {
+    const std::vector<std::string> fragments = {
+        "(",    ")",      "[",    "]",     ",",  "1",   "0",   "-2.5",  "1e308", "'a'",  "\"b\"", "'",
+        "+",    "-",      "*",    "/",     "//", "%",   "**",  "<",     "==",    "not ", " and ", " or ",
+        " if ", " else ", " in ", " for ", "x",  "abs", "max", "round", "math.", "sqrt", "pi",    "str",
+        "int",  "len",    "sum",  "map",   "\n", "\\",  ".",   "True",  "None",  "#",    "é"};
+    MapEnvironment env;
+    env.settings["x"] = List{1, 2.5, "s"};
+    std::mt19937 rng(12345);
+    std::size_t evaluated = 0;
+    for (int i = 0; i < 20000; ++i) {
+        std::string formula;
+        const int length = 1 + static_cast<int>(rng() % 12);
+        for (int k = 0; k < length; ++k)
+            formula += fragments[rng() % fragments.size()];
+        try {
+            evaluate(parse(formula), env);
+            ++evaluated;
+        } catch (const FormulaError&) {
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << "formula " << formula << " threw a non-FormulaError: " << e.what();
+        }
+    }
+    EXPECT_GT(evaluated, 100u);
 }
 
 TEST(FormulaErrors, LongFormulasAreShortenedInTheMessage) {

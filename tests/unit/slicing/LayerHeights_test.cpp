@@ -39,8 +39,9 @@ TEST(LayerHeights, CountFollowsCuraEnginesFormula) {
         if (!layers.empty()) {
             // The last layer's plane at h0 − h/2 + (n − 1)·h is at or below the top, the next one above.
             const coord_um last_plane = c.h0 - c.h / 2 + static_cast<coord_um>(layers.size() - 1) * c.h;
-            if (layers.size() > 1)
+            if (layers.size() > 1) {
                 EXPECT_LE(last_plane, c.max_z);
+            }
             EXPECT_GT(last_plane + c.h, c.max_z);
         }
     }
