@@ -69,16 +69,22 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps) {
     std::vector<bool> done(paths.size(), false);
     for (std::size_t placed = 0; placed < paths.size(); ++placed) {
-        std::size_t best = paths.size(), best_start = 0;
+        // Pick the nearest path by its nearest end (open lines) or its first vertex (loops, to keep
+        // the search linear in the number of paths); the loop's best start is chosen afterwards.
+        std::size_t best = paths.size();
         double best_distance = std::numeric_limits<double>::max();
         for (std::size_t i = 0; i < paths.size(); ++i) {
             if (done[i] || paths[i].points.size() < 2)
                 continue;
-            double d = 0;
-            std::size_t start = bestStart(paths[i], head, d);
+            const double d = paths[i].closed ? distanceUm(head, paths[i].points.front())
+                                             : std::min(distanceUm(head, paths[i].points.front()),
+                                                        distanceUm(head, paths[i].points.back()));
             if (d < best_distance)
-                best = i, best_start = start, best_distance = d;
+                best = i, best_distance = d;
         }
+        std::size_t best_start = 0;
+        if (best < paths.size())
+            best_start = bestStart(paths[best], head, best_distance);
         if (best == paths.size())
             break;
         done[best] = true;

@@ -4,22 +4,25 @@
 
 namespace mixengine {
 
-Paths intersectAll(const Paths& a, const Paths& b) {
+namespace {
+
+Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
     ClipperLib::Clipper clipper;
     clipper.AddPaths(a, ClipperLib::ptSubject, true);
     clipper.AddPaths(b, ClipperLib::ptClip, true);
     Paths result;
-    clipper.Execute(ClipperLib::ctIntersection, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    clipper.Execute(operation, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     return result;
 }
 
+}  // namespace
+
+Paths intersectAll(const Paths& a, const Paths& b) {
+    return clip(a, b, ClipperLib::ctIntersection);
+}
+
 Paths differenceOf(const Paths& a, const Paths& b) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(a, ClipperLib::ptSubject, true);
-    clipper.AddPaths(b, ClipperLib::ptClip, true);
-    Paths result;
-    clipper.Execute(ClipperLib::ctDifference, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return result;
+    return clip(a, b, ClipperLib::ctDifference);
 }
 
 std::vector<Paths> computeSkinAreas(const std::vector<Paths>& areas, int top_layers, int bottom_layers,
