@@ -26,12 +26,18 @@ mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<va
   -o <file>     Write the G-code to <file> (written to a temporary file, renamed when complete).
                 Without -o the G-code goes to standard output.
   --dump-layers <dir>  Also write every layer's outlines as JSON and SVG into <dir>.
+  --profiles    Stack Cura's profiles under the user's values, as Cura does: the machine's default
+                variant (nozzle), material, quality and intent. Implied by any of:
+  --variant <name>  --material <name>  --quality <name>  --intent <name>
+                Choose a profile by name or id, e.g. --quality normal --material generic_pla.
+                Without these the definitions alone apply (as CuraEngine's command line does),
+                but their `value` formulas are always evaluated, so derived settings follow.
 
 mixengine layers <slice arguments> -o <dir>
 	Slice only, and write <dir>/layers.json (outlines in mm, area per layer) and one SVG per
 	layer (<dir>/layer_00000.svg ...), in the model's own frame, to look at the slices.
 
-mixengine settings [-j <definition>] [-s key=value] [-e<N>] [--json]
+mixengine settings [-j <definition>] [--profiles ...] [-s key=value] [-e<N>] [--json]
 	Print the resolved global and per-extruder setting values.
 
 mixengine demo [<dir>]
