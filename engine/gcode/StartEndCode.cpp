@@ -47,7 +47,10 @@ std::string endCode(const Settings& global, bool relative_extrusion) {
     if (relative_extrusion)
         appendLine(out, "M82 ;absolute extrusion mode");
     appendLine(out, global.text("machine_end_gcode"));
-    appendLine(out, "M82 ;absolute extrusion mode");  // as CuraEngine: the file ends in absolute mode
+    // As CuraEngine: the file ends in absolute mode, except on RepRap firmware (relative by default).
+    const bool reprap =
+        global.has("machine_gcode_flavor") && global.text("machine_gcode_flavor") == "RepRap (RepRap)";
+    appendLine(out, reprap ? "M83 ;relative extrusion mode" : "M82 ;absolute extrusion mode");
     return out;
 }
 

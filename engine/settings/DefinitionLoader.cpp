@@ -116,7 +116,10 @@ std::vector<std::pair<fs::path, json>> loadChain(const std::string& leaf,
         json doc = readJsonFile(file);
         if (!doc.is_object())
             throw InputError(file.string() + ": definition is not a JSON object");
-        next = doc.value("inherits", "");
+        auto inherits = doc.find("inherits");
+        if (inherits != doc.end() && !inherits->is_string())
+            throw InputError(file.string() + ": 'inherits' must be a definition id (a string)");
+        next = inherits == doc.end() ? std::string() : inherits->get<std::string>();
         chain.emplace_back(file, std::move(doc));
     }
     std::reverse(chain.begin(), chain.end());

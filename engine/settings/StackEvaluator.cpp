@@ -100,13 +100,22 @@ int StackEvaluator::addMeshScope(SettingValues user, int extruder) {
 }
 
 const SettingDefinition* StackEvaluator::extruderOwn(int extruder, std::string_view key) const {
+    // A train without an extruder definition of its own (e.g. -e1 on fdmprinter) uses the first
+    // train's definition, as CuraEngine gives every train fdmextruder's settings.
+    const ExtruderDefinition* chosen =
+        definitions_.extruders.empty() ? nullptr : &definitions_.extruders.front();
     for (const ExtruderDefinition& e : definitions_.extruders) {
-        if (e.position != extruder)
-            continue;
-        auto it = e.overrides.find(key);
-        return it == e.overrides.end() ? nullptr : &it->second;
+        if (e.position == extruder)
+            chosen = &e;
     }
-    return nullptr;
+    if (!chosen || extruder < 0)
+        return nullptr;
+    // Borrowed from another train: only the extruder-only keys (machine_nozzle_offset_x, ...), not
+    // that train's overrides of machine settings.
+    if (chosen->position != extruder && definitions_.find(key))
+        return nullptr;
+    auto it = chosen->overrides.find(key);
+    return it == chosen->overrides.end() ? nullptr : &it->second;
 }
 
 const SettingDefinition* StackEvaluator::anyDefinition(std::string_view key) const {
@@ -207,6 +216,8 @@ std::optional<formula::Value> StackEvaluator::resolveTrain(int scope, std::strin
     if (s.is_mesh) {
         if (auto it = s.mesh_user.find(key); it != s.mesh_user.end())
             return userValue(key, it->second);
+    } else if (key == "extruder_nr") {
+        return formula::Value(static_cast<std::int64_t>(s.extruder));  // every train knows its number
     }
     const SettingDefinition* def = definitions_.find(key);
     const SettingDefinition* own = extruderOwn(s.extruder, key);
@@ -324,10 +335,14 @@ SettingValues StackEvaluator::allText(int scope) {
         keys.push_back(key);
     if (s.extruder >= 0) {
         keys.push_back("extruder_nr");
+        const ExtruderDefinition* own =
+            definitions_.extruders.empty() ? nullptr : &definitions_.extruders.front();
         for (const ExtruderDefinition& e : definitions_.extruders) {
-            if (e.position != s.extruder)
-                continue;
-            for (const auto& [key, def] : e.overrides)
+            if (e.position == s.extruder)
+                own = &e;
+        }
+        if (own) {
+            for (const auto& [key, def] : own->overrides)
                 keys.push_back(key);
         }
     }

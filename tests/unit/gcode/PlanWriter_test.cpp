@@ -130,7 +130,7 @@ TEST(GCodePlanWriter, RetractedTravelAndResetAcrossLayers) {
     const std::string& second = written.chunks[1];
     // E is reset at the layer start, then the retraction, the travel and the prime follow.
     const auto reset = second.find("G92 E0\n");
-    const auto retract = second.find("G1 F1500 E-1\n");
+    const auto retract = second.find("G1 F1500 E-2.40528\n");  // 1 mm of 1.75 mm filament, in mm³
     const auto move = second.find("G0 F9000 X20 Y30\n");
     const auto prime = second.find("G1 F1500 E0\n");
     ASSERT_NE(prime, std::string::npos) << second;

@@ -137,6 +137,21 @@ TEST_F(ProfileSelect, UltimakerS5PerExtruderAndIntent) {
     EXPECT_EQ(by_id.extruders.at(1).at(0).id, "um_s5_aa0.4_PLA_Fast_Print_Accurate");
 }
 
+TEST_F(ProfileSelect, QualityFollowsWhatIsAvailable) {
+    // the 1.0 mm nozzle only has "draft" profiles: Cura drops "standard" for the first available type
+    const ProfileStack wide = select("creality_ender3", {true, "1.0mm", "", "", ""});
+    EXPECT_EQ(ids(wide.global), std::vector<std::string>{"quality:base_global_draft"});
+    EXPECT_EQ(wide.extruders.at(0).at(0).id, "base_1.0_PLA_draft");
+    // a quality type the global stack has but the material has not is not available
+    const std::string message = inputErrorOf([] {
+        select("creality_ender3", {true, "", "generic_tpu", "low", ""});
+    });
+    EXPECT_TRUE(contains(message, "available: adaptive, standard, super")) << message;
+    // a quality container id selects its type
+    const ProfileStack by_id = select("creality_ender3", {true, "", "", "base_0.4_PLA_super", ""});
+    EXPECT_EQ(ids(by_id.global), std::vector<std::string>{"quality:base_global_super"});
+}
+
 TEST_F(ProfileSelect, MachineWithoutMachineQualities) {
     const ProfileStack stack = select("prusa_i3_mk3", {});
     EXPECT_EQ(ids(stack.global), std::vector<std::string>{"quality:normal"});
