@@ -34,6 +34,14 @@ SettingValues withValues(const Settings& settings, const SettingValues& changes)
     return values;
 }
 
+/// `scope` plus Cura's time, date and day, which start/end codes may use as tokens. They are not
+/// kept in the resolved settings, so that resolution stays reproducible.
+Settings withClock(const Settings& scope) {
+    return scope.with(scope.scope(), {{"time", formatLocalTime("%H:%M:%S")},
+                                      {"date", formatLocalTime("%d-%m-%Y")},
+                                      {"day", formatLocalTime("%a")}});
+}
+
 }  // namespace
 
 std::string expandGcodeTokens(const std::string& code, const Settings& scope,
@@ -86,7 +94,7 @@ void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
     const Settings& initial = machine.extruders.front();
     for (const char* key : {"machine_start_gcode", "machine_end_gcode"}) {
         if (global.has(key))
-            changes[key] = expandGcodeTokens(global.text(key), initial, machine);
+            changes[key] = expandGcodeTokens(global.text(key), withClock(initial), machine);
     }
     if (global.has("material_bed_temperature"))
         changes["print_bed_temperature"] = global.text("material_bed_temperature");
@@ -96,9 +104,6 @@ void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
         changes["travel_speed"] = global.text("speed_travel");
     if (!global.has("initial_extruder_nr"))
         changes["initial_extruder_nr"] = "0";
-    changes["time"] = formatLocalTime("%H:%M:%S");
-    changes["date"] = formatLocalTime("%d-%m-%Y");
-    changes["day"] = formatLocalTime("%a");
     machine.global = Settings(global.scope(), withValues(global, changes));
 
     for (Settings& extruder : machine.extruders) {

@@ -8,7 +8,8 @@
 //     machine_extruder_start_code / machine_extruder_end_code (each extruder, its own values) with
 //     their {key} and {key, N} tokens expanded; unknown tokens ({print_time}, ...) stay verbatim;
 //   - the renamed copies print_bed_temperature, print_temperature, travel_speed, and
-//     initial_extruder_nr, time, date, day.
+//     initial_extruder_nr. Cura's time, date and day are available to start/end code tokens but
+//     are not kept in the settings, so that resolving twice gives the same values.
 #include <string>
 
 #include "settings/Resolver.h"
