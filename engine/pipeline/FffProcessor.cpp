@@ -58,14 +58,12 @@ double perimeterUm(const Path& path) {
     return sum;
 }
 
-/// As CuraEngine: loops shorter than minimum_polygon_circumference are dropped, and vertices that
-/// deviate less than meshfix_maximum_deviation from their neighbours' line are removed. The layer
-/// count stays what the layer heights say, even when the top layers end up empty.
-void cleanOutlines(SlicedGroup& sliced, coord_um minimum_circumference_um, coord_um maximum_deviation_um) {
+/// As CuraEngine: loops shorter than minimum_polygon_circumference are dropped. The layer count
+/// stays what the layer heights say, even when the top layers end up empty. (Outline
+/// simplification by meshfix_maximum_resolution / _deviation is left to the toolpath work.)
+void cleanOutlines(SlicedGroup& sliced, coord_um minimum_circumference_um) {
     for (auto& mesh : sliced.meshes) {
         for (SlicedLayer& layer : mesh) {
-            if (maximum_deviation_um > 0)
-                ClipperLib::CleanPolygons(layer.outlines, static_cast<double>(maximum_deviation_um));
             std::erase_if(layer.outlines,
                           [&](const Path& p) { return perimeterUm(p) < double(minimum_circumference_um); });
         }
@@ -94,8 +92,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log) {
     options.threads = threads;
     for (const SceneMesh& m : group.meshes)
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
-    cleanOutlines(sliced, s.lengthMicrons("minimum_polygon_circumference"),
-                  s.lengthMicrons("meshfix_maximum_deviation"));
+    cleanOutlines(sliced, s.lengthMicrons("minimum_polygon_circumference"));
     return sliced;
 }
 

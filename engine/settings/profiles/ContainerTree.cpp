@@ -165,12 +165,19 @@ std::vector<const InstCfgFile*> ContainerTree::qualities(const std::string& vari
     return found;
 }
 
-std::map<std::string, const InstCfgFile*> ContainerTree::globalQualities() const {
-    std::map<std::string, const InstCfgFile*> by_type;
+std::vector<std::pair<std::string, const InstCfgFile*>> ContainerTree::globalQualities() const {
+    std::vector<std::pair<std::string, const InstCfgFile*>> by_type;
     for (const std::string& definition : {machine_.quality_definition, std::string("fdmprinter")}) {
         for (const InstCfgFile* q : qualitiesWhere(definition, nullptr, nullptr)) {
-            if (metaOr(*q, "global_quality") == "True" && q->meta("quality_type"))
-                by_type.emplace(*q->meta("quality_type"), q);
+            const std::string* type = q->meta("quality_type");
+            if (metaOr(*q, "global_quality") != "True" || !type)
+                continue;
+            auto same =
+                std::find_if(by_type.begin(), by_type.end(), [&](const auto& e) { return e.first == *type; });
+            if (same == by_type.end())
+                by_type.emplace_back(*type, q);
+            else
+                same->second = q;  // MachineNode: global_qualities[quality_type] = node
         }
         if (!by_type.empty())
             break;

@@ -28,8 +28,10 @@
 // Intents of a quality (QualityNode._loadAll): definition = quality_definition, variant = the
 //   variant's name, material = the quality's `material`, quality_type = the quality's; the empty
 //   intent ("default") always exists. Global qualities have none.
-// Where Cura's answer depends on its registry order (a Python set, so it varies between runs), the
-// first by container id is taken.
+// Where Cura's answer depends on its registry order (built from a Python set, so it can vary between
+// runs), containers are taken in id order and Cura's own rule is applied to that order: a later
+// container replaces an earlier one of the same quality type in Cura's dictionaries, and "the first"
+// fallbacks take the first.
 #include <map>
 #include <string>
 #include <vector>
@@ -75,8 +77,9 @@ class ContainerTree {
     std::vector<const InstCfgFile*> qualities(const std::string& variant_name,
                                               const MaterialContainer* material) const;
 
-    /// Global qualities by quality_type (the first by id for each type).
-    std::map<std::string, const InstCfgFile*> globalQualities() const;
+    /// Global qualities by quality_type, types in order of first appearance; for a type with
+    /// several, the last (as MachineNode's dictionary keeps it).
+    std::vector<std::pair<std::string, const InstCfgFile*>> globalQualities() const;
 
     /// The intents of extruder quality `quality` under variant `variant_name`.
     std::vector<const InstCfgFile*> intents(const std::string& variant_name,

@@ -44,11 +44,13 @@ std::string intentCategory(const InstCfgFile* intent) {
 CuraSession::CuraSession(const DefinitionSet& definitions, const ContainerTree& tree)
     : definitions_(definitions), tree_(tree) {
     const MachineProfileInfo& machine = tree_.machine();
-    const auto global = tree_.globalQualities();
-    if (auto it = global.find(machine.preferred_quality_type); it != global.end())
-        global_quality_ = it->second;
+    const auto global = tree_.globalQualities();  // preferredGlobalQuality
+    auto preferred = std::find_if(global.begin(), global.end(),
+                                  [&](const auto& e) { return e.first == machine.preferred_quality_type; });
+    if (preferred != global.end())
+        global_quality_ = preferred->second;
     else if (!global.empty())
-        global_quality_ = global.begin()->second;
+        global_quality_ = global.front().second;
     const VariantEntry* variant = tree_.variant(machine.preferred_variant_name);
     if (!variant)
         variant = &tree_.variants().front();
@@ -147,14 +149,14 @@ std::map<std::string, CuraSession::QualityGroup> CuraSession::qualityGroups() co
     for (const ExtruderChoice& e : extruders_) {
         std::map<std::string, const InstCfgFile*> by_type;
         for (const InstCfgFile* q : tree_.qualities(e.variant->name, e.material))
-            by_type.emplace(metaOr(*q, "quality_type"), q);
+            by_type[metaOr(*q, "quality_type")] = q;  // getQualityGroups: the last of a type wins
         if (by_type.empty())
             by_type.emplace("not_supported", nullptr);
         per_extruder.push_back(std::move(by_type));
     }
     auto global = tree_.globalQualities();
     if (global.empty())
-        global.emplace("not_supported", nullptr);
+        global.emplace_back("not_supported", nullptr);
     std::map<std::string, QualityGroup> groups;
     for (const auto& [type, quality] : global) {
         QualityGroup& group = groups[type];
