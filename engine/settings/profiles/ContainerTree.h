@@ -34,6 +34,7 @@
 // fallbacks take the first.
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "settings/DefinitionSet.h"
