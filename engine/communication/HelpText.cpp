@@ -29,7 +29,9 @@ mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<va
   --profiles    Stack Cura's profiles under the user's values, as Cura does: the machine's default
                 variant (nozzle), material, quality and intent. Implied by any of:
   --variant <name>  --material <name>  --quality <name>  --intent <name>
-                Choose a profile by name or id, e.g. --quality normal --material generic_pla.
+                Choose a profile by name or id, e.g. --quality normal --material generic_pla;
+                --variant and --material take one name per extruder, comma-separated
+                ("AA 0.4,BB 0.4"); an unknown name lists the available ones.
                 Without these the definitions alone apply (as CuraEngine's command line does),
                 but their `value` formulas are always evaluated, so derived settings follow.
 
