@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/Error.h"
+#include "common/TextFile.h"
 
 namespace mixengine {
 namespace {
@@ -16,21 +17,6 @@ bool isWordChar(char c) {
 /// Python's str.isspace() for the ASCII range FastConfigParser's "\s" sees here.
 bool isSpace(char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
-}
-
-std::string normaliseLineEnds(std::string_view text) {
-    std::string out;
-    out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '\r') {
-            out += '\n';
-            if (i + 1 < text.size() && text[i + 1] == '\n')
-                ++i;
-        } else {
-            out += text[i];
-        }
-    }
-    return out;
 }
 
 std::vector<std::string_view> splitLines(std::string_view text) {
@@ -170,15 +156,11 @@ InstCfgFile parseInstCfg(std::string_view text, std::string id, std::string sour
 }
 
 InstCfgFile readInstCfgFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(path.string() + ": cannot read the file");
-    std::ostringstream text;
-    text << in.rdbuf();
+    const std::string text = readTextFile(path);
     std::string name = path.filename().string();
     if (name.ends_with(".inst.cfg"))
         name.resize(name.size() - 9);
-    return parseInstCfg(text.str(), unquotePlus(name), path.string());
+    return parseInstCfg(text, unquotePlus(name), path.string());
 }
 
 ContainerValue containerValueFromText(const std::string& raw) {

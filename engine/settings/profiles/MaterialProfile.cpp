@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "common/Error.h"
+#include "common/TextFile.h"
 #include "settings/JsonText.h"
 #include "settings/profiles/XmlScan.h"
 
@@ -219,15 +220,11 @@ MaterialProfile parseMaterialProfile(std::string_view text, std::string base_fil
 }
 
 MaterialProfile readMaterialFile(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(path.string() + ": cannot read the file");
-    std::ostringstream text;
-    text << in.rdbuf();
+    const std::string text = readTextFile(path);
     std::string name = path.filename().string();
     if (name.ends_with(".xml.fdm_material"))
         name.resize(name.size() - 17);
-    return parseMaterialProfile(text.str(), name, path.string());
+    return parseMaterialProfile(text, name, path.string());
 }
 
 std::vector<std::string> productDefinitionIds(const std::string& product) {

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "common/Error.h"
+#include "common/TextFile.h"
 
 namespace mixengine {
 namespace {
@@ -235,21 +236,6 @@ class Scanner {
     const std::string& source_;
     std::size_t pos_ = 0;
 };
-
-std::string normaliseLineEnds(std::string_view text) {
-    std::string out;
-    out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '\r') {
-            out += '\n';
-            if (i + 1 < text.size() && text[i + 1] == '\n')
-                ++i;
-        } else {
-            out += text[i];
-        }
-    }
-    return out;
-}
 
 }  // namespace
 
