@@ -32,19 +32,22 @@ void placeMesh(Mesh& mesh, const Settings& group, const Settings& settings) {
     mesh.translate(dx, dy, dz);
 }
 
-std::vector<TriangleSoup> soupsOf(const MeshInput& input, Log& log) {
+/// The input's triangles: read from its file into `loaded`, or Cura's soups as they are (no copy).
+const std::vector<TriangleSoup>& soupsOf(const MeshInput& input, std::vector<TriangleSoup>& loaded,
+                                         Log& log) {
     if (!input.file)
         return input.soups;
     std::vector<std::string> warnings;
-    std::vector<TriangleSoup> soups = readModelFile(*input.file, warnings);
+    loaded = readModelFile(*input.file, warnings);
     for (const std::string& warning : warnings)
         log.warning(warning);
-    return soups;
+    return loaded;
 }
 
 void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshInput& input,
                SceneGroup& group, Log& log) {
-    std::vector<TriangleSoup> soups = soupsOf(input, log);
+    std::vector<TriangleSoup> loaded;
+    const std::vector<TriangleSoup>& soups = soupsOf(input, loaded, log);
     for (std::size_t part = 0; part < soups.size(); ++part) {
         const std::string name = soups.size() == 1 ? input.name : input.name + "#" + soups[part].name;
         Settings settings = resolveMesh(scene.definitions, request_user, scene.machine, group.settings,

@@ -9,8 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "geometry/Matrix3.h"
 #include "geometry/Point.h"
-#include "mesh/MeshBuilder.h"
 
 namespace mixengine {
 

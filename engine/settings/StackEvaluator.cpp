@@ -24,7 +24,7 @@ class StackEvaluator::ScopeEnvironment : public formula::Environment {
     }
     std::optional<formula::Value> callFunction(std::string_view name,
                                                const std::vector<formula::Value>& args) const override {
-        return stack_.callCuraFunction(scope_, name, args);
+        return stack_.callCuraFunction(name, args);
     }
 
   private:
@@ -293,7 +293,7 @@ std::optional<int> StackEvaluator::limitTarget(int scope, const SettingDefinitio
     return static_cast<int>(*n);
 }
 
-std::optional<formula::Value> StackEvaluator::callCuraFunction(int scope, std::string_view name,
+std::optional<formula::Value> StackEvaluator::callCuraFunction(std::string_view name,
                                                                const std::vector<formula::Value>& args) {
     if (name == "extruderValue") {
         std::optional<long long> n = args.empty() ? std::nullopt : asInteger(args[0]);
@@ -324,7 +324,6 @@ std::optional<formula::Value> StackEvaluator::callCuraFunction(int scope, std::s
         }
         return formula::Value(std::int64_t{0});
     }
-    (void)scope;
     return std::nullopt;
 }
 

@@ -81,7 +81,7 @@ class StackEvaluator {
     std::optional<int> limitTarget(int scope, const SettingDefinition& def);
     formula::Value evaluateFormula(int scope, std::string_view key, const std::string& formula);
     formula::Value userValue(std::string_view key, const std::string& text) const;
-    std::optional<formula::Value> callCuraFunction(int scope, std::string_view name,
+    std::optional<formula::Value> callCuraFunction(std::string_view name,
                                                    const std::vector<formula::Value>& args);
     const SettingDefinition* extruderOwn(int extruder, std::string_view key) const;
     const SettingDefinition* anyDefinition(std::string_view key) const;

@@ -3,8 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
-
+#include "common/TextFile.h"
 #include "unit/settings/ScratchDir.h"
 
 namespace mixengine {
@@ -15,19 +14,12 @@ using unit::contains;
 using unit::inputErrorOf;
 using unit::ScratchDir;
 
-std::string readAll(const fs::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 TEST(OutputFile, WritesTheWholeTextAndNoTemporaryRemains) {
     ScratchDir dir;
     const fs::path target = dir.path() / "out.gcode";
     const std::string text = ";FLAVOR:Marlin\nG1 X1 Y2 E0.5\n" + std::string(100'000, 'x') + "\n";
     writeFileAtomically(target, text);
-    EXPECT_EQ(readAll(target), text);
+    EXPECT_EQ(readTextFile(target), text);
     EXPECT_EQ(dir.entries(), (std::vector<std::string>{"out.gcode"}));
 }
 
@@ -35,7 +27,7 @@ TEST(OutputFile, ReplacesAnExistingFile) {
     ScratchDir dir;
     const fs::path target = dir.write("out.gcode", "old content that is longer than the new one\n");
     writeFileAtomically(target, "new\n");
-    EXPECT_EQ(readAll(target), "new\n");
+    EXPECT_EQ(readTextFile(target), "new\n");
     writeFileAtomically(target, "");
     EXPECT_TRUE(fs::exists(target));
     EXPECT_EQ(fs::file_size(target), 0U);

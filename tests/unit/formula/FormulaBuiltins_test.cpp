@@ -7,21 +7,6 @@
 namespace mixengine::formula::test {
 namespace {
 
-struct Case {
-    const char* formula;
-    const char* repr;
-};
-
-void expectAll(std::initializer_list<Case> cases) {
-    for (const Case& c : cases) {
-        try {
-            EXPECT_EQ(repr(c.formula), c.repr) << "formula: " << c.formula;
-        } catch (const FormulaError& e) {
-            ADD_FAILURE() << "formula: " << c.formula << " threw " << e.what();
-        }
-    }
-}
-
 TEST(FormulaBuiltins, RoundIsBankersAndCorrectlyRounded) {
     expectAll({
         {"round(2.5)", "2"},

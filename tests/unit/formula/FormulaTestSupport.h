@@ -1,6 +1,9 @@
 #pragma once
 // Helpers for the formula tests: an Environment backed by maps, and one-call parse + evaluate.
+#include <gtest/gtest.h>
+
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
@@ -45,6 +48,23 @@ inline Value eval(std::string_view source) {
 /// ("3" is an int, "3.0" a float, "True" a bool, "'3'" a str).
 inline std::string repr(std::string_view source) {
     return toPythonRepr(eval(source));
+}
+
+/// A formula and the Python repr() of its result (checked against CPython 3).
+struct Case {
+    const char* formula;
+    const char* repr;
+};
+
+/// Expects every case's repr; a FormulaError is reported as a failure of that case.
+inline void expectAll(std::initializer_list<Case> cases) {
+    for (const Case& c : cases) {
+        try {
+            EXPECT_EQ(repr(c.formula), c.repr) << "formula: " << c.formula;
+        } catch (const FormulaError& e) {
+            ADD_FAILURE() << "formula: " << c.formula << " threw " << e.what();
+        }
+    }
 }
 
 }  // namespace mixengine::formula::test
