@@ -26,7 +26,10 @@ int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
         return runSettingsCommand(words, out, err);
     if (command == "demo")
         return runDemoCommand(words, out, err);
-    throw InputError("unknown command '" + command + "' (commands: help, slice, layers, settings, demo)");
+    if (command == "orient")
+        return runOrientCommand(words, out, err);
+    throw InputError("unknown command '" + command +
+                     "' (commands: help, slice, layers, settings, demo, orient)");
 }
 
 }  // namespace mixengine

@@ -142,6 +142,8 @@ ParsedSliceArgs parseSliceArguments(const std::vector<std::string>& args) {
             // --variant / --material / --quality / --intent NAME, --profiles (settings/profiles/)
         } else if (word == "--dump-layers") {
             state.parsed.dump_layers_dir = nextWord(args, i, word);
+        } else if (word == "--preview") {
+            state.parsed.preview_png = nextWord(args, i, word);
         } else {
             throw InputError("unknown option '" + word + "' (see 'mixengine help')");
         }

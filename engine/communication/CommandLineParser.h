@@ -12,9 +12,11 @@ namespace mixengine {
 
 /// `args` are the words after `slice`. Extra words understood besides CuraEngine's:
 ///   --dump-layers DIR   (recorded in `dump_layers_dir`)
+///   --preview FILE.png  (recorded in `preview_png`: a side view coloured by the mix, mixing/Preview.h)
 struct ParsedSliceArgs {
     SliceRequest request;
     std::string dump_layers_dir;
+    std::string preview_png;
 };
 
 ParsedSliceArgs parseSliceArguments(const std::vector<std::string>& args);

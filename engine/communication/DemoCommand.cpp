@@ -1,5 +1,6 @@
 // `mixengine demo [dir]`: a self-contained first run — writes a 20 mm cube as binary STL, slices
-// it with the installed Cura defaults and says where the G-code went.
+// it with the installed Cura defaults and a colour gradient (filament A up to 20 % of the height,
+// B from 80 %, E and B axis words) and says where the G-code and its preview went.
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -46,10 +47,16 @@ int runDemoCommand(const Words& args, std::ostream& out, std::ostream& err) {
     std::filesystem::create_directories(dir);
     const std::filesystem::path model = dir / "cube20.stl";
     const std::filesystem::path gcode = dir / "demo.gcode";
+    const std::filesystem::path preview = dir / "demo.png";
     writeFileAtomically(model, cubeStl(20.0f));
-    const int code = runSliceCommand({"-l", model.string(), "-o", gcode.string()}, out, err);
-    if (code == 0)
+    const int code = runSliceCommand(
+        {"-s", "mixing_mode=gradient", "-s", "mixing_gradient_start=20", "-s", "mixing_gradient_end=80", "-l",
+         model.string(), "-o", gcode.string(), "--preview", preview.string()},
+        out, err);
+    if (code == 0) {
         out << "G-code written to " << std::filesystem::absolute(gcode).string() << '\n';
+        out << "Gradient preview written to " << std::filesystem::absolute(preview).string() << '\n';
+    }
     return code;
 }
 

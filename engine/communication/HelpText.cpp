@@ -26,6 +26,8 @@ mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<va
   -o <file>     Write the G-code to <file> (written to a temporary file, renamed when complete).
                 Without -o the G-code goes to standard output.
   --dump-layers <dir>  Also write every layer's outlines as JSON and SVG into <dir>.
+  --preview <file.png>  Also write a side view of the print coloured by the filament mix (colour mixing:
+                -s mixing_mode=gradient|dual, mixing_* settings; seed aliases colorMode, colorA, colorB).
   --profiles    Stack Cura's profiles under the user's values, as Cura does: the machine's default
                 variant (nozzle), material, quality and intent. Implied by any of:
   --variant <name>  --material <name>  --quality <name>  --intent <name>
@@ -44,6 +46,16 @@ mixengine settings [-j <definition>] [--profiles ...] [-s key=value] [-e<N>] [--
 
 mixengine demo [<dir>]
 	Generate a 20 mm cube in <dir> (default: out), slice it, print where the G-code went.
+
+mixengine orient <partA> <partB> [--offset X,Y] [-j <definition>] [-s key=value] [--method sphere|grid]
+                 [--measure own_part|all_material] [--objective flat_face|low_height|low_overhang]
+                 [--resolution N] [--verify N] [--grid-step DEG] [-m<threads>]
+                 [--report out.json] [--plot out.png] [--write DIR]
+	Dual-nozzle orientation (seed 000): the rotation of the two parts (A printed by extruder 0,
+	B by extruder 1) that minimises V = vol(A ∩ (A+d)) + vol(B ∩ (B−d)), d = nozzle 1 − nozzle 0
+	(--offset, or machine_nozzle_offset_x/y of -j's extruder trains). Prints latitude, longitude,
+	spin about d, the matrix, V before/after (exact, CGAL) and the time. One part: nothing to
+	optimise (exit 0). In `slice`, -s dual_orientation_optimize=true runs the same pass.
 
 Settings are appended to the last supplied object:
 mixengine slice [general settings]

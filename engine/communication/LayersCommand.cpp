@@ -69,7 +69,7 @@ int runLayersCommand(const Words& args, std::ostream& out, std::ostream& err) {
     const Scene scene = prepareScene(request, log);
     const SceneGroup& group = scene.groups.front();
     const std::vector<SlicedLayer> layers =
-        mergeMeshes(sliceGroup(group, effectiveThreads(request.threads), log));
+        mergeMeshes(sliceGroup(group, effectiveThreads(request.threads), log, false));
 
     const std::filesystem::path dir = request.output;
     std::filesystem::create_directories(dir);

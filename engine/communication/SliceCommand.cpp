@@ -1,11 +1,13 @@
 // `mixengine slice`: CuraEngine-compatible command line → pipeline → G-code file.
 #include <chrono>
+#include <optional>
 
 #include "common/Log.h"
 #include "common/ParallelFor.h"
 #include "communication/CommandLineParser.h"
 #include "communication/Commands.h"
 #include "communication/OutputFile.h"
+#include "mixing/Preview.h"
 #include "pipeline/FffProcessor.h"
 
 namespace mixengine {
@@ -19,13 +21,21 @@ int runSliceCommand(const Words& args, std::ostream& out, std::ostream& err) {
     const int threads = effectiveThreads(request.threads);
 
     Scene scene = prepareScene(request, log);
-    GCodeOutput gcode = runPipeline(scene, threads, log);
+    std::optional<SidePreview> preview;  // --preview: the side view coloured by the mix
+    PlanObserver observe;
+    if (!parsed.preview_png.empty()) {
+        preview.emplace(SidePreview::forSettings(scene.machine.global));
+        observe = [&preview](const PrintPlan& plan) { preview->add(plan); };
+    }
+    GCodeOutput gcode = runPipeline(scene, threads, log, observe);
     const std::string text = gcode.joined();
     if (request.output.empty()) {
         out << text;
     } else {
         writeFileAtomically(request.output, text);
     }
+    if (preview)
+        writeFileAtomically(parsed.preview_png, preview->png());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log.info("Total time elapsed " + std::to_string(seconds) + "s");
     log.info("Print time (s): " + std::to_string(static_cast<long long>(gcode.summary.print_time_s)));

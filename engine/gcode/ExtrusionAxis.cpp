@@ -6,8 +6,11 @@
 
 namespace mixengine {
 
-std::string ExtrusionAxis::move(double delta_mm) {
-    // Filament bookkeeping: retractions and their primes cancel out.
+std::string formatUnits(long long units) {
+    return formatExtrusionMm(static_cast<double>(units) / kUnitsPerMm);
+}
+
+void ExtrusionAxis::account(double delta_mm) {
     if (delta_mm < 0) {
         retracted_mm_ += -delta_mm;
     } else {
@@ -15,6 +18,10 @@ std::string ExtrusionAxis::move(double delta_mm) {
         retracted_mm_ -= prime;
         total_mm_ += delta_mm - prime;
     }
+}
+
+std::string ExtrusionAxis::move(double delta_mm) {
+    account(delta_mm);
     std::string word(1, letter_);
     if (relative_) {
         // Write the delta between rounded positions so the sum of words equals the true total.
@@ -29,10 +36,20 @@ std::string ExtrusionAxis::move(double delta_mm) {
     return word;
 }
 
+long long ExtrusionAxis::moveUnits(double delta_mm) {
+    account(delta_mm);
+    position_mm_ += delta_mm;
+    const long long now = std::llround(position_mm_ * kUnitsPerMm);
+    const long long units = now - written_units_;
+    written_units_ = now;
+    return units;
+}
+
 std::string ExtrusionAxis::reset() {
     if (relative_)
         return "";
     position_mm_ = 0;
+    written_units_ = 0;
     return std::string("G92 ") + letter_ + "0";
 }
 

@@ -8,7 +8,47 @@
 namespace mixengine {
 
 GCodeExport::GCodeExport(const ExportParams& params)
-    : params_(params), axis_('E', params.relative_extrusion) {}
+    : params_(params),
+      dialect_(makeMixDialect(params.mixing, params.relative_extrusion)),
+      mix_(MixVector::only(0, params.mixing.channels)),
+      time_(params.kinematics) {}
+
+void GCodeExport::timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s) {
+    time_.addMove(
+        {micronsToMm(to.X - position_.X), micronsToMm(to.Y - position_.Y), micronsToMm(z - z_), e_mm},
+        speed_mm_s);
+}
+
+std::string GCodeExport::xyWords(const Point2& to) const {
+    return " X" + formatCoordMm(micronsToMm(to.X - offset_.X)) + " Y" +
+           formatCoordMm(micronsToMm(to.Y - offset_.Y));
+}
+
+void GCodeExport::selectExtruder(const ToolChange& change) {
+    if (change.extruder == extruder_)
+        return;
+    retract();
+    line("T" + std::to_string(change.extruder));
+    noteFilamentOfActiveExtruder();
+    extruder_ = change.extruder;
+    params_.filament_diameter_mm = change.filament_diameter_mm;
+    offset_ = change.nozzle_offset_um;
+    resetExtrusionAxis();
+}
+
+void GCodeExport::noteFilamentOfActiveExtruder() {
+    const std::size_t index = static_cast<std::size_t>(extruder_);
+    if (filament_by_extruder_.size() <= index)
+        filament_by_extruder_.resize(index + 1, 0.0);
+    const double total = dialect_->totalExtruded();
+    filament_by_extruder_[index] += total - total_at_last_change_;
+    total_at_last_change_ = total;
+}
+
+std::vector<double> GCodeExport::filamentPerExtruder() {
+    noteFilamentOfActiveExtruder();
+    return filament_by_extruder_;
+}
 
 void GCodeExport::line(std::string_view text) {
     out_ += text;
@@ -44,18 +84,15 @@ double GCodeExport::volumeToAxisMm(double volume_mm3) const {
 void GCodeExport::travel(const Point2& to, double speed_mm_s) {
     if (to == position_)
         return;
-    const double distance_mm =
-        std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
-    line("G0" + feedrateWord(speed_mm_s) + " X" + formatCoordMm(micronsToMm(to.X)) + " Y" +
-         formatCoordMm(micronsToMm(to.Y)));
+    line("G0" + feedrateWord(speed_mm_s) + xyWords(to));
+    timeMove(to, z_, 0, speed_mm_s);
     position_ = to;
-    elapsed_s_ += distance_mm / speed_mm_s;
 }
 
 void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
     if (z == z_)
         return;
-    elapsed_s_ += std::fabs(micronsToMm(z - z_)) / speed_mm_s;
+    timeMove(position_, z, 0, speed_mm_s);
     line("G0" + feedrateWord(speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z)));
     z_ = z;
 }
@@ -63,19 +100,23 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {
     if (retracted_)
         unretract();
-    const double distance_mm =
-        std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
-    line("G1" + feedrateWord(speed_mm_s) + " X" + formatCoordMm(micronsToMm(to.X)) + " Y" +
-         formatCoordMm(micronsToMm(to.Y)) + " " + axis_.move(volumeToAxisMm(volume_mm3)));
+    const double e = volumeToAxisMm(volume_mm3);
+    std::string before;
+    const std::string words = dialect_->extrude(e, mix_, before);
+    out_ += before;
+    line("G1" + feedrateWord(speed_mm_s) + xyWords(to) + " " + words);
+    timeMove(to, z_, e, speed_mm_s);
     position_ = to;
-    elapsed_s_ += distance_mm / speed_mm_s;
 }
 
 void GCodeExport::retract() {
     if (retracted_ || params_.retraction_amount_mm <= 0)
         return;
-    line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + axis_.move(-retractionOnAxis()));
-    elapsed_s_ += params_.retraction_amount_mm / params_.retraction_speed_mm_s;
+    std::string before;
+    const std::string words = dialect_->retract(retractionOnAxis(), before);
+    out_ += before;
+    line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + words);
+    timeMove(position_, z_, -params_.retraction_amount_mm, params_.retraction_speed_mm_s);
     retracted_ = true;
     if (params_.retraction_hop_um > 0)
         moveZ(z_ + params_.retraction_hop_um, params_.retraction_speed_mm_s);
@@ -86,13 +127,16 @@ void GCodeExport::unretract() {
         return;
     if (params_.retraction_hop_um > 0)
         moveZ(z_ - params_.retraction_hop_um, params_.retraction_speed_mm_s);
-    line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + axis_.move(retractionOnAxis()));
-    elapsed_s_ += params_.retraction_amount_mm / params_.prime_speed_mm_s;
+    std::string before;
+    const std::string words = dialect_->prime(retractionOnAxis(), before);
+    out_ += before;
+    line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + words);
+    timeMove(position_, z_, params_.retraction_amount_mm, params_.prime_speed_mm_s);
     retracted_ = false;
 }
 
 void GCodeExport::resetExtrusionAxis() {
-    std::string reset = axis_.reset();
+    std::string reset = dialect_->reset();
     if (!reset.empty())
         line(reset);
 }

@@ -1,12 +1,17 @@
 #pragma once
 // The G-code writer's core: turns moves into lines, keeping only what the text needs — the head
 // position, the feedrate last written, the extrusion axis and the retraction state. Formatting
-// lives in NumberFormat, E bookkeeping in ExtrusionAxis, headers in Header, time in the writer's
-// simple kinematic estimate (distance / speed, with a retraction time).
+// lives in NumberFormat, E bookkeeping in ExtrusionAxis, headers in Header, time in TimeEstimate
+// (acceleration and jerk). Coordinates are written relative to the active nozzle: a tool change
+// sets the nozzle offset that is subtracted from every X/Y (machine_use_extruder_offset_to_offset_coords).
+#include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "gcode/ExtrusionAxis.h"
+#include "gcode/MixDialect.h"
+#include "gcode/TimeEstimate.h"
 #include "geometry/Point.h"
 
 namespace mixengine {
@@ -19,6 +24,15 @@ struct ExportParams {
     double retraction_speed_mm_s = 25;
     double prime_speed_mm_s = 25;
     coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
+    Kinematics kinematics;
+    MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
+};
+
+/// A tool change: the new extruder's filament diameter and nozzle offset (subtracted from X/Y).
+struct ToolChange {
+    int extruder = 0;
+    double filament_diameter_mm = 2.85;
+    Point2 nozzle_offset_um{0, 0};
 };
 
 class GCodeExport {
@@ -34,11 +48,22 @@ class GCodeExport {
     void unretract();
     void resetExtrusionAxis();  ///< G92 E0 in absolute mode
     void setFan(double ratio);  ///< M106 S0..255 / M107
+    /// The mix of the following extrusions (mixing dialects only; ignored in single mode).
+    void setMix(const MixVector& mix) { mix_ = mix; }
+    /// Retracts, writes T<n>, resets E (absolute mode); filament is then counted for the new one.
+    void selectExtruder(const ToolChange& change);
+    /// Plans buffered moves to a stop (at layer ends) so the time read next is final.
+    void flushTime() { time_.flush(); }
 
     const std::string& text() const { return out_; }
     std::string takeText() { return std::move(out_); }
-    double elapsedSeconds() const { return elapsed_s_; }
-    double filamentUsedMm() const { return axis_.totalExtrudedMm(); }  ///< length, or mm³ when volumetric
+    double elapsedSeconds() const { return time_.totalSeconds(); }
+    double filamentUsedMm() const { return dialect_->totalExtruded(); }  ///< length, or mm³ when volumetric
+    /// Per mixing channel (one entry in single mode), length or mm³ when volumetric.
+    std::vector<double> filamentPerChannel() const { return dialect_->channelTotals(); }
+    /// Filament per extruder (index = extruder_nr), length or mm³ when volumetric.
+    std::vector<double> filamentPerExtruder();
+    int extruder() const { return extruder_; }
     coord_um z() const { return z_; }
     bool retracted() const { return retracted_; }
 
@@ -46,14 +71,22 @@ class GCodeExport {
     std::string feedrateWord(double speed_mm_s);
     double volumeToAxisMm(double volume_mm3) const;
     double retractionOnAxis() const;  ///< the retraction in the axis unit (mm, or mm³ when volumetric)
+    void timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s);
+    std::string xyWords(const Point2& to) const;  ///< " X.. Y..", relative to the active nozzle
+    void noteFilamentOfActiveExtruder();
 
     ExportParams params_;
-    ExtrusionAxis axis_;
+    std::unique_ptr<MixDialect> dialect_;  ///< extrusion words, retraction, resets, mix commands
+    MixVector mix_;
     std::string out_;
     Point2 position_{0, 0};
     coord_um z_ = 0;
     double feedrate_mm_s_ = -1;
-    double elapsed_s_ = 0;
+    TimeEstimate time_;
+    int extruder_ = 0;
+    Point2 offset_{0, 0};
+    std::vector<double> filament_by_extruder_;
+    double total_at_last_change_ = 0;
     bool retracted_ = false;
     double fan_ratio_ = -1;
 };

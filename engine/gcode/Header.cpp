@@ -1,5 +1,6 @@
 #include "gcode/Header.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -60,22 +61,77 @@ std::string filamentList(const PrintSummary& summary) {
     return text.empty() ? "0m" : text;
 }
 
-}  // namespace
-
-std::string makeHeader(const PrintSummary& summary) {
+std::string boundsLines(const PrintSummary& summary) {
     std::string h;
-    h += ";FLAVOR:" + flavorName(summary.flavor) + "\n";
-    h += ";TIME:" + std::to_string(static_cast<long long>(summary.print_time_s)) + "\n";
-    h += ";Filament used: " + filamentList(summary) + "\n";
-    h += ";Layer height: " + formatDecimal(summary.layer_height_mm, 3) + "\n";
     h += ";MINX:" + formatCoordMm(micronsToMm(summary.min.x)) + "\n";
     h += ";MINY:" + formatCoordMm(micronsToMm(summary.min.y)) + "\n";
     h += ";MINZ:" + formatCoordMm(micronsToMm(summary.min.z)) + "\n";
     h += ";MAXX:" + formatCoordMm(micronsToMm(summary.max.x)) + "\n";
     h += ";MAXY:" + formatCoordMm(micronsToMm(summary.max.y)) + "\n";
     h += ";MAXZ:" + formatCoordMm(micronsToMm(summary.max.z)) + "\n";
-    h += "\n;Generated with MixEngine " + summary.engine_version + "\n";
     return h;
+}
+
+std::string seconds(double s) {
+    return std::to_string(static_cast<long long>(s));
+}
+
+std::string griffinHeader(const PrintSummary& summary) {
+    std::string h = ";START_OF_HEADER\n;HEADER_VERSION:0.1\n;FLAVOR:Griffin\n";
+    h += ";GENERATOR.NAME:MixEngine\n;GENERATOR.VERSION:" + summary.engine_version + "\n";
+    h += ";TARGET_MACHINE.NAME:" + summary.machine_name + "\n";
+    for (std::size_t i = 0; i < summary.extruders.size(); ++i) {
+        const ExtruderHeader& e = summary.extruders[i];
+        if (!e.used)
+            continue;
+        const std::string train = ";EXTRUDER_TRAIN." + std::to_string(i) + ".";
+        h += train + "INITIAL_TEMPERATURE:" + formatDecimal(e.initial_temperature_c, 1) + "\n";
+        h += train + "MATERIAL.VOLUME_USED:" + std::to_string(std::llround(e.volume_used_mm3)) + "\n";
+        if (!e.material_guid.empty())
+            h += train + "MATERIAL.GUID:" + e.material_guid + "\n";
+        h += train + "NOZZLE.DIAMETER:" + formatDecimal(e.nozzle_diameter_mm, 3) + "\n";
+        h += train + "NOZZLE.NAME:" + e.nozzle_name + "\n";
+    }
+    h += ";BUILD_PLATE.TYPE:" + summary.build_plate_type + "\n";
+    h += ";BUILD_PLATE.INITIAL_TEMPERATURE:" + formatDecimal(summary.build_plate_temperature_c, 1) + "\n";
+    h += ";PRINT.TIME:" + seconds(summary.print_time_s) + "\n";
+    h += ";PRINT.GROUPS:" + std::to_string(summary.print_groups) + "\n";
+    h += ";PRINT.SIZE.MIN.X:" + formatCoordMm(micronsToMm(summary.min.x)) + "\n";
+    h += ";PRINT.SIZE.MIN.Y:" + formatCoordMm(micronsToMm(summary.min.y)) + "\n";
+    h += ";PRINT.SIZE.MIN.Z:" + formatCoordMm(micronsToMm(summary.min.z)) + "\n";
+    h += ";PRINT.SIZE.MAX.X:" + formatCoordMm(micronsToMm(summary.max.x)) + "\n";
+    h += ";PRINT.SIZE.MAX.Y:" + formatCoordMm(micronsToMm(summary.max.y)) + "\n";
+    h += ";PRINT.SIZE.MAX.Z:" + formatCoordMm(micronsToMm(summary.max.z)) + "\n";
+    h += ";END_OF_HEADER\n";
+    return h;
+}
+
+std::string ultiGCodeHeader(const PrintSummary& summary) {
+    std::string h = ";FLAVOR:UltiGCode\n;TIME:" + seconds(summary.print_time_s) + "\n";
+    for (std::size_t i = 0; i < std::max<std::size_t>(summary.extruders.size(), 2); ++i) {
+        const double volume = i < summary.extruders.size() ? summary.extruders[i].volume_used_mm3 : 0.0;
+        h += ";MATERIAL" + (i == 0 ? std::string() : std::to_string(i + 1)) + ":" +
+             std::to_string(std::llround(volume)) + "\n";
+    }
+    const double nozzle = summary.extruders.empty() ? 0.4 : summary.extruders.front().nozzle_diameter_mm;
+    h += ";NOZZLE_DIAMETER:" + formatDecimal(nozzle, 3) + "\n";
+    return h + boundsLines(summary);
+}
+
+}  // namespace
+
+std::string makeHeader(const PrintSummary& summary) {
+    const std::string generated = "\n;Generated with MixEngine " + summary.engine_version + "\n";
+    if (summary.flavor == Flavor::Griffin)
+        return griffinHeader(summary) + generated;
+    if (summary.flavor == Flavor::UltiGCode)
+        return ultiGCodeHeader(summary) + generated;
+    std::string h;
+    h += ";FLAVOR:" + flavorName(summary.flavor) + "\n";
+    h += ";TIME:" + std::to_string(static_cast<long long>(summary.print_time_s)) + "\n";
+    h += ";Filament used: " + filamentList(summary) + "\n";
+    h += ";Layer height: " + formatDecimal(summary.layer_height_mm, 3) + "\n";
+    return h + boundsLines(summary) + generated;
 }
 
 }  // namespace mixengine

@@ -14,6 +14,16 @@ enum class Flavor { Marlin, MarlinVolumetric, RepRap, Griffin, UltiGCode, Other 
 Flavor flavorFromSetting(const std::string& text);
 std::string flavorName(Flavor flavor);  ///< ";FLAVOR:" text: "Marlin", "RepRap", ...
 
+/// What Griffin and UltiGCode headers tell of each extruder train.
+struct ExtruderHeader {
+    double initial_temperature_c = 0;
+    double nozzle_diameter_mm = 0.4;
+    std::string nozzle_name = "unknown";
+    std::string material_guid;  ///< empty: not written
+    double volume_used_mm3 = 0;
+    bool used = true;
+};
+
 struct PrintSummary {
     Flavor flavor = Flavor::Marlin;
     double print_time_s = 0;
@@ -21,8 +31,16 @@ struct PrintSummary {
     double layer_height_mm = 0.1;
     Point3 min{}, max{};  ///< bounds of the extruded moves, microns
     std::string engine_version;
+    // Griffin / UltiGCode only:
+    std::string machine_name = "Unknown";
+    std::vector<ExtruderHeader> extruders;
+    std::string build_plate_type = "glass";
+    double build_plate_temperature_c = 0;
+    int print_groups = 1;
 };
 
+/// The header for summary.flavor: Griffin's ;START_OF_HEADER block, UltiGCode's ;MATERIAL: lines,
+/// or the Marlin/RepRap lines (;FLAVOR:, ;TIME:, ;Filament used:, ;Layer height:, bounds).
 std::string makeHeader(const PrintSummary& summary);
 
 }  // namespace mixengine

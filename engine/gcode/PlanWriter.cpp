@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "gcode/NumberFormat.h"
+
 namespace mixengine {
 namespace {
 
@@ -11,7 +13,38 @@ void extendBounds(WrittenLayers& out, const Point2& p, coord_um z) {
     out.max = {std::max(out.max.x, p.X), std::max(out.max.y, p.Y), std::max(out.max.z, z)};
 }
 
-void writeStep(const PlanStep& step, const PrintPlan& plan, GCodeExport& gcode, WrittenLayers& out) {
+void writeCode(const std::string& code, GCodeExport& gcode) {
+    if (code.empty())
+        return;
+    gcode.line(code.back() == '\n' ? std::string_view(code).substr(0, code.size() - 1)
+                                   : std::string_view(code));
+}
+
+void changeExtruder(int extruder, const PlanWriterParams& params, GCodeExport& gcode) {
+    const auto index = static_cast<std::size_t>(extruder);
+    const auto current = static_cast<std::size_t>(gcode.extruder());
+    if (current < params.extruders.size()) {
+        const ExtruderOutput& old = params.extruders[current];
+        writeCode(old.end_code, gcode);
+        if (old.standby_temperature_c > 0)
+            gcode.line("M104 T" + std::to_string(current) + " S" +
+                       formatDecimal(old.standby_temperature_c, 1));
+    }
+    ToolChange change;
+    change.extruder = extruder;
+    if (index < params.extruders.size())
+        change = params.extruders[index].change;
+    gcode.selectExtruder(change);
+    if (index < params.extruders.size()) {
+        const ExtruderOutput& next = params.extruders[index];
+        if (next.print_temperature_c > 0)
+            gcode.line("M109 S" + formatDecimal(next.print_temperature_c, 1));
+        writeCode(next.start_code, gcode);
+    }
+}
+
+void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterParams& params,
+               GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
             if (step.retract)
@@ -19,6 +52,8 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, GCodeExport& gcode, 
             gcode.travel(step.to, step.speed_mm_s);
             break;
         case PlanStep::Kind::Extrude:
+            if (step.mix >= 0)  // colour mixing (mixing/MixingPass.h)
+                gcode.setMix(plan.mixes[static_cast<std::size_t>(step.mix)]);
             gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);
             extendBounds(out, step.to, gcode.z());
             break;
@@ -32,6 +67,9 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, GCodeExport& gcode, 
             break;
         case PlanStep::Kind::SetFan:
             gcode.setFan(step.fan_ratio);
+            break;
+        case PlanStep::Kind::SetExtruder:
+            changeExtruder(step.extruder, params, gcode);
             break;
     }
 }
@@ -47,7 +85,8 @@ WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, G
             gcode.resetExtrusionAxis();
         gcode.moveZ(layer.z, params.layer_change_speed_mm_s);
         for (const PlanStep& step : layer.steps)
-            writeStep(step, plan, gcode, out);
+            writeStep(step, plan, params, gcode, out);
+        gcode.flushTime();
         char elapsed[64];
         std::snprintf(elapsed, sizeof elapsed, "TIME_ELAPSED:%.6f", gcode.elapsedSeconds());
         gcode.comment(elapsed);

@@ -1,14 +1,15 @@
 #include "pipeline/FffProcessor.h"
 
 #include <algorithm>
-#include <cmath>
 
-#include "common/Error.h"
-#include "gcode/GCodeExport.h"
-#include "gcode/PlanWriter.h"
 #include "gcode/StartEndCode.h"
+#include "mixing/MixingPass.h"
+#include "mixing/MixingSettings.h"
+#include "pipeline/EmptyLayers.h"
+#include "pipeline/OutputParams.h"
 #include "planning/PrintPlanner.h"
-#include "toolpaths/MeshToolpaths.h"
+#include "slicing/OutlineCleanup.h"
+#include "toolpaths/GroupToolpaths.h"
 
 namespace mixengine {
 namespace {
@@ -22,52 +23,29 @@ SlicingTolerance toleranceOf(const Settings& s) {
     return SlicingTolerance::Middle;
 }
 
-ExportParams exportParams(const Scene& scene) {
-    const Settings& global = scene.machine.global;
-    const Settings& e0 = scene.machine.extruders.front();
-    ExportParams p;
-    p.filament_diameter_mm = e0.millimetres("material_diameter");
-    p.volumetric = flavorFromSetting(global.text("machine_gcode_flavor")) == Flavor::MarlinVolumetric;
-    p.relative_extrusion = global.boolean("relative_extrusion");
-    p.retraction_amount_mm = e0.boolean("retraction_enable") ? e0.millimetres("retraction_amount") : 0.0;
-    p.retraction_speed_mm_s = e0.velocityMmPerS("retraction_retract_speed");
-    p.prime_speed_mm_s = e0.velocityMmPerS("retraction_prime_speed");
-    p.retraction_hop_um = e0.boolean("retraction_hop_enabled") ? e0.lengthMicrons("retraction_hop") : 0;
-    return p;
-}
-
-PrintPlan planGroup(const SceneGroup& group, const SlicedGroup& sliced, int threads) {
-    std::vector<MeshToolpathsInput> inputs;
+PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
+                    PlannerState& state, Log& log) {
+    ToolpathInput input;
+    input.global = &group.settings;
+    input.extruders = &scene.machine.extruders;
+    input.heights = sliced.heights;
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
-        MeshToolpathsInput input;
-        input.settings = &group.meshes[m].settings;
-        input.name = group.meshes[m].mesh.name;
-        input.layers = generateMeshToolpaths(sliced.meshes[m], group.meshes[m].settings, threads);
-        inputs.push_back(std::move(input));
+        input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m]});
     }
-    return planPrint(sliced.heights, inputs, group.settings);
-}
-
-double perimeterUm(const Path& path) {
-    double sum = 0;
-    for (std::size_t i = 0; i < path.size(); ++i) {
-        const Point2& a = path[i];
-        const Point2& b = path[(i + 1) % path.size()];
-        sum += std::hypot(static_cast<double>(b.X - a.X), static_cast<double>(b.Y - a.Y));
+    GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
+    std::vector<Paths> comb_areas(sliced.heights.size());
+    for (const auto& mesh_layers : sliced.meshes) {
+        for (std::size_t i = 0; i < mesh_layers.size(); ++i)
+            comb_areas[i].insert(comb_areas[i].end(), mesh_layers[i].outlines.begin(),
+                                 mesh_layers[i].outlines.end());
     }
-    return sum;
-}
-
-/// As CuraEngine: loops shorter than minimum_polygon_circumference are dropped. The layer count
-/// stays what the layer heights say, even when the top layers end up empty. (Outline
-/// simplification by meshfix_maximum_resolution / _deviation is left to the toolpath work.)
-void cleanOutlines(SlicedGroup& sliced, coord_um minimum_circumference_um) {
-    for (auto& mesh : sliced.meshes) {
-        for (SlicedLayer& layer : mesh) {
-            std::erase_if(layer.outlines,
-                          [&](const Path& p) { return perimeterUm(p) < double(minimum_circumference_um); });
-        }
+    std::vector<LayerZ> heights = sliced.heights;
+    const std::size_t empty = leadingEmptyLayers(toolpaths, sliced.meshes);
+    if (empty > 0) {
+        log.info("removing " + std::to_string(empty) + " empty layer(s) at the bottom of the print");
+        dropLeadingLayers(empty, toolpaths, heights, comb_areas);
     }
+    return planPrint(heights, toolpaths, group.settings, scene.machine.extruders, comb_areas, state);
 }
 
 }  // namespace
@@ -79,7 +57,7 @@ std::string GCodeOutput::joined() const {
     return text + suffix;
 }
 
-SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log) {
+SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simplify) {
     SlicedGroup sliced;
     coord_um max_z = 0;
     for (const SceneMesh& m : group.meshes)
@@ -92,15 +70,20 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log) {
     options.threads = threads;
     for (const SceneMesh& m : group.meshes)
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
-    cleanOutlines(sliced, s.lengthMicrons("minimum_polygon_circumference"));
+    OutlineCleanupParams cleanup;
+    cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
+    cleanup.maximum_resolution_um = simplify ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
+    cleanup.maximum_deviation_um = simplify ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
+    for (auto& layers : sliced.meshes)
+        cleanOutlines(layers, cleanup, threads);
     return sliced;
 }
 
-GCodeOutput runPipeline(const Scene& scene, int threads, Log& log) {
+GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan) {
     const Settings& global = scene.machine.global;
     GCodeExport gcode(exportParams(scene));
-    PlanWriterParams writer;
-    writer.layer_change_speed_mm_s = global.velocityMmPerS("speed_z_hop");
+    const PlanWriterParams writer = writerParams(scene);
+    PlannerState state;
 
     GCodeOutput output;
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
@@ -112,7 +95,10 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log) {
         log.progress("slicing", 0.0);
         SlicedGroup sliced = sliceGroup(group, threads, log);
         log.progress("toolpaths", 0.3);
-        PrintPlan plan = planGroup(group, sliced, threads);
+        PrintPlan plan = planGroup(scene, group, sliced, threads, state, log);
+        assignMixes(plan, group, log);
+        if (on_plan)
+            on_plan(plan);
         for (PlannedLayer& layer : plan.layers)
             layer.index += layer_offset;
         layer_offset += static_cast<int>(plan.layers.size());
@@ -130,10 +116,12 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log) {
     if (output.layer_chunks.empty())
         output.summary.min = output.summary.max = {};
 
-    const bool relative = global.boolean("relative_extrusion");
+    const bool relative = relativeExtrusion(global);
     output.summary.flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
     output.summary.print_time_s = gcode.elapsedSeconds();
-    output.summary.filament_per_extruder = {gcode.filamentUsedMm()};
+    output.summary.filament_per_extruder = gcode.filamentPerExtruder();
+    output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
+    describeExtruders(scene, exportParams(scene).volumetric, output.summary);
     output.summary.layer_height_mm = global.millimetres("layer_height");
     output.summary.engine_version = MIXENGINE_VERSION;
     output.prefix = makeHeader(output.summary) + startCode(global, scene.machine.extruders.front(), relative);

@@ -1,12 +1,14 @@
 #pragma once
 // The pipeline driver (CuraEngine's name for the role): Scene → slices → toolpaths → plan →
 // G-code. Each stage is a function of the previous stage's values and the resolved settings.
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "common/Log.h"
 #include "gcode/Header.h"
 #include "pipeline/Scene.h"
+#include "planning/LayerPlan.h"
 #include "slicing/Slicer.h"
 
 namespace mixengine {
@@ -26,9 +28,13 @@ struct GCodeOutput {
 };
 
 /// Layer heights and outlines of every mesh of `group`.
-SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log);
+/// `simplify` false keeps the raw slices (only loops under minimum_polygon_circumference go).
+SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simplify = true);
+
+/// Sees each mesh group's plan after planning and mixing (e.g. the --preview picture).
+using PlanObserver = std::function<void(const PrintPlan&)>;
 
 /// The whole print.
-GCodeOutput runPipeline(const Scene& scene, int threads, Log& log);
+GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan = {});
 
 }  // namespace mixengine

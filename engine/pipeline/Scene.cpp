@@ -5,6 +5,7 @@
 #include "common/Error.h"
 #include "mesh/MeshBuilder.h"
 #include "mesh/ModelReader.h"
+#include "orient/OrientSettings.h"
 #include "settings/FrontendValues.h"
 #include "settings/profiles/ProfileSelector.h"
 
@@ -63,8 +64,7 @@ void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshI
             continue;
         }
         mesh.name = name;
-        placeMesh(mesh, group.settings, settings);
-        group.meshes.push_back({std::move(mesh), std::move(settings)});
+        group.meshes.push_back({std::move(mesh), std::move(settings)});  // placed by prepareScene
     }
 }
 
@@ -93,8 +93,17 @@ Scene prepareSettings(const SliceRequest& request) {
 Scene prepareScene(const SliceRequest& request, Log& log) {
     Scene scene = prepareSettings(request);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
+        SceneGroup& group = scene.groups[g];
         for (const MeshInput& input : request.groups[g].meshes)
-            addMeshes(scene, request.user, input, scene.groups[g], log);
+            addMeshes(scene, request.user, input, group, log);
+        // Dual-nozzle orientation pass (orient/OrientSettings.h): before placement.
+        std::vector<std::pair<Mesh*, int>> by_extruder;
+        for (SceneMesh& m : group.meshes)
+            by_extruder.emplace_back(
+                &m.mesh, m.settings.has("extruder_nr") ? m.settings.extruderIndex("extruder_nr") : 0);
+        orient::orientForDualNozzle(by_extruder, group.settings, scene.machine.extruders, log);
+        for (SceneMesh& m : group.meshes)
+            placeMesh(m.mesh, group.settings, m.settings);
     }
     bool any = false;
     for (const SceneGroup& group : scene.groups)

@@ -5,17 +5,19 @@
 #include <vector>
 
 #include "geometry/Point.h"
+#include "mixing/MixVector.h"
 #include "toolpaths/ExtrusionPath.h"
 
 namespace mixengine {
 
 struct PlanStep {
     enum class Kind {
-        Travel,      ///< move without extruding to `to`; `retract` says whether to retract first
-        Extrude,     ///< move to `to` while extruding `volume_mm3`
-        SetFeature,  ///< ;TYPE: marker
-        SetMesh,     ///< ;MESH: marker (mesh_index −1 = NONMESH)
-        SetFan,      ///< fan to `fan_ratio` (0..1)
+        Travel,       ///< move without extruding to `to`; `retract` says whether to retract first
+        Extrude,      ///< move to `to` while extruding `volume_mm3`
+        SetFeature,   ///< ;TYPE: marker
+        SetMesh,      ///< ;MESH: marker (mesh_index −1 = NONMESH)
+        SetFan,       ///< fan to `fan_ratio` (0..1)
+        SetExtruder,  ///< tool change to `extruder`
     };
     Kind kind = Kind::Travel;
     Point2 to{};
@@ -25,18 +27,20 @@ struct PlanStep {
     Feature feature = Feature::Fill;
     int mesh_index = -1;
     double fan_ratio = 0;
+    int extruder = 0;
+    int mix = -1;  ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
 };
 
 struct PlannedLayer {
     int index = 0;
     coord_um z = 0;  ///< nozzle height
-    int extruder = 0;
     std::vector<PlanStep> steps;
 };
 
 struct PrintPlan {
     std::vector<PlannedLayer> layers;
     std::vector<std::string> mesh_names;  ///< for ;MESH: markers
+    std::vector<MixVector> mixes;         ///< filled by the mixing stage; empty in single mode
 };
 
 }  // namespace mixengine

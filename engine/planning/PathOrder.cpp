@@ -14,6 +14,10 @@ double distanceUm(const Point2& a, const Point2& b) {
 std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& best_distance) {
     best_distance = std::numeric_limits<double>::max();
     std::size_t best = 0;
+    if (path.closed && path.fixed_start) {
+        best_distance = distanceUm(head, path.points.front());
+        return 0;
+    }
     if (path.closed) {
         for (std::size_t i = 0; i < path.points.size(); ++i) {
             double d = distanceUm(head, path.points[i]);
@@ -28,16 +32,32 @@ std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& bes
     return to_front <= to_back ? 0 : path.points.size() - 1;
 }
 
+/// A combed travel (through the points of the comb route, no retraction) where the comb boundary
+/// allows one, else a straight travel that retracts when longer than retraction_min_travel.
+void appendTravel(const Point2& from, const Point2& to, const TravelParams& params,
+                  std::vector<PlanStep>& steps) {
+    PlanStep travel;
+    travel.kind = PlanStep::Kind::Travel;
+    travel.speed_mm_s = params.travel_speed_mm_s;
+    const bool long_travel = distanceUm(from, to) > static_cast<double>(params.retraction_min_travel_um);
+    if (long_travel && params.comb) {
+        if (std::optional<Path> route = params.comb->route(from, to)) {
+            for (const Point2& point : *route) {
+                travel.to = point;
+                steps.push_back(travel);
+            }
+            return;
+        }
+    }
+    travel.to = to;
+    travel.retract = params.retraction_enable && long_travel;
+    steps.push_back(travel);
+}
+
 void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& params, Point2& head,
               std::vector<PlanStep>& steps) {
     const Point2& first = path.points[start];
-    PlanStep travel;
-    travel.kind = PlanStep::Kind::Travel;
-    travel.to = first;
-    travel.speed_mm_s = params.travel_speed_mm_s;
-    travel.retract = params.retraction_enable &&
-                     distanceUm(head, first) > static_cast<double>(params.retraction_min_travel_um);
-    steps.push_back(travel);
+    appendTravel(head, first, params, steps);
     head = first;
 
     const std::size_t n = path.points.size();

@@ -3,10 +3,12 @@
 //
 // Greedy nearest neighbour from the current head position: a closed loop may start at any of its
 // vertices (the nearest is taken), an open line at either end. Travels longer than
-// retraction_min_travel retract when retraction is enabled.
+// retraction_min_travel retract when retraction is enabled, unless they stay inside the comb
+// boundary (combing).
 #include <optional>
 #include <vector>
 
+#include "planning/CombBoundary.h"
 #include "planning/LayerPlan.h"
 #include "toolpaths/ExtrusionPath.h"
 
@@ -17,6 +19,7 @@ struct TravelParams {
     bool retraction_enable = true;
     coord_um retraction_min_travel_um = 1500;
     coord_um layer_thickness_um = 200;
+    const CombBoundary* comb = nullptr;  ///< travels that stay inside it are not retracted
 };
 
 /// Appends the steps for `paths` (one group, printed together) to `steps`, starting from and

@@ -1,26 +1,34 @@
 #include "planning/PrintPlanner.h"
 
+#include <algorithm>
 #include <optional>
+#include <set>
 
+#include "planning/Cooling.h"
 #include "planning/PathOrder.h"
 
 namespace mixengine {
 
-double fanRatioForLayer(const Settings& s, int layer) {
-    if (!s.boolean("cool_fan_enabled"))
-        return 0;
-    const double first = s.ratio("cool_fan_speed_0");
-    const double regular = s.ratio("cool_fan_speed_min");
-    const int full = static_cast<int>(s.integer("cool_fan_full_layer")) - 1;  // 0-based layer at full speed
-    if (layer >= full)
-        return regular;
-    return first + (regular - first) * static_cast<double>(layer) / static_cast<double>(full);
-}
-
 namespace {
 
-TravelParams travelParams(const Settings& s, int layer, coord_um thickness) {
+void collectExtruders(const std::vector<ExtrusionPath>& paths, std::set<int>& used) {
+    for (const ExtrusionPath& path : paths)
+        used.insert(path.extruder);
+}
+
+std::vector<ExtrusionPath> ofExtruder(const std::vector<ExtrusionPath>& paths, int extruder) {
+    std::vector<ExtrusionPath> selected;
+    for (const ExtrusionPath& path : paths) {
+        if (path.extruder == extruder)
+            selected.push_back(path);
+    }
+    return selected;
+}
+
+TravelParams travelParams(const Settings& s, int layer, coord_um thickness, const CombBoundary* comb) {
     TravelParams p;
+    if (!s.has("retraction_combing") || s.text("retraction_combing") != "off")
+        p.comb = comb;
     p.travel_speed_mm_s = s.velocityMmPerS(layer == 0 ? "speed_travel_layer_0" : "speed_travel");
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
@@ -28,43 +36,110 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness) {
     return p;
 }
 
-void planMeshLayer(const MeshToolpathsInput& mesh, int mesh_index, int layer, coord_um thickness,
-                   Point2& head, PlannedLayer& planned) {
-    const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(layer)];
-    if (groups.inner_walls.empty() && groups.outer_walls.empty() && groups.skin.empty() &&
-        groups.infill.empty())
-        return;
+void addMeshMarker(int mesh_index, std::vector<PlanStep>& steps) {
     PlanStep marker;
     marker.kind = PlanStep::Kind::SetMesh;
     marker.mesh_index = mesh_index;
-    planned.steps.push_back(marker);
-    const TravelParams travel = travelParams(*mesh.settings, layer, thickness);
+    steps.push_back(marker);
+}
+
+struct LayerContext {
+    int layer = 0;
+    coord_um thickness = 0;
+    int extruder = 0;
+    const Settings* extruder_settings = nullptr;
+    const CombBoundary* comb = nullptr;
+};
+
+void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
+                   PlannedLayer& planned) {
+    const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(ctx.layer)];
+    const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb);
     std::optional<Feature> feature;
+    bool marked = false;
     for (const auto* group : {&groups.inner_walls, &groups.outer_walls, &groups.skin, &groups.infill}) {
-        appendOrderedPaths(*group, travel, head, feature, planned.steps);
+        std::vector<ExtrusionPath> selected = ofExtruder(*group, ctx.extruder);
+        if (selected.empty())
+            continue;
+        if (!marked)
+            addMeshMarker(mesh_index, planned.steps);
+        marked = true;
+        appendOrderedPaths(std::move(selected), travel, head, feature, planned.steps);
     }
+}
+
+void planNonMesh(const std::vector<ExtrusionPath>& paths, const LayerContext& ctx, Point2& head,
+                 PlannedLayer& planned) {
+    std::vector<ExtrusionPath> selected = ofExtruder(paths, ctx.extruder);
+    if (selected.empty())
+        return;
+    addMeshMarker(-1, planned.steps);
+    std::optional<Feature> feature;
+    appendOrderedPaths(std::move(selected),
+                       travelParams(*ctx.extruder_settings, ctx.layer, ctx.thickness, nullptr), head, feature,
+                       planned.steps);
 }
 
 }  // namespace
 
-PrintPlan planPrint(const std::vector<LayerZ>& heights, const std::vector<MeshToolpathsInput>& meshes,
-                    const Settings& global) {
+std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active) {
+    std::set<int> used;
+    if (layer == 0)
+        collectExtruders(toolpaths.adhesion, used);
+    if (layer < toolpaths.support.size())
+        collectExtruders(toolpaths.support[layer], used);
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        const MeshLayerGroups& g = mesh.layers[layer];
+        for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+            collectExtruders(*group, used);
+    }
+    std::vector<int> order;
+    if (used.erase(active))
+        order.push_back(active);
+    order.insert(order.end(), used.begin(), used.end());
+    return order;
+}
+
+PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& toolpaths,
+                    const Settings& global, const std::vector<Settings>& extruders,
+                    const std::vector<Paths>& comb_areas, PlannerState& state) {
     PrintPlan plan;
-    for (const MeshToolpathsInput& mesh : meshes)
+    for (const MeshToolpaths& mesh : toolpaths.meshes)
         plan.mesh_names.push_back(mesh.name);
-    Point2 head{0, 0};
+    const CoolingParams cooling = coolingParams(global);
     for (std::size_t i = 0; i < heights.size(); ++i) {
+        const Point2 layer_start = state.head;
+        const CombBoundary comb = i < comb_areas.size() ? CombBoundary(comb_areas[i]) : CombBoundary();
         PlannedLayer planned;
         planned.index = static_cast<int>(i);
         planned.z = heights[i].print_z;
         PlanStep fan;
         fan.kind = PlanStep::Kind::SetFan;
-        fan.fan_ratio = fanRatioForLayer(global, planned.index);
         planned.steps.push_back(fan);
-        const coord_um thickness = heights[i].print_z - heights[i].bottom_z;
-        for (std::size_t m = 0; m < meshes.size(); ++m) {
-            planMeshLayer(meshes[m], static_cast<int>(m), planned.index, thickness, head, planned);
+        for (int extruder : extruderOrder(toolpaths, i, state.extruder)) {
+            if (extruder != state.extruder) {
+                PlanStep change;
+                change.kind = PlanStep::Kind::SetExtruder;
+                change.extruder = extruder;
+                planned.steps.push_back(change);
+                state.extruder = extruder;
+            }
+            const std::size_t train =
+                std::min<std::size_t>(static_cast<std::size_t>(extruder), extruders.size() - 1);
+            const LayerContext ctx{planned.index, heights[i].print_z - heights[i].bottom_z, extruder,
+                                   &extruders[train], &comb};
+            if (i < toolpaths.prime_tower.size())
+                planNonMesh(toolpaths.prime_tower[i], ctx, state.head, planned);
+            if (i < toolpaths.ooze_shield.size())
+                planNonMesh(toolpaths.ooze_shield[i], ctx, state.head, planned);
+            if (i == 0)
+                planNonMesh(toolpaths.adhesion, ctx, state.head, planned);
+            if (i < toolpaths.support.size())
+                planNonMesh(toolpaths.support[i], ctx, state.head, planned);
+            for (std::size_t m = 0; m < toolpaths.meshes.size(); ++m)
+                planMeshLayer(toolpaths.meshes[m], static_cast<int>(m), ctx, state.head, planned);
         }
+        applyCooling(planned, layer_start, cooling);
         plan.layers.push_back(std::move(planned));
     }
     return plan;

@@ -1,26 +1,29 @@
 #pragma once
-// Planning: the toolpaths of every mesh on every layer become ordered steps per layer — mesh by
-// mesh, inner walls, outer walls, skin, infill — with travel, retraction and the fan.
+// Planning: the toolpaths of a mesh group become ordered steps per layer. On each layer the
+// extruders print one after the other, the one already active first (fewest tool changes); each
+// extruder prints its prime tower and ooze shield, the skirt/brim (layer 0), its support, then
+// every mesh in order — inner walls, outer walls, skin, infill — with travel, retraction and the fan.
 #include <vector>
 
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
 #include "slicing/LayerHeights.h"
-#include "toolpaths/MeshToolpaths.h"
+#include "toolpaths/GroupToolpaths.h"
 
 namespace mixengine {
 
-struct MeshToolpathsInput {
-    const Settings* settings = nullptr;
-    std::string name;
-    std::vector<MeshLayerGroups> layers;  ///< index = layer
+struct PlannerState {
+    Point2 head{0, 0};
+    int extruder = 0;  ///< the active extruder (carried from group to group)
 };
 
-PrintPlan planPrint(const std::vector<LayerZ>& heights, const std::vector<MeshToolpathsInput>& meshes,
-                    const Settings& global);
+/// `comb_areas[layer]`: where travel may go without retraction (the layer's outlines); empty or
+/// retraction_combing "off" → every long travel retracts.
+PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& toolpaths,
+                    const Settings& global, const std::vector<Settings>& extruders,
+                    const std::vector<Paths>& comb_areas, PlannerState& state);
 
-/// Fan ratio (0..1) on `layer`: cool_fan_speed_0 on the first layer, ramping to cool_fan_speed_min
-/// at cool_fan_full_layer; 0 when cool_fan_enabled is off.
-double fanRatioForLayer(const Settings& settings, int layer);
+/// The extruders used on `layer`, in print order: `active` first if used, then ascending.
+std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active);
 
 }  // namespace mixengine

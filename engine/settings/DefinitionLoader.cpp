@@ -151,14 +151,43 @@ void mergeFile(const fs::path& file, const json& doc, MergedChain& merged) {
     }
 }
 
-MergedChain mergeChain(const std::vector<std::pair<fs::path, json>>& chain) {
-    MergedChain merged;
-    for (const auto& [file, doc] : chain) {
-        try {
-            mergeFile(file, doc, merged);
-        } catch (const json::exception& e) {
-            throw InputError(file.string() + ": unexpected JSON content: " + e.what());
+void mergeChecked(const fs::path& file, const json& doc, MergedChain& merged) {
+    try {
+        mergeFile(file, doc, merged);
+    } catch (const json::exception& e) {
+        throw InputError(file.string() + ": unexpected JSON content: " + e.what());
+    }
+}
+
+/// MixEngine's own settings (mixing, orientation): every *.def.json in a `mixengine` folder of
+/// the search path; for one file name the first folder wins.
+std::vector<fs::path> extensionFiles(const std::vector<fs::path>& search) {
+    std::map<std::string, fs::path> by_name;
+    for (const fs::path& dir : search) {
+        std::error_code ec;
+        for (const auto& entry : fs::directory_iterator(dir / "mixengine", ec)) {
+            const std::string name = entry.path().filename().string();
+            if (name.ends_with(".def.json"))
+                by_name.emplace(name, entry.path());
         }
+    }
+    std::vector<fs::path> files;
+    for (const auto& [name, path] : by_name)
+        files.push_back(path);
+    return files;
+}
+
+/// Merges the chain root first; when `extensions` is given (machine chains), MixEngine's own
+/// settings come right after the root, so that machine definitions can override them.
+MergedChain mergeChain(const std::vector<std::pair<fs::path, json>>& chain,
+                       const std::vector<fs::path>& extensions = {}) {
+    MergedChain merged;
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+        mergeChecked(chain[i].first, chain[i].second, merged);
+        if (i != 0)
+            continue;
+        for (const fs::path& file : extensions)
+            mergeChecked(file, readJsonFile(file), merged);
     }
     return merged;
 }
@@ -202,7 +231,7 @@ std::vector<fs::path> defaultSearchPath(const char* env_search_path) {
 
 DefinitionSet loadDefinitionSet(const std::string& name_or_path, const std::vector<fs::path>& search) {
     auto chain = loadChain(name_or_path, search);
-    MergedChain merged = mergeChain(chain);
+    MergedChain merged = mergeChain(chain, extensionFiles(search));
     DefinitionSet set;
     set.machine_id = chain.back().first.filename().string();
     if (set.machine_id.ends_with(".def.json"))

@@ -5,8 +5,21 @@
 #include <ctime>
 #include <regex>
 
+#include "common/Error.h"
+
 namespace mixengine {
 namespace {
+
+/// Seed 001's colorMode values: 0 single, 1 dual, 2 gradient (the names are accepted as well).
+std::string mixingModeOfAlias(const std::string& alias, const std::string& value) {
+    static const char* const kModes[] = {"single", "dual", "gradient"};
+    for (int i = 0; i < 3; ++i) {
+        if (value == kModes[i] || value == std::to_string(i) || value == std::to_string(i) + ".0")
+            return kModes[i];
+    }
+    throw InputError("setting '" + alias + "' (alias of mixing_mode): value '" + value +
+                     "' is not 0, 1, 2, single, dual or gradient");
+}
 
 std::string withoutComments(const std::string& code) {
     static const std::regex comment(";.+?(\n|$)");
@@ -118,6 +131,42 @@ void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
         }
         extruder = Settings(extruder.scope(), withValues(extruder, own));
     }
+}
+
+SettingValues withCanonicalKeys(const SettingValues& values) {
+    static const std::pair<const char*, const char*> kAliases[] = {
+        {"colorMode", "mixing_mode"},
+        {"colorMixing", "mixing_mode"},
+        {"colorA", "mixing_gradient_start"},
+        {"colorB", "mixing_gradient_end"},
+    };
+    SettingValues out = values;
+    bool height_alias = false;
+    for (const auto& [alias, key] : kAliases) {
+        auto it = values.find(alias);
+        if (it == values.end())
+            continue;
+        const std::string value =
+            std::string(key) == "mixing_mode" ? mixingModeOfAlias(alias, it->second) : it->second;
+        auto [existing, added] = out.emplace(key, value);
+        if (!added && existing->second != value) {
+            throw InputError("setting '" + std::string(alias) + "' (alias of " + key + ") is '" + it->second +
+                             "' but " + key + " is '" + existing->second + "'");
+        }
+        out.erase(alias);
+        height_alias = height_alias || std::string(key) != "mixing_mode";
+    }
+    if (height_alias)
+        out.emplace("mixing_gradient_unit", "percent");
+    return out;
+}
+
+UserSettings withCanonicalKeys(const UserSettings& user) {
+    UserSettings out;
+    out.global = withCanonicalKeys(user.global);
+    for (const auto& [nr, values] : user.extruders)
+        out.extruders[nr] = withCanonicalKeys(values);
+    return out;
 }
 
 }  // namespace mixengine

@@ -23,4 +23,13 @@ std::string expandGcodeTokens(const std::string& code, const Settings& scope, co
 /// prepend flags the user set explicitly.
 void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user);
 
+/// Seed 001's setting names, accepted wherever user values arrive (-s, -g, -e, per model, or
+/// Cura's socket) and turned into MixEngine's keys here, in one place, before resolution:
+///   colorMode, colorMixing → mixing_mode (0 / 1 / 2 or single / dual / gradient)
+///   colorA → mixing_gradient_start, colorB → mixing_gradient_end (percent of the model height, so
+///   mixing_gradient_unit becomes percent unless it is given too).
+/// An alias whose canonical key is also given with another value is an InputError naming both.
+SettingValues withCanonicalKeys(const SettingValues& values);
+UserSettings withCanonicalKeys(const UserSettings& user);
+
 }  // namespace mixengine

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "common/Error.h"
+#include "settings/FrontendValues.h"
 #include "settings/StackEvaluator.h"
 #include "settings/ValueParse.h"
 
@@ -18,8 +19,9 @@ int userExtruderCount(const DefinitionSet& definitions, const UserSettings& user
 
 }  // namespace
 
-ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSettings& user,
+ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSettings& given_user,
                                const ProfileStack* profiles) {
+    const UserSettings user = withCanonicalKeys(given_user);  // seed 001's aliases
     int count = std::clamp(userExtruderCount(definitions, user), 1, 16);
     {
         StackEvaluator probe(definitions, user, count, profiles);
@@ -40,12 +42,15 @@ ResolvedMachine resolveMachine(const DefinitionSet& definitions, const UserSetti
 }
 
 Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& group_user, int group_index) {
-    return machine.global.with("mesh group " + std::to_string(group_index), group_user);
+    return machine.global.with("mesh group " + std::to_string(group_index), withCanonicalKeys(group_user));
 }
 
-Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user,
-                     const ResolvedMachine& machine, const Settings& group, const SettingValues& mesh_user,
-                     int default_extruder, const std::string& mesh_name, const ProfileStack* profiles) {
+Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& given_user,
+                     const ResolvedMachine& machine, const Settings& group,
+                     const SettingValues& given_mesh_user, int default_extruder, const std::string& mesh_name,
+                     const ProfileStack* profiles) {
+    const UserSettings user = withCanonicalKeys(given_user);  // seed 001's aliases
+    const SettingValues mesh_user = withCanonicalKeys(given_mesh_user);
     int extruder = default_extruder;
     if (auto it = mesh_user.find("extruder_nr"); it != mesh_user.end()) {
         extruder = static_cast<int>(parseInteger("extruder_nr", it->second));

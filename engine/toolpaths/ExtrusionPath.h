@@ -18,22 +18,9 @@ struct ExtrusionPath {
     coord_um width_um = 0;  ///< line width
     Feature feature = Feature::Fill;
     double speed_mm_s = 0;
-    double flow = 1.0;  ///< multiplier on the nominal width × thickness volume
-};
-
-/// Everything one mesh prints on one layer, in print order once planned.
-struct MeshLayerPaths {
-    int mesh_index = 0;
-    int extruder = 0;
-    std::vector<ExtrusionPath> paths;
-};
-
-struct LayerToolpaths {
-    int index = 0;                       ///< 0-based layer number (;LAYER:n)
-    coord_um print_z = 0;                ///< nozzle height
-    coord_um thickness_um = 0;           ///< slab thickness (for the extruded volume)
-    std::vector<ExtrusionPath> nonmesh;  ///< skirt / brim (;MESH:NONMESH)
-    std::vector<MeshLayerPaths> meshes;
+    double flow = 1.0;         ///< multiplier on the nominal width × thickness volume
+    int extruder = 0;          ///< extruder train that prints it
+    bool fixed_start = false;  ///< a loop whose seam is chosen (z_seam_type): print from points.front()
 };
 
 }  // namespace mixengine

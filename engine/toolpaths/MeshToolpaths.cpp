@@ -1,55 +1,125 @@
 #include "toolpaths/MeshToolpaths.h"
 
+#include <algorithm>
+
 #include "common/ParallelFor.h"
-#include "toolpaths/LineInfill.h"
+#include "toolpaths/FeatureStyle.h"
+#include "toolpaths/InfillPatterns.h"
+#include "toolpaths/PolygonOps.h"
+#include "toolpaths/Seam.h"
 #include "toolpaths/Skin.h"
+#include "toolpaths/SkinPaths.h"
 #include "toolpaths/Walls.h"
 
 namespace mixengine {
 namespace {
 
-struct SpeedSet {
-    double wall_outer, wall_inner, skin, infill;
-};
-
-SpeedSet speedsFor(const Settings& s, int layer) {
-    if (layer == 0) {
-        const double v = s.velocityMmPerS("speed_print_layer_0");
-        return {v, v, v, v};
-    }
-    return {s.velocityMmPerS("speed_wall_0"), s.velocityMmPerS("speed_wall_x"),
-            s.velocityMmPerS("speed_topbottom"), s.velocityMmPerS("speed_infill")};
+int countOf(const Settings& s, std::string_view key, long long fallback = 0) {
+    return static_cast<int>(std::clamp<long long>(s.has(key) ? s.integer(key) : fallback, 0, 1'000'000));
 }
 
-WallParams wallParams(const Settings& s, const SpeedSet& speed) {
+/// angles[layer % n], or the defaults when the list is empty.
+double angleFor(const Settings& s, std::string_view key, int layer, const std::vector<double>& defaults) {
+    std::vector<double> angles = s.has(key) ? s.realList(key) : std::vector<double>{};
+    if (angles.empty())
+        angles = defaults;
+    return angles[static_cast<std::size_t>(layer) % angles.size()];
+}
+
+Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
+    ClipperLib::IntRect box{0, 0, 0, 0};
+    bool any = false;
+    for (const SlicedLayer& layer : layers) {
+        if (layer.outlines.empty())
+            continue;
+        const ClipperLib::IntRect b = boundsOf(layer.outlines);
+        box = any ? ClipperLib::IntRect{std::min(box.left, b.left), std::min(box.top, b.top),
+                                        std::max(box.right, b.right), std::max(box.bottom, b.bottom)}
+                  : b;
+        any = true;
+    }
+    return {(box.left + box.right) / 2, (box.top + box.bottom) / 2};
+}
+
+/// The skin's reference walls and the removal widths left over (toolpaths/Skin.h).
+struct SkinReferences {
+    SkinReference top, bottom;
+};
+
+SkinReferences skinReferences(const Settings& s) {
+    const int walls = countOf(s, "wall_line_count");
+    const coord_um w0 = s.lengthMicrons("wall_line_width_0"), wx = s.lengthMicrons("wall_line_width_x");
+    auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
+    return {skinReference(length("top_skin_preshrink"), walls, w0, wx),
+            skinReference(length("bottom_skin_preshrink"), walls, w0, wx)};
+}
+
+WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs) {
     WallParams p;
-    p.wall_count = static_cast<int>(s.integer("wall_line_count"));
-    p.outer_width_um = s.lengthMicrons("wall_line_width_0");
-    p.inner_width_um = s.lengthMicrons("wall_line_width_x");
-    p.outer_inset_um = s.lengthMicrons("wall_0_inset");
-    p.outer_speed_mm_s = speed.wall_outer;
-    p.inner_speed_mm_s = speed.wall_inner;
+    p.top_reference = refs.top.wall;
+    p.bottom_reference = refs.bottom.wall;
+    p.wall_count = countOf(s, "wall_line_count");
+    p.outer_width_um = styles.wall_0.width_um;
+    p.inner_width_um = styles.wall_x.width_um;
+    p.outer_inset_um = s.has("wall_0_inset") ? s.lengthMicrons("wall_0_inset") : 0;
+    p.outer_speed_mm_s = styles.wall_0.speed_mm_s;
+    p.inner_speed_mm_s = styles.wall_x.speed_mm_s;
+    p.outer_flow = styles.wall_0.flow;
+    p.inner_flow = styles.wall_x.flow;
+    p.outer_extruder = styles.wall_0.extruder;
+    p.inner_extruder = styles.wall_x.extruder;
     return p;
 }
 
-void appendInfill(const Paths& area, const Settings& s, int layer, double speed,
-                  std::vector<ExtrusionPath>& out) {
-    LineInfillParams p;
+SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
+    SkinParams p;
+    p.top_layers = countOf(s, "top_layers");
+    p.bottom_layers = countOf(s, "bottom_layers");
+    p.initial_bottom_layers = countOf(s, "initial_bottom_layers", p.bottom_layers);
+    auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
+    p.top_preshrink_um = refs.top.leftover_preshrink_um;
+    p.bottom_preshrink_um = refs.bottom.leftover_preshrink_um;
+    p.top_expand_um = length("top_skin_expand_distance");
+    p.bottom_expand_um = length("bottom_skin_expand_distance");
+    p.min_width_for_expansion_um = length("min_skin_width_for_expansion");
+    p.roofing_layers = countOf(s, "roofing_layer_count");
+    p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
+    return p;
+}
+
+SkinFillParams skinFill(const Settings& s, int layer, coord_um z, const FeatureStyle& style, bool roofing) {
+    SkinFillParams p;
+    p.outline_count = countOf(s, "skin_outline_count");
+    const char* pattern_key = roofing && s.has("roofing_pattern") ? "roofing_pattern"
+                              : layer == 0                        ? "top_bottom_pattern_0"
+                                                                  : "top_bottom_pattern";
+    p.pattern = infillPatternOf(s.text(pattern_key), pattern_key);
+    const double skin_angle = angleFor(s, "skin_angles", layer, {45, 135});
+    p.angle_degrees = roofing ? angleFor(s, "roofing_angles", layer, {skin_angle}) : skin_angle;
+    p.overlap_um = s.has("skin_overlap_mm") ? s.lengthMicrons("skin_overlap_mm") : 0;
+    p.z_um = z;
+    p.style = style;
+    return p;
+}
+
+std::vector<ExtrusionPath> infillPaths(const Paths& area, const Settings& s, int layer, coord_um z,
+                                       const FeatureStyle& style) {
+    InfillParams p;
     p.line_distance_um = s.lengthMicrons("infill_line_distance");
-    p.line_width_um = s.lengthMicrons("infill_line_width");
-    p.speed_mm_s = speed;
-    const std::string pattern = s.has("infill_pattern") ? s.text("infill_pattern") : "lines";
-    if (pattern == "lines" || pattern == "zigzag") {
-        p.angle_degrees = layer % 2 == 0 ? 45 : 135;
-        out = generateLineInfill(area, p);
-        return;
-    }
-    // Grid and every pattern not implemented yet: two crossing line sets.
-    p.line_distance_um *= 2;
-    out = generateLineInfill(area, p);
-    p.angle_degrees = 135;
-    auto cross = generateLineInfill(area, p);
-    out.insert(out.end(), cross.begin(), cross.end());
+    if (p.line_distance_um <= 0 || area.empty())
+        return {};
+    const std::string text = s.has("infill_pattern") ? s.text("infill_pattern") : "lines";
+    p.pattern = infillPatternOf(text, "infill_pattern");
+    const bool alternate = p.pattern == InfillPattern::Lines || p.pattern == InfillPattern::ZigZag;
+    p.angle_degrees = angleFor(s, "infill_angles", layer,
+                               alternate ? std::vector<double>{45, 135} : std::vector<double>{45});
+    p.z_um = z;
+    p.line_width_um = style.width_um;
+    p.speed_mm_s = style.speed_mm_s;
+    p.flow = style.flow;
+    p.extruder = style.extruder;
+    const coord_um overlap = s.has("infill_overlap_mm") ? s.lengthMicrons("infill_overlap_mm") : 0;
+    return generateInfill(overlap != 0 ? offsetMiter(area, overlap) : area, p);
 }
 
 }  // namespace
@@ -57,33 +127,36 @@ void appendInfill(const Paths& area, const Settings& s, int layer, double speed,
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
                                                    const Settings& settings, int threads) {
     std::vector<MeshLayerGroups> result(layers.size());
+    std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size());
+    const SkinReferences refs = skinReferences(settings);
     std::vector<Paths> inner_areas(layers.size());
+    const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
     parallelFor(layers.size(), threads, [&](std::size_t i) {
-        const SpeedSet speed = speedsFor(settings, static_cast<int>(i));
-        WallResult walls = generateWalls(layers[i].outlines, wallParams(settings, speed));
+        const int layer = static_cast<int>(i);
+        WallResult walls =
+            generateWalls(layers[i].outlines, wallParams(settings, meshStyles(settings, layer), refs));
+        placeSeams(walls.walls, seam, layer);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? result[i].outer_walls : result[i].inner_walls)
                 .push_back(std::move(path));
         }
         inner_areas[i] = std::move(walls.inner_area);
+        top_reference[i] = std::move(walls.top_reference);
+        bottom_reference[i] = std::move(walls.bottom_reference);
     });
 
-    const int top = static_cast<int>(settings.integer("top_layers"));
-    const int bottom = static_cast<int>(settings.integer("bottom_layers"));
-    const std::vector<Paths> skins = computeSkinAreas(inner_areas, top, bottom, threads);
+    const std::vector<SkinAreas> areas =
+        computeSkinAreas(top_reference, bottom_reference, inner_areas, skinParams(settings, refs), threads);
 
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
-        const SpeedSet speed = speedsFor(settings, layer);
-        LineInfillParams skin;
-        skin.line_width_um = settings.lengthMicrons("skin_line_width");
-        skin.line_distance_um = skin.line_width_um;
-        skin.angle_degrees = layer % 2 == 0 ? 45 : 135;
-        skin.feature = Feature::Skin;
-        skin.speed_mm_s = speed.skin;
-        result[i].skin = generateLineInfill(skins[i], skin);
-        const Paths sparse = differenceOf(inner_areas[i], skins[i]);
-        appendInfill(sparse, settings, layer, speed.infill, result[i].infill);
+        const coord_um z = layers[i].print_z;
+        const MeshStyles styles = meshStyles(settings, layer);
+        result[i].skin = generateSkinPaths(areas[i].skin, skinFill(settings, layer, z, styles.skin, false));
+        for (ExtrusionPath& path :
+             generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
+            result[i].skin.push_back(std::move(path));
+        result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
     });
     return result;
 }

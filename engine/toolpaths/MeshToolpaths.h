@@ -1,8 +1,18 @@
 #pragma once
-// Toolpaths of one mesh on every layer: walls, top/bottom skin and sparse infill, from the
-// mesh's outlines and its settings (Cura's keys: wall_line_count, wall_line_width_0/_x,
-// wall_0_inset, top_layers, bottom_layers, skin_line_width, infill_line_distance,
-// infill_line_width, infill_pattern, speed_*).
+// Toolpaths of one mesh on every layer: walls (toolpaths/Walls.h, seams by toolpaths/Seam.h),
+// top/bottom skin and roofing (toolpaths/Skin.h) and sparse infill (toolpaths/InfillPatterns.h),
+// from the mesh's outlines and its resolved settings (Cura's keys and meanings):
+//   walls   — wall_line_count, wall_line_width_0/_x, wall_0_inset, z_seam_*;
+//   skin    — top_layers, bottom_layers, initial_bottom_layers, skin removal / expansion widths,
+//             skin_outline_count loops of skin_line_width, then lines (top_bottom_pattern, on layer
+//             0 top_bottom_pattern_0) at skin_angles[layer % n] (default 45°, 135°) reaching
+//             skin_overlap_mm beyond the skin area; roofing (roofing_layer_count) likewise with the
+//             roofing_* keys;
+//   infill  — infill_pattern at infill_line_distance inside the innermost wall, grown by
+//             infill_overlap_mm, at infill_angles[layer % n] (default 45° and 135° alternating for
+//             lines and zigzag, 45° otherwise); none when infill_line_distance is 0.
+// Widths, speeds, flows and extruders per feature and layer: toolpaths/FeatureStyle.h.
+// Layers are processed in parallel (common/ParallelFor.h); the result does not depend on `threads`.
 #include <vector>
 
 #include "settings/Settings.h"

@@ -1,50 +1,98 @@
 #include "toolpaths/Skin.h"
 
+#include <algorithm>
+
 #include "common/ParallelFor.h"
+#include "toolpaths/LayerWindows.h"
+#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
-
 namespace {
 
-Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(a, ClipperLib::ptSubject, true);
-    clipper.AddPaths(b, ClipperLib::ptClip, true);
-    Paths result;
-    clipper.Execute(operation, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+constexpr double kMinSkinAreaUm2 = 400.0 * 400.0;  // CuraEngine's 0.4 × 0.4 mm²
+
+/// Removal width (an opening by half of it), then expansion, clipped to the inner area.
+Paths reshape(Paths skin, coord_um preshrink, coord_um expand, coord_um min_width, const Paths& inner) {
+    if (skin.empty())
+        return skin;
+    if (preshrink > 0)
+        skin = openPolygons(skin, preshrink / 2);
+    if (expand != 0) {
+        const coord_um half = min_width / 2;
+        Paths grown =
+            half > 0 ? offsetPolygons(offsetPolygons(skin, -half), half + expand) : offsetMiter(skin, expand);
+        skin = half > 0 ? unionOf(skin, grown) : std::move(grown);
+    }
+    return (preshrink > 0 || expand != 0) ? intersectAll(skin, inner) : skin;
+}
+
+/// not_air for the bottom skin of layer i when the window reaches below layer 0: layers 0 … i-1.
+Paths prefixIntersection(const std::vector<Paths>& present, int i) {
+    Paths result = present[0];
+    for (int j = 1; j < i && !result.empty(); ++j)
+        result = intersectAll(result, present[static_cast<std::size_t>(j)]);
     return result;
 }
 
 }  // namespace
 
-Paths intersectAll(const Paths& a, const Paths& b) {
-    return clip(a, b, ClipperLib::ctIntersection);
+SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_width, coord_um inner_width) {
+    SkinReference ref{std::max(0, wall_count), preshrink};
+    while (ref.wall > 0) {
+        // From wall k's centre to wall k-1's (or, from the outer wall, to the outline).
+        const coord_um step = ref.wall == 1   ? outer_width / 2
+                              : ref.wall == 2 ? outer_width / 2 + inner_width / 2
+                                              : inner_width;
+        if (ref.leftover_preshrink_um < step)
+            break;
+        ref.leftover_preshrink_um -= step;
+        --ref.wall;
+    }
+    return ref;
 }
 
-Paths differenceOf(const Paths& a, const Paths& b) {
-    return clip(a, b, ClipperLib::ctDifference);
-}
-
-std::vector<Paths> computeSkinAreas(const std::vector<Paths>& areas, int top_layers, int bottom_layers,
-                                    int threads) {
-    const int count = static_cast<int>(areas.size());
-    std::vector<Paths> skins(areas.size());
-    parallelFor(areas.size(), threads, [&](std::size_t index) {
+std::vector<SkinAreas> computeSkinAreas(const std::vector<Paths>& top_reference,
+                                        const std::vector<Paths>& bottom_reference,
+                                        const std::vector<Paths>& inner_areas, const SkinParams& p,
+                                        int threads) {
+    const int n = static_cast<int>(top_reference.size());
+    const std::vector<Paths> above = windowIntersections(top_reference, p.top_layers, threads);
+    const std::vector<Paths> below = windowIntersections(bottom_reference, p.bottom_layers, threads);
+    const std::vector<Paths> roof_above = windowIntersections(top_reference, p.roofing_layers, threads);
+    std::vector<SkinAreas> result(inner_areas.size());
+    parallelFor(inner_areas.size(), threads, [&](std::size_t index) {
         const int i = static_cast<int>(index);
-        if (areas[index].empty())
+        const Paths& inner = inner_areas[index];
+        if (inner.empty())
             return;
-        // The region supported on both sides: covered by every layer in the window.
-        Paths interior = areas[index];
-        for (int d = 1; d <= top_layers && !interior.empty(); ++d) {
-            interior =
-                i + d < count ? intersectAll(interior, areas[static_cast<std::size_t>(i + d)]) : Paths{};
+        Paths top, bottom;
+        if (p.top_layers > 0)
+            top = i + p.top_layers < n ? differenceOf(inner, above[index + 1]) : inner;
+        if (p.bottom_layers > 0 || i < p.initial_bottom_layers) {
+            if (i < p.initial_bottom_layers || i == 0)
+                bottom = inner;
+            else if (i - p.bottom_layers >= 0)
+                bottom = differenceOf(inner, below[static_cast<std::size_t>(i - p.bottom_layers)]);
+            else
+                bottom = differenceOf(inner, prefixIntersection(bottom_reference, i));
         }
-        for (int d = 1; d <= bottom_layers && !interior.empty(); ++d) {
-            interior = i - d >= 0 ? intersectAll(interior, areas[static_cast<std::size_t>(i - d)]) : Paths{};
+        top =
+            reshape(std::move(top), p.top_preshrink_um, p.top_expand_um, p.min_width_for_expansion_um, inner);
+        bottom = reshape(std::move(bottom), p.bottom_preshrink_um, p.bottom_expand_um,
+                         p.min_width_for_expansion_um, inner);
+        SkinAreas& out = result[index];
+        out.skin = removeSmallIslands(unionOf(top, bottom), kMinSkinAreaUm2);
+        out.infill = removeSmallIslands(differenceOf(inner, out.skin),
+                                        std::max(kMinSkinAreaUm2, p.min_infill_area_um2));
+        if (p.roofing_layers > 0 && !out.skin.empty()) {
+            Paths covered = i + p.roofing_layers < n ? roof_above[index + 1] : Paths{};
+            if (i > 0)
+                covered = unionOf(covered, differenceOf(top_reference[index], top_reference[index - 1]));
+            out.roofing = differenceOf(out.skin, covered);
+            out.skin = intersectAll(out.skin, covered);
         }
-        skins[index] = differenceOf(areas[index], interior);
     });
-    return skins;
+    return result;
 }
 
 }  // namespace mixengine

@@ -1,18 +1,60 @@
 #pragma once
-// Top and bottom skin: the part of a layer's infill area that is not covered by the layers above
-// (top_layers of them) or below (bottom_layers) is printed solid.
+// Top and bottom skin areas, as CuraEngine 4.13 computes them per layer i:
+//   top skin    = inner_area[i] minus the area present in every one of layers i+1 … i+top_layers
+//                 (all of inner_area[i] within top_layers of the mesh's top);
+//   bottom skin = inner_area[i] minus the area present in every one of layers i-bottom_layers …
+//                 i-1 (all of it on the first initial_bottom_layers layers);
+// where a layer's "present" area is a reference region chosen as CuraEngine 4.13 does
+// (skinReference): the innermost wall's centre region, moved out one wall (and then to the
+// outline) for as long as the skin removal width (top/bottom_skin_preshrink) covers the distance;
+// each skin then loses its parts narrower than what is left of the removal width, is
+// grown by the expand distance (top/bottom_skin_expand_distance; only the parts at least
+// min_skin_width_for_expansion wide when that is set) and clipped to inner_area[i]. The union is
+// the skin; pieces under 0.16 mm² are dropped. The infill area is inner_area[i] minus the skin
+// (pieces under 0.16 mm² and under min_infill_area dropped). With roofing_layer_count > 0, the part
+// of the skin with air within roofing_layer_count layers above (or air directly below) is roofing.
+//
+// The "present in every layer of a window" intersections come from toolpaths/LayerWindows.h.
 #include <vector>
 
 #include "geometry/Point.h"
 
 namespace mixengine {
 
-/// `areas[i]` is layer i's area inside the walls. Returns, per layer, the skin area (a subset of
-/// areas[i]). Layers within `bottom_layers` of the bottom and `top_layers` of the top are all skin.
-std::vector<Paths> computeSkinAreas(const std::vector<Paths>& areas, int top_layers, int bottom_layers,
-                                    int threads);
+/// The reference region (0 = outline, k = centre region of wall k) for a removal width, and the
+/// part of the removal width left for removing narrow skin.
+struct SkinReference {
+    int wall = 0;
+    coord_um leftover_preshrink_um = 0;
+};
 
-Paths intersectAll(const Paths& a, const Paths& b);
-Paths differenceOf(const Paths& a, const Paths& b);
+SkinReference skinReference(coord_um preshrink_um, int wall_count, coord_um outer_width_um,
+                            coord_um inner_width_um);
+
+struct SkinParams {
+    int top_layers = 0;
+    int bottom_layers = 0;
+    int initial_bottom_layers = 0;
+    coord_um top_preshrink_um = 0;  ///< what is left of the removal width (skinReference)
+    coord_um bottom_preshrink_um = 0;
+    coord_um top_expand_um = 0;
+    coord_um bottom_expand_um = 0;
+    coord_um min_width_for_expansion_um = 0;
+    int roofing_layers = 0;
+    double min_infill_area_um2 = 0;
+};
+
+struct SkinAreas {
+    Paths skin;     ///< solid area (roofing excluded)
+    Paths roofing;  ///< solid area exposed at the top (empty unless roofing_layers > 0)
+    Paths infill;   ///< sparse infill area
+};
+
+/// Per layer i: `top_reference[i]` / `bottom_reference[i]` the reference regions (see above),
+/// `inner_areas[i]` the area inside the innermost walls. Roofing compares with top_reference.
+std::vector<SkinAreas> computeSkinAreas(const std::vector<Paths>& top_reference,
+                                        const std::vector<Paths>& bottom_reference,
+                                        const std::vector<Paths>& inner_areas, const SkinParams& params,
+                                        int threads);
 
 }  // namespace mixengine

@@ -1,30 +1,52 @@
 #include "toolpaths/Walls.h"
 
+#include <algorithm>
+
+#include "toolpaths/PolygonOps.h"
+
 namespace mixengine {
-
-Paths offsetPolygons(const Paths& polygons, coord_um delta_um) {
-    ClipperLib::ClipperOffset offset(2.0, 10.0);  // arc tolerance 10 µm
-    offset.AddPaths(polygons, ClipperLib::jtRound, ClipperLib::etClosedPolygon);
-    Paths result;
-    offset.Execute(result, static_cast<double>(delta_um));
-    return result;
-}
-
 namespace {
 
-void appendLoops(const Paths& loops, coord_um width, Feature feature, double speed,
-                 std::vector<ExtrusionPath>& out) {
+struct LoopStyle {
+    coord_um width_um;
+    Feature feature;
+    double speed_mm_s;
+    double flow;
+    int extruder;
+};
+
+void appendLoops(const Paths& loops, const LoopStyle& style, std::vector<ExtrusionPath>& out) {
     for (const Path& loop : loops) {
         if (loop.size() < 3)
             continue;
         ExtrusionPath path;
         path.points = loop;
         path.closed = true;
-        path.width_um = width;
-        path.feature = feature;
-        path.speed_mm_s = speed;
+        path.width_um = style.width_um;
+        path.feature = style.feature;
+        path.speed_mm_s = style.speed_mm_s;
+        path.flow = style.flow;
+        path.extruder = style.extruder;
         out.push_back(std::move(path));
     }
+}
+
+/// The centre region of a wall of `width_um`, its pieces too narrow for a loop removed (1 µm of
+/// slack so that a piece exactly one line wide, whose two sides just touch, stays).
+Paths wallRegion(const Paths& region, coord_um width_um) {
+    return openPolygons(region, width_um / 2 - 1);
+}
+
+/// Wall k's centre region (k ≥ 1; 0 = the outline) where parts with fewer walls use their innermost
+/// one: regions[k-1], plus what of the outer region lies farther than k's depth from it.
+Paths referenceRegion(const Paths& outlines, const std::vector<Paths>& regions,
+                      const std::vector<coord_um>& depths, int k) {
+    if (k <= 0 || regions.empty())
+        return outlines;
+    const std::size_t last = static_cast<std::size_t>(std::min<int>(k, static_cast<int>(regions.size()))) - 1;
+    if (last == 0)
+        return regions[0];
+    return unionOf(regions[last], differenceOf(regions[0], offsetMiter(regions[last], depths[last] + 10)));
 }
 
 }  // namespace
@@ -33,17 +55,42 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     WallResult result;
     if (params.wall_count <= 0) {
         result.inner_area = outlines;
+        result.top_reference = result.bottom_reference = outlines;
         return result;
     }
-    Paths centre = offsetPolygons(outlines, -(params.outer_width_um / 2 + params.outer_inset_um));
-    appendLoops(centre, params.outer_width_um, Feature::WallOuter, params.outer_speed_mm_s, result.walls);
-    coord_um previous_half = params.outer_width_um / 2;
-    for (int i = 1; i < params.wall_count && !centre.empty(); ++i) {
-        centre = offsetPolygons(centre, -(previous_half + params.inner_width_um / 2));
-        appendLoops(centre, params.inner_width_um, Feature::WallInner, params.inner_speed_mm_s, result.walls);
-        previous_half = params.inner_width_um / 2;
+    std::vector<Paths> regions;    // centre region of each wall that exists somewhere
+    std::vector<coord_um> depths;  // its distance inside the outer wall's centre line
+    Paths region = wallRegion(offsetMiter(outlines, -(params.outer_width_um / 2 + params.outer_inset_um)),
+                              params.outer_width_um);
+    appendLoops(region,
+                {params.outer_width_um, Feature::WallOuter, params.outer_speed_mm_s, params.outer_flow,
+                 params.outer_extruder},
+                result.walls);
+    if (!region.empty()) {
+        regions.push_back(region);
+        depths.push_back(0);
     }
-    result.inner_area = centre.empty() ? Paths{} : offsetPolygons(centre, -previous_half);
+    // The first inner wall is placed from the outline, not from the (inset) outer wall.
+    coord_um step = params.outer_width_um / 2 - params.outer_inset_um + params.inner_width_um / 2;
+    coord_um last_half = params.outer_width_um / 2;
+    for (int i = 1; i < params.wall_count && !region.empty(); ++i) {
+        region = wallRegion(offsetMiter(region, -step), params.inner_width_um);
+        appendLoops(region,
+                    {params.inner_width_um, Feature::WallInner, params.inner_speed_mm_s, params.inner_flow,
+                     params.inner_extruder},
+                    result.walls);
+        if (!region.empty()) {
+            depths.push_back(depths.back() + step);
+            regions.push_back(region);
+        }
+        step = params.inner_width_um;
+        last_half = params.inner_width_um / 2;
+    }
+    result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half);
+    result.top_reference = referenceRegion(outlines, regions, depths, params.top_reference);
+    result.bottom_reference = params.bottom_reference == params.top_reference
+                                  ? result.top_reference
+                                  : referenceRegion(outlines, regions, depths, params.bottom_reference);
     return result;
 }
 

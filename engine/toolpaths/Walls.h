@@ -1,9 +1,13 @@
 #pragma once
-// Walls: concentric insets of a layer's outlines.
+// Walls: concentric insets of a layer's outlines (Cura's wall_line_count, wall_line_width_0/_x,
+// wall_0_inset).
 //
-// The outer wall's centre line lies wall_line_width_0 / 2 inside the outline (minus
-// wall_0_inset); each further wall lies one wall_line_width_x further in. A part too thin for a
-// wall simply gets fewer walls (an inset that vanishes is not emitted, so no zero-width walls).
+// The outer wall's centre line lies wall_line_width_0 / 2 + wall_0_inset inside the outline; the
+// first inner wall lies wall_line_width_0 + wall_line_width_x / 2 inside it (as CuraEngine 4.13:
+// the inset moves the outer wall only), each further wall one wall_line_width_x further in. Holes
+// get their own loops (clockwise). Thin parts get fewer walls: a piece of a wall's centre region
+// narrower than that wall's line width would make the loop overlap itself, so it is dropped (and
+// every wall inside it with it); no loop has zero width or overlaps itself.
 #include <vector>
 
 #include "geometry/Point.h"
@@ -18,16 +22,24 @@ struct WallParams {
     coord_um outer_inset_um = 0;  ///< wall_0_inset
     double outer_speed_mm_s = 30;
     double inner_speed_mm_s = 60;
+    double outer_flow = 1.0;
+    double inner_flow = 1.0;
+    int outer_extruder = 0;
+    int inner_extruder = 0;
+    /// Which region the skin of the layers around compares with (toolpaths/Skin.h): 0 = the
+    /// outline, k = the centre region of wall k (1 = outer wall).
+    int top_reference = 2;
+    int bottom_reference = 2;
 };
 
 struct WallResult {
-    std::vector<ExtrusionPath> walls;  ///< outer walls first, then inner ones, per island
+    std::vector<ExtrusionPath> walls;  ///< outer walls first, then the inner ones, wall by wall
     Paths inner_area;                  ///< the area inside the innermost wall (its inner edge)
+    /// The reference regions asked for in WallParams; a part with fewer walls than the reference
+    /// uses its innermost wall's region (as CuraEngine 4.13 takes insets[min(k, count) − 1]).
+    Paths top_reference, bottom_reference;
 };
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params);
-
-/// Clipper offset of closed polygons by `delta_um` (negative = inwards), round joins.
-Paths offsetPolygons(const Paths& polygons, coord_um delta_um);
 
 }  // namespace mixengine

@@ -9,4 +9,5 @@ BUILD=$(cd "$BUILD" && pwd)
 PY=$("$HERE/../python/venv.sh")
 export MIXENGINE_CORPUS=${MIXENGINE_CORPUS:-$HOME/.cache/mixengine-corpus}
 "$HERE/../corpus/fetch.sh" "$MIXENGINE_CORPUS"
+"$PY" "$HERE/bench_orient.py" --bin "$BUILD/mixengine" --repeat 1  # the orientation pass (issue 7)
 exec "$PY" "$HERE/bench_slice.py" --bin "$BUILD/mixengine" "$@"

@@ -105,5 +105,42 @@ TEST(Header, DISABLED_OtherFlavoursKeepTheirNameLikeCuraEngine) {
     EXPECT_EQ(flavorName(flavorFromSetting("Repetier")), "Repetier");
 }
 
+TEST(Header, GriffinBlockWithRealValues) {
+    PrintSummary s = summary(Flavor::Griffin);
+    s.machine_name = "Ultimaker S5";
+    s.build_plate_temperature_c = 60;
+    ExtruderHeader e0;
+    e0.initial_temperature_c = 215;
+    e0.nozzle_diameter_mm = 0.4;
+    e0.nozzle_name = "AA 0.4";
+    e0.material_guid = "506c9f0d-e3aa-4bd4-b2d2-23e2425b1aa9";
+    e0.volume_used_mm3 = 1234.6;
+    ExtruderHeader e1;
+    e1.used = false;
+    s.extruders = {e0, e1};
+    EXPECT_EQ(makeHeader(s),
+              ";START_OF_HEADER\n;HEADER_VERSION:0.1\n;FLAVOR:Griffin\n;GENERATOR.NAME:MixEngine\n"
+              ";GENERATOR.VERSION:0.1.0\n;TARGET_MACHINE.NAME:Ultimaker S5\n"
+              ";EXTRUDER_TRAIN.0.INITIAL_TEMPERATURE:215\n;EXTRUDER_TRAIN.0.MATERIAL.VOLUME_USED:1235\n"
+              ";EXTRUDER_TRAIN.0.MATERIAL.GUID:506c9f0d-e3aa-4bd4-b2d2-23e2425b1aa9\n"
+              ";EXTRUDER_TRAIN.0.NOZZLE.DIAMETER:0.4\n;EXTRUDER_TRAIN.0.NOZZLE.NAME:AA 0.4\n"
+              ";BUILD_PLATE.TYPE:glass\n;BUILD_PLATE.INITIAL_TEMPERATURE:60\n;PRINT.TIME:5626\n"
+              ";PRINT.GROUPS:1\n;PRINT.SIZE.MIN.X:100\n;PRINT.SIZE.MIN.Y:90.5\n;PRINT.SIZE.MIN.Z:0.3\n"
+              ";PRINT.SIZE.MAX.X:123.456\n;PRINT.SIZE.MAX.Y:110\n;PRINT.SIZE.MAX.Z:10\n;END_OF_HEADER\n"
+              "\n;Generated with MixEngine 0.1.0\n");
+}
+
+TEST(Header, UltiGCodeMaterialVolumes) {
+    PrintSummary s = summary(Flavor::UltiGCode);
+    ExtruderHeader e0;
+    e0.volume_used_mm3 = 6666.4;
+    e0.nozzle_diameter_mm = 0.4;
+    s.extruders = {e0};
+    EXPECT_EQ(
+        makeHeader(s),
+        std::string(";FLAVOR:UltiGCode\n;TIME:5626\n;MATERIAL:6666\n;MATERIAL2:0\n;NOZZLE_DIAMETER:0.4\n") +
+            kBounds);
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -61,6 +61,10 @@ ExportParams params() {
     p.filament_diameter_mm = 1.75;
     p.volumetric = true;  // E equals the volume: easy to read
     p.retraction_amount_mm = 1.0;
+    // Acceleration and jerk so high that every move takes distance / speed: easy to check.
+    p.kinematics.acceleration_mm_s2 = 1e12;
+    p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
+    p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;
     return p;
 }
 
@@ -138,6 +142,36 @@ TEST(GCodePlanWriter, RetractedTravelAndResetAcrossLayers) {
     EXPECT_LT(retract, move) << second;
     EXPECT_LT(move, prime) << second;
     EXPECT_NE(second.find("G1 F1800 X5 Y30 E0.25\n"), std::string::npos) << second;
+}
+
+// A tool change: the old extruder's end code and standby temperature, a retraction, T1, E reset,
+// waiting for the new extruder's temperature, its start code; X/Y then relative to the new nozzle (offset
+// subtracted); filament counted per extruder.
+TEST(GCodePlanWriter, ToolChangeWithNozzleOffset) {
+    PrintPlan plan;
+    PlannedLayer layer;
+    layer.z = 300;
+    PlanStep change = step(PlanStep::Kind::SetExtruder);
+    change.extruder = 1;
+    layer.steps = {extrude({1'000, 0}, 0.5), change, travel({11'000, 0}), extrude({12'000, 0}, 0.25)};
+    plan.layers = {layer};
+    PlanWriterParams p;
+    p.extruders.resize(2);
+    p.extruders[0].end_code = "G91";
+    p.extruders[0].standby_temperature_c = 150;
+    p.extruders[1].change = {1, 1.75, {10'000, 0}};
+    p.extruders[1].start_code = "G90\n";
+    p.extruders[1].print_temperature_c = 210;
+    GCodeExport gcode(params());
+    const std::string chunk = writePlan(plan, p, gcode).chunks.at(0);
+    const std::string expected =
+        "G1 F1800 X1 Y0 E0.5\nG91\nM104 T0 S150\nG1 F1500 E-1.90528\nT1\nG92 E0\nM109 S210\nG90\n"
+        "G0 F9000 X1 Y0\nG1 F1500 E2.40528\nG1 F1800 X2 Y0 E2.65528\n";
+    EXPECT_NE(chunk.find(expected), std::string::npos) << chunk;
+    const std::vector<double> filament = gcode.filamentPerExtruder();
+    ASSERT_EQ(filament.size(), 2U);
+    EXPECT_NEAR(filament[0], 0.5, 1e-9);
+    EXPECT_NEAR(filament[1], 0.25, 1e-9);
 }
 
 }  // namespace

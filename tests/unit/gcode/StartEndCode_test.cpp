@@ -108,13 +108,25 @@ TEST(GCodeStartEndCode, EndCodeRestoresTheExtrusionModeLikeCuraEngine) {
     EXPECT_EQ(endCode(reprap, false), "M84\n" + std::string(kM83));
 }
 
-// BUG (engine/gcode/StartEndCode.cpp, startCode ignores machine_gcode_flavor): for RepRap (RepRap)
-// CuraEngine writes "T0" first, no "M140" before "M190" and no "M105" lines (observed:
+// For RepRap (RepRap) CuraEngine writes "T0" first, no "M140" before "M190" and no "M105" lines (observed:
 // "T0 / M190 S60 / M104 S212.5 / M109 S212.5").
-TEST(GCodeStartEndCode, DISABLED_RepRapFlavourTemperatureLinesLikeCuraEngine) {
+TEST(GCodeStartEndCode, RepRapFlavourTemperatureLinesLikeCuraEngine) {
     const Settings reprap = global({{"machine_gcode_flavor", "RepRap (RepRap)"}});
     EXPECT_EQ(startCode(reprap, extruder0("212.5"), false),
               "T0\nM190 S60\nM104 S212.5\nM109 S212.5\n" + std::string(kM82) + kStart);
+}
+
+// Griffin (observed with /usr/bin/CuraEngine): "T0", no prepended temperatures, the machine's start
+// code, then "M109 S<initial temperature>".
+TEST(GCodeStartEndCode, GriffinWaitsForTheNozzleAfterTheStartCode) {
+    const Settings griffin = global({{"machine_gcode_flavor", "Griffin"}});
+    EXPECT_EQ(startCode(griffin, extruder0("212.5"), false),
+              "T0\n" + std::string(kM82) + kStart + "M109 S212.5\n");
+}
+
+TEST(GCodeStartEndCode, UltiGCodeHasNoTemperatureLines) {
+    const Settings ulti = global({{"machine_gcode_flavor", "UltiGCode"}});
+    EXPECT_EQ(startCode(ulti, extruder0("212.5"), false), std::string(kM82) + kStart);
 }
 
 }  // namespace

@@ -180,7 +180,10 @@ TEST(DefinitionLoader, CustomDefinitionOnTheSearchPath) {
     EXPECT_EQ(set.find("machine_depth")->type, "float");
     ASSERT_NE(set.find("mix_custom_new_key"), nullptr);
     EXPECT_EQ(set.find("mix_custom_new_key")->default_value, "7");
-    EXPECT_EQ(set.settings.size(), 576U);
+    // fdmprinter's settings, the custom key and MixEngine's own (settings/mixengine/*.def.json).
+    EXPECT_EQ(set.settings.size(), 596U);
+    EXPECT_NE(set.find("mixing_mode"), nullptr);
+    EXPECT_NE(set.find("dual_orientation_optimize"), nullptr);
     ASSERT_EQ(set.extruders.size(), 2U);
     EXPECT_EQ(set.extruders[0].id, "mix_custom_extruder_0");
     EXPECT_EQ(set.extruders[1].id, "mix_custom_extruder_1");

@@ -3,72 +3,114 @@
 
 #include <gtest/gtest.h>
 
+#include "ToolpathTestSupport.h"
+#include "toolpaths/PolygonOps.h"
+
 namespace mixengine {
 namespace {
 
-Paths square(coord_um x0, coord_um y0, coord_um size) {
-    return {{{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}}};
+Paths sq(coord_um x0, coord_um size) {
+    return {test::square(x0, x0, size)};
 }
 
-double areaOf(const Paths& paths) {
-    double total = 0;
-    for (const Path& p : paths)
-        total += ClipperLib::Area(p);
-    return total;
+SkinParams layersOnly(int top, int bottom) {
+    SkinParams p;
+    p.top_layers = top;
+    p.bottom_layers = bottom;
+    p.initial_bottom_layers = bottom;
+    return p;
+}
+
+std::vector<SkinAreas> skins(const std::vector<Paths>& areas, const SkinParams& p, int threads = 1) {
+    return computeSkinAreas(areas, areas, areas, p, threads);
 }
 
 TEST(Skin, StackOfIdenticalSquares) {
-    const std::vector<Paths> areas(6, square(0, 0, 10'000));
+    const std::vector<Paths> areas(6, sq(0, 10'000));
     for (int threads : {1, 2}) {
-        const std::vector<Paths> skin = computeSkinAreas(areas, 2, 2, threads);
-        ASSERT_EQ(skin.size(), 6U);
-        for (int layer : {0, 1, 4, 5})
-            EXPECT_EQ(areaOf(skin[layer]), 100e6) << layer << " threads " << threads;
-        EXPECT_TRUE(skin[2].empty()) << threads;
-        EXPECT_TRUE(skin[3].empty()) << threads;
+        const std::vector<SkinAreas> s = skins(areas, layersOnly(2, 2), threads);
+        ASSERT_EQ(s.size(), 6U);
+        for (int layer : {0, 1, 4, 5}) {
+            EXPECT_EQ(areaUm2(s[layer].skin), 100e6) << layer;
+            EXPECT_TRUE(s[layer].infill.empty()) << layer;
+        }
+        for (int layer : {2, 3}) {
+            EXPECT_TRUE(s[layer].skin.empty()) << layer;
+            EXPECT_EQ(areaUm2(s[layer].infill), 100e6) << layer;
+        }
     }
 }
 
 TEST(Skin, NoTopOrBottomLayersNoSkin) {
-    const std::vector<Paths> areas(4, square(0, 0, 10'000));
-    for (const Paths& skin : computeSkinAreas(areas, 0, 0, 1))
-        EXPECT_TRUE(skin.empty());
-    const std::vector<Paths> only_top = computeSkinAreas(areas, 1, 0, 1);
-    EXPECT_TRUE(only_top[0].empty());
-    EXPECT_EQ(areaOf(only_top[3]), 100e6);
+    const std::vector<Paths> areas(4, sq(0, 10'000));
+    for (const SkinAreas& s : skins(areas, layersOnly(0, 0)))
+        EXPECT_TRUE(s.skin.empty());
+    const std::vector<SkinAreas> only_top = skins(areas, layersOnly(1, 0));
+    EXPECT_TRUE(only_top[0].skin.empty());
+    EXPECT_EQ(areaUm2(only_top[3].skin), 100e6);
+}
+
+TEST(Skin, SolidInfillThroughHugeBottomCount) {
+    // infill_sparse_density 100 resolves to bottom_layers 999999: everything is skin, and cheaply.
+    const std::vector<Paths> areas(50, sq(0, 10'000));
+    for (const SkinAreas& s : skins(areas, layersOnly(0, 999'999))) {
+        EXPECT_EQ(areaUm2(s.skin), 100e6);
+        EXPECT_TRUE(s.infill.empty());
+    }
 }
 
 TEST(Skin, SmallerSquareOnTopLeavesARing) {
-    std::vector<Paths> areas(3, square(0, 0, 20'000));
+    std::vector<Paths> areas(3, sq(0, 20'000));
     for (int i = 0; i < 3; ++i)
-        areas.push_back(square(5'000, 5'000, 10'000));
-    const std::vector<Paths> skin = computeSkinAreas(areas, 1, 1, 1);
-    EXPECT_EQ(areaOf(skin[0]), 400e6);  // bottom layer
-    EXPECT_TRUE(skin[1].empty());
-    EXPECT_EQ(areaOf(skin[2]), 400e6 - 100e6);  // the ring not covered by the small square above
-    EXPECT_TRUE(skin[3].empty());               // fully supported by the big square below
-    EXPECT_TRUE(skin[4].empty());
-    EXPECT_EQ(areaOf(skin[5]), 100e6);  // top layer
+        areas.push_back(sq(5'000, 10'000));
+    const std::vector<SkinAreas> s = skins(areas, layersOnly(1, 1));
+    EXPECT_EQ(areaUm2(s[0].skin), 400e6);  // bottom layer
+    EXPECT_TRUE(s[1].skin.empty());
+    EXPECT_EQ(areaUm2(s[2].skin), 400e6 - 100e6);  // the ring not covered by the square above
+    EXPECT_EQ(areaUm2(s[2].infill), 100e6);
+    EXPECT_TRUE(s[3].skin.empty());  // fully supported by the big square below
+    EXPECT_EQ(areaUm2(s[5].skin), 100e6);
 }
 
-TEST(Skin, EmptyLayerInTheMiddle) {
-    const std::vector<Paths> areas{
-        square(0, 0, 10'000), square(0, 0, 10'000), {}, square(0, 0, 10'000), square(0, 0, 10'000)};
-    const std::vector<Paths> skin = computeSkinAreas(areas, 1, 1, 2);
-    EXPECT_EQ(areaOf(skin[0]), 100e6);
-    EXPECT_EQ(areaOf(skin[1]), 100e6);
-    EXPECT_TRUE(skin[2].empty());
-    EXPECT_EQ(areaOf(skin[3]), 100e6);
-    EXPECT_EQ(areaOf(skin[4]), 100e6);
+TEST(Skin, RemovalWidthDropsNarrowStripsAndExpansionGrowsIntoInfill) {
+    // Layer 1's square is 1 mm bigger on each side than layer 2's: a 1 mm top-skin ring.
+    const std::vector<Paths> areas{sq(0, 20'000), sq(0, 20'000), sq(1'000, 18'000), sq(1'000, 18'000)};
+    SkinParams p = layersOnly(1, 0);
+    p.top_preshrink_um = 1'100;  // removes strips narrower than 1.1 mm: the ring goes
+    EXPECT_TRUE(skins(areas, p)[1].skin.empty());
+    p.top_preshrink_um = 900;  // keeps it
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].skin), 400e6 - 324e6);
+    p.top_expand_um = 500;  // and grows it 0.5 mm into the infill (not beyond the inner area)
+    const SkinAreas grown = skins(areas, p)[1];
+    EXPECT_EQ(areaUm2(grown.skin), 400e6 - 17'000.0 * 17'000.0);
+    EXPECT_EQ(areaUm2(grown.infill), 17'000.0 * 17'000.0);
 }
 
-TEST(Skin, BooleanHelpers) {
-    const Paths a = square(0, 0, 10'000);
-    const Paths b = square(5'000, 0, 10'000);
-    EXPECT_EQ(areaOf(intersectAll(a, b)), 50e6);
-    EXPECT_EQ(areaOf(differenceOf(a, b)), 50e6);
-    EXPECT_TRUE(intersectAll(a, {}).empty());
-    EXPECT_EQ(areaOf(differenceOf(a, {})), 100e6);
+TEST(Skin, ReferenceWallMovesOutWithTheRemovalWidth) {
+    // Two walls of 0.4 mm: the innermost centre region is the reference until the removal width
+    // covers 0.4 mm (to the outer wall's centre), then 0.2 mm more (to the outline).
+    EXPECT_EQ(skinReference(0, 2, 400, 400).wall, 2);
+    EXPECT_EQ(skinReference(399, 2, 400, 400).wall, 2);
+    const SkinReference half = skinReference(500, 2, 400, 400);
+    EXPECT_EQ(half.wall, 1);
+    EXPECT_EQ(half.leftover_preshrink_um, 100);
+    const SkinReference one = skinReference(1'000, 2, 400, 400);
+    EXPECT_EQ(one.wall, 0);
+    EXPECT_EQ(one.leftover_preshrink_um, 400);
+    // Three walls (0.4, 0.5, 0.5 mm): 0.5 mm back to the second, 0.45 mm more to the outer one.
+    const SkinReference three = skinReference(1'000, 3, 400, 500);
+    EXPECT_EQ(three.wall, 1);
+    EXPECT_EQ(three.leftover_preshrink_um, 50);
+}
+
+TEST(Skin, RoofingIsTheSkinWithAirAbove) {
+    const std::vector<Paths> areas{sq(0, 20'000), sq(0, 20'000), sq(0, 20'000), sq(0, 10'000)};
+    SkinParams p = layersOnly(2, 0);
+    p.roofing_layers = 1;
+    const std::vector<SkinAreas> s = skins(areas, p);
+    EXPECT_EQ(areaUm2(s[2].roofing), 400e6 - 100e6);  // nothing above the L-shaped part
+    EXPECT_EQ(areaUm2(s[2].skin), 100e6);             // covered by layer 3
+    EXPECT_EQ(areaUm2(s[3].roofing), 100e6);
 }
 
 }  // namespace

@@ -1,0 +1,22 @@
+#include "gcode/MixDialect.h"
+
+#include "gcode/MixSplitAxes.h"
+#include "gcode/MixTotalAxis.h"
+
+namespace mixengine {
+
+std::unique_ptr<MixDialect> makeMixDialect(const MixingOutput& mixing, bool relative_extrusion) {
+    if (mixing.enabled()) {
+        switch (mixing.dialect) {
+            case MixDialectKind::EbAxes:
+            case MixDialectKind::KlipperB:
+            case MixDialectKind::RrfColon:
+                return std::make_unique<MixSplitAxes>(mixing, relative_extrusion);
+            default:
+                break;
+        }
+    }
+    return std::make_unique<MixTotalAxis>(mixing, relative_extrusion);
+}
+
+}  // namespace mixengine

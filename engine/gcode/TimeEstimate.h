@@ -1,0 +1,62 @@
+#pragma once
+// Print-time estimate with an acceleration and jerk model, the way the firmware's planner moves:
+// every move accelerates from its entry speed to its nominal speed and decelerates to its exit
+// speed (a trapezoid), and the speed at a junction between two moves is limited by the jerk —
+// the largest instantaneous change of velocity the firmware allows.
+//
+// Moves are buffered and planned with a backward and a forward pass whenever the buffer is
+// flushed (the G-code writer flushes at every layer end and at delays), so the estimate is
+// independent of how often it is read. Units: mm, mm/s, mm/s², seconds.
+#include <array>
+#include <vector>
+
+namespace mixengine {
+
+struct Kinematics {
+    double acceleration_mm_s2 = 3000;                                      ///< print/travel acceleration
+    std::array<double, 4> max_acceleration_mm_s2{9000, 9000, 100, 10000};  ///< X Y Z E
+    std::array<double, 4> max_feedrate_mm_s{1e9, 1e9, 1e9, 1e9};           ///< X Y Z E
+    double jerk_xy_mm_s = 20;
+    double jerk_z_mm_s = 0.4;
+    double jerk_e_mm_s = 5;
+    double minimum_feedrate_mm_s = 0;
+};
+
+class TimeEstimate {
+  public:
+    explicit TimeEstimate(const Kinematics& kinematics) : k_(kinematics) {}
+
+    /// A straight move by `delta` (X, Y, Z, E in mm) at the requested feedrate.
+    void addMove(const std::array<double, 4>& delta_mm, double feedrate_mm_s);
+    /// The acceleration for the following moves (M204), limited as the firmware limits it.
+    void setAcceleration(double acceleration_mm_s2) { k_.acceleration_mm_s2 = acceleration_mm_s2; }
+    void setJerkXy(double jerk_mm_s) { k_.jerk_xy_mm_s = jerk_mm_s; }
+    /// A dwell (G4) or a heating wait: the buffered moves are planned to a stop first.
+    void addDelay(double seconds);
+    /// Plans the buffered moves (ending at rest) and adds their time to the total.
+    void flush();
+    /// Total time so far, including moves still buffered (planned as if ending at rest).
+    double totalSeconds() const;
+
+  private:
+    struct Block {
+        std::array<double, 4> unit{};  ///< direction of travel (of the E axis for E-only moves)
+        double distance_mm = 0;
+        double nominal_mm_s = 0;
+        double acceleration_mm_s2 = 0;
+        double max_entry_mm_s = 0;  ///< junction limit with the previous block
+        double entry_mm_s = 0;
+    };
+    double plannedSeconds(std::vector<Block>& blocks) const;
+    double junctionSpeed(const Block& previous, const Block& next) const;
+
+    Kinematics k_;
+    std::vector<Block> blocks_;
+    double done_s_ = 0;
+};
+
+/// Time of a trapezoid move: from `entry` accelerate (a) towards `nominal`, decelerate to `exit`.
+double trapezoidSeconds(double distance_mm, double entry_mm_s, double nominal_mm_s, double exit_mm_s,
+                        double acceleration_mm_s2);
+
+}  // namespace mixengine

@@ -1,0 +1,280 @@
+#include "mixing/MixingSettings.h"
+
+#include <cmath>
+#include <string>
+
+#include "common/Error.h"
+#include "settings/ValueParse.h"
+
+namespace mixengine {
+namespace {
+
+constexpr double kSumTolerance = 1e-6;
+
+struct DialectEntry {
+    MixDialectKind kind;
+    const char* name;
+};
+constexpr DialectEntry kDialects[] = {
+    {MixDialectKind::EbAxes, "eb_axes"},         {MixDialectKind::KlipperB, "klipper_b"},
+    {MixDialectKind::RrfColon, "rrf_colon"},     {MixDialectKind::MarlinM163, "marlin_m163"},
+    {MixDialectKind::MarlinM165, "marlin_m165"}, {MixDialectKind::RrfM567, "rrf_m567"},
+};
+
+/// Defaults in code: the values of settings/mixengine/mixing.def.json.
+const char* defaultText(std::string_view key) {
+    if (key == "mixing_mode")
+        return "single";
+    if (key == "mixing_dialect")
+        return "eb_axes";
+    if (key == "mixing_channels")
+        return "2";
+    if (key == "mixing_resolution")
+        return "100";
+    if (key == "mixing_tool")
+        return "0";
+    if (key == "mixing_klipper_stepper")
+        return "mixing_b";
+    if (key == "mixing_gradient_unit")
+        return "percent";
+    if (key == "mixing_gradient_start")
+        return "0";
+    if (key == "mixing_gradient_end")
+        return "100";
+    if (key == "mixing_ratio")
+        return "0.5:0.5";
+    if (key == "mixing_chamber_volume")
+        return "0";
+    if (key == "mixing_channel_colors")
+        return "#f2c500,#e0408a,#00a3e0,#262626,#f4f4f4";
+    return "";  // mixing_gradient_stops
+}
+
+std::string textOf(const Settings& s, std::string_view key) {
+    return s.has(key) ? s.text(key) : std::string(defaultText(key));
+}
+
+[[noreturn]] void fail(std::string_view key, const std::string& message) {
+    throw InputError("setting '" + std::string(key) + "': " + message);
+}
+
+std::string shown(double value) {
+    std::string text = std::to_string(value);
+    while (!text.empty() && text.back() == '0')
+        text.pop_back();
+    if (!text.empty() && text.back() == '.')
+        text.pop_back();
+    return text;
+}
+
+std::string trimmed(std::string_view text) {
+    const auto first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos)
+        return "";
+    const auto last = text.find_last_not_of(" \t\r\n");
+    return std::string(text.substr(first, last - first + 1));
+}
+
+MixingMode parseMode(const Settings& s) {
+    const std::string text = textOf(s, "mixing_mode");
+    if (text == "single")
+        return MixingMode::Single;
+    if (text == "dual")
+        return MixingMode::Dual;
+    if (text == "gradient")
+        return MixingMode::Gradient;
+    fail("mixing_mode", "unknown mode '" + text + "' (single, dual or gradient)");
+}
+
+MixDialectKind parseDialect(const Settings& s) {
+    const std::string text = textOf(s, "mixing_dialect");
+    for (const DialectEntry& d : kDialects) {
+        if (text == d.name)
+            return d.kind;
+    }
+    std::string names;
+    for (const DialectEntry& d : kDialects)
+        names += (names.empty() ? "" : ", ") + std::string(d.name);
+    fail("mixing_dialect", "unknown dialect '" + text + "' (one of " + names + ")");
+}
+
+long long integerOf(const Settings& s, std::string_view key) {
+    return parseInteger(key, textOf(s, key));
+}
+
+void checkChannels(const Settings& s, const MixingOutput& out) {
+    if (out.channels < 1 || out.channels > kMaxMixChannels)
+        fail("mixing_channels",
+             std::to_string(out.channels) + " is outside 1.." + std::to_string(kMaxMixChannels));
+    const long long extruders = s.has("machine_extruder_count") ? s.integer("machine_extruder_count") : 1;
+    if (extruders > 1 && out.channels > extruders)
+        fail("mixing_channels", std::to_string(out.channels) + " channels, but the printer has " +
+                                    std::to_string(extruders) + " (machine_extruder_count)");
+    const bool two_axes = out.dialect == MixDialectKind::EbAxes || out.dialect == MixDialectKind::KlipperB;
+    if (two_axes && out.channels != 2)
+        fail("mixing_channels", std::to_string(out.channels) + " channels, but dialect " +
+                                    dialectName(out.dialect) + " drives exactly 2 (E and B)");
+}
+
+double heightOf(const Settings& s, std::string_view key) {
+    return parseReal(key, textOf(s, key));
+}
+
+std::vector<GradientStop> twoStopGradient(const Settings& s, int channels) {
+    const double start = heightOf(s, "mixing_gradient_start");
+    const double end = heightOf(s, "mixing_gradient_end");
+    if (start > end)
+        fail("mixing_gradient_start", shown(start) + " is above mixing_gradient_end " + shown(end));
+    if (channels < 2)
+        fail("mixing_channels", "a gradient from A to B needs 2 channels, not " + std::to_string(channels));
+    return {{start, MixVector::only(0, channels)}, {end, MixVector::only(1, channels)}};
+}
+
+}  // namespace
+
+const char* dialectName(MixDialectKind kind) {
+    for (const DialectEntry& d : kDialects) {
+        if (d.kind == kind)
+            return d.name;
+    }
+    return "?";
+}
+
+MixingOutput parseMixingOutput(const Settings& global) {
+    MixingOutput out;
+    out.mode = parseMode(global);
+    if (!out.enabled())
+        return out;
+    out.dialect = parseDialect(global);
+    out.channels = static_cast<int>(integerOf(global, "mixing_channels"));
+    checkChannels(global, out);
+    const long long steps = integerOf(global, "mixing_resolution");
+    if (steps < 1 || steps > 1'000'000)
+        fail("mixing_resolution", std::to_string(steps) + " steps is outside 1..1000000");
+    out.resolution_steps = static_cast<int>(steps);
+    const long long tool = integerOf(global, "mixing_tool");
+    if (tool < 0 || tool > 255)
+        fail("mixing_tool", std::to_string(tool) + " is outside 0..255");
+    out.tool = static_cast<int>(tool);
+    out.klipper_stepper = trimmed(textOf(global, "mixing_klipper_stepper"));
+    if (out.dialect == MixDialectKind::KlipperB && out.klipper_stepper.empty())
+        fail("mixing_klipper_stepper", "empty: the [manual_stepper] name is needed to zero axis B");
+    return out;
+}
+
+bool relativeExtrusion(const Settings& global) {
+    return global.boolean("relative_extrusion") || parseMixingOutput(global).forcesRelativeExtrusion();
+}
+
+MixVector parseMixRatio(std::string_view key, std::string_view text, int channels) {
+    MixVector mix;
+    mix.channels = channels;
+    int count = 0;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t colon = text.find(':', start);
+        const std::string part =
+            trimmed(text.substr(start, colon == std::string_view::npos ? colon : colon - start));
+        if (count == channels)
+            fail(key, "'" + std::string(text) + "' has more ratios than mixing_channels (" +
+                          std::to_string(channels) + ")");
+        const double share = parseReal(key, part);
+        if (share < 0)
+            fail(key, "'" + std::string(text) + "' has a negative ratio");
+        mix[count++] = share;
+        if (colon == std::string_view::npos)
+            break;
+        start = colon + 1;
+    }
+    if (std::fabs(mix.sum() - 1.0) > kSumTolerance)
+        fail(key, "ratios '" + std::string(text) + "' add up to " + shown(mix.sum()) + ", not 1");
+    return mix;
+}
+
+std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_view text, int channels) {
+    std::vector<GradientStop> stops;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find(';', start);
+        if (end == std::string_view::npos)
+            end = text.size();
+        const std::string item = trimmed(text.substr(start, end - start));
+        start = end + 1;
+        if (item.empty())
+            continue;
+        const std::size_t eq = item.find('=');
+        if (eq == std::string::npos)
+            fail(key, "stop '" + item + "' is not height=ratios (e.g. 50=0.5:0.5)");
+        GradientStop stop;
+        stop.height = parseReal(key, trimmed(item.substr(0, eq)));
+        stop.mix = parseMixRatio(key, item.substr(eq + 1), channels);
+        if (!stops.empty() && stop.height < stops.back().height)
+            fail(key, "heights must not decrease (" + shown(stop.height) + " after " +
+                          shown(stops.back().height) + ")");
+        stops.push_back(stop);
+    }
+    return stops;
+}
+
+MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output) {
+    MeshMixing m;
+    m.mode = output.mode;
+    if (!output.enabled())
+        return m;
+    const std::string unit = textOf(scope, "mixing_gradient_unit");
+    if (unit == "percent")
+        m.unit = HeightUnit::Percent;
+    else if (unit == "mm")
+        m.unit = HeightUnit::Millimetres;
+    else
+        fail("mixing_gradient_unit", "unknown unit '" + unit + "' (percent or mm)");
+    if (m.mode == MixingMode::Dual) {
+        m.fixed = parseMixRatio("mixing_ratio", textOf(scope, "mixing_ratio"), output.channels);
+        return m;
+    }
+    const std::string stops = textOf(scope, "mixing_gradient_stops");
+    m.stops = trimmed(stops).empty() ? twoStopGradient(scope, output.channels)
+                                     : parseGradientStops("mixing_gradient_stops", stops, output.channels);
+    if (m.stops.empty())
+        fail("mixing_gradient_stops", "no stop in '" + stops + "'");
+    return m;
+}
+
+double parseChamberVolumeMm3(const Settings& global) {
+    const double volume = parseReal("mixing_chamber_volume", textOf(global, "mixing_chamber_volume"));
+    if (volume < 0)
+        fail("mixing_chamber_volume", shown(volume) + " mm³ is negative");
+    return volume;
+}
+
+std::vector<Rgb> parseChannelColors(const Settings& global, int channels) {
+    const std::string defaults = defaultText("mixing_channel_colors");
+    const std::string given = textOf(global, "mixing_channel_colors");
+    auto nth = [](const std::string& list, int index) {
+        std::size_t start = 0;
+        for (int i = 0; i < index && start != std::string::npos; ++i) {
+            start = list.find(',', start);
+            start = start == std::string::npos ? start : start + 1;
+        }
+        if (start == std::string::npos)
+            return std::string();
+        return trimmed(list.substr(start, list.find(',', start) - start));
+    };
+    std::vector<Rgb> colors;
+    for (int c = 0; c < channels; ++c) {
+        std::string hex = nth(given, c);
+        if (hex.empty())
+            hex = nth(defaults, c);
+        if (hex.size() != 7 || hex[0] != '#' ||
+            hex.find_first_not_of("0123456789abcdefABCDEF", 1) != std::string::npos)
+            fail("mixing_channel_colors", "'" + hex + "' is not a colour like #ff8800");
+        Rgb rgb{};
+        for (int k = 0; k < 3; ++k)
+            rgb[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(
+                std::stoi(hex.substr(1 + 2 * static_cast<std::size_t>(k), 2), nullptr, 16));
+        colors.push_back(rgb);
+    }
+    return colors;
+}
+
+}  // namespace mixengine

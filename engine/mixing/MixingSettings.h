@@ -1,0 +1,68 @@
+#pragma once
+// Parsing and validation of the `mixing` settings (settings/mixengine/mixing.def.json). Every
+// key has a default in code, so the engine behaves (single mode) when the definition file is
+// absent. Values are checked only when mixing is on (mixing_mode dual or gradient); a bad value
+// is an InputError of one line naming the setting, thrown before any G-code is written.
+//
+// Formats:
+//   mixing_ratio            "0.3:0.7" — one share per channel (fractions, colon-separated,
+//                           missing channels are 0); they must add up to 1.
+//   mixing_gradient_stops   "0=1:0; 50=0:1; 100=0.5:0.5" — height (in mixing_gradient_unit)
+//                           = ratios; heights must not decrease. Empty: the seed's two-stop
+//                           gradient from mixing_gradient_start (A only) to mixing_gradient_end
+//                           (B only).
+//   mixing_channel_colors   "#f2c500,#e0408a,…" — one sRGB colour per channel (preview only).
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+#include "mixing/MixVector.h"
+#include "mixing/MixingOutput.h"
+#include "settings/Settings.h"
+
+namespace mixengine {
+
+enum class HeightUnit {
+    Percent,      ///< percent of the mesh's own height (bottom = 0, top = 100)
+    Millimetres,  ///< mm above the mesh's bottom
+};
+
+struct GradientStop {
+    double height = 0;  ///< in the schedule's unit
+    MixVector mix;
+};
+
+/// How the extrusions of one mesh (or the non-mesh extrusions, from the group's view) are mixed.
+struct MeshMixing {
+    MixingMode mode = MixingMode::Single;
+    HeightUnit unit = HeightUnit::Percent;
+    std::vector<GradientStop> stops;  ///< gradient mode: at least one, heights non-decreasing
+    MixVector fixed;                  ///< dual mode
+};
+
+using Rgb = std::array<std::uint8_t, 3>;
+
+/// The printer-level part (mode, dialect, channels, resolution, tool). Checks the channel count
+/// against machine_extruder_count when the printer declares more than one extruder train.
+MixingOutput parseMixingOutput(const Settings& global);
+
+/// relative_extrusion, or true when the mixing dialect only works with relative extrusion (M83).
+bool relativeExtrusion(const Settings& global);
+
+/// One scope's schedule (mesh view, or the group's view for non-mesh extrusions).
+MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output);
+
+/// mixing_chamber_volume in mm³ (0 = no delay compensation); negative values are an error.
+double parseChamberVolumeMm3(const Settings& global);
+
+/// mixing_channel_colors: `channels` colours (defaults fill missing entries).
+std::vector<Rgb> parseChannelColors(const Settings& global, int channels);
+
+/// "0.3:0.7" → a mix of `channels` channels; `key` names the setting in errors.
+MixVector parseMixRatio(std::string_view key, std::string_view text, int channels);
+
+/// "h=a:b; h=a:b" → stops; `key` names the setting in errors.
+std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_view text, int channels);
+
+}  // namespace mixengine

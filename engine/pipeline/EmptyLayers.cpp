@@ -1,0 +1,56 @@
+#include "pipeline/EmptyLayers.h"
+
+#include <algorithm>
+
+namespace mixengine {
+namespace {
+
+bool printsSomething(const MeshLayerGroups& g) {
+    return !g.inner_walls.empty() || !g.outer_walls.empty() || !g.skin.empty() || !g.infill.empty();
+}
+
+bool layerEmpty(const GroupToolpaths& toolpaths, const std::vector<std::vector<SlicedLayer>>& meshes,
+                std::size_t i) {
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        if (i < mesh.layers.size() && printsSomething(mesh.layers[i]))
+            return false;
+    }
+    if (i < toolpaths.support.size() && !toolpaths.support[i].empty())
+        return false;
+    return std::none_of(meshes.begin(), meshes.end(), [&](const auto& layers) {
+        return i < layers.size() && !layers[i].open_polylines.empty();
+    });
+}
+
+template <typename T>
+void dropFront(std::vector<T>& list, std::size_t count) {
+    list.erase(list.begin(), list.begin() + static_cast<std::ptrdiff_t>(std::min(count, list.size())));
+}
+
+}  // namespace
+
+std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths,
+                               const std::vector<std::vector<SlicedLayer>>& meshes) {
+    std::size_t layers = 0;
+    for (const MeshToolpaths& mesh : toolpaths.meshes)
+        layers = std::max(layers, mesh.layers.size());
+    std::size_t count = 0;
+    while (count < layers && layerEmpty(toolpaths, meshes, count))
+        ++count;
+    return count == layers ? 0 : count;
+}
+
+void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths, std::vector<LayerZ>& heights,
+                       std::vector<Paths>& comb_areas) {
+    if (count == 0)
+        return;
+    for (MeshToolpaths& mesh : toolpaths.meshes)
+        dropFront(mesh.layers, count);
+    dropFront(toolpaths.support, count);
+    dropFront(toolpaths.prime_tower, count);
+    dropFront(toolpaths.ooze_shield, count);
+    dropFront(comb_areas, count);
+    heights.resize(heights.size() - std::min(count, heights.size()));
+}
+
+}  // namespace mixengine

@@ -1,0 +1,23 @@
+#pragma once
+// What the G-code writer needs from the resolved settings: the export parameters (filament,
+// retraction, extrusion mode, mixing dialect, kinematics for the time estimate), the per-extruder
+// tool-change data, and the header's description of each extruder train.
+#include "gcode/GCodeExport.h"
+#include "gcode/Header.h"
+#include "gcode/PlanWriter.h"
+#include "pipeline/Scene.h"
+
+namespace mixengine {
+
+/// machine_acceleration / acceleration_print, jerk, per-axis limits (Cura's keys).
+Kinematics kinematicsOf(const Settings& global);
+
+ExportParams exportParams(const Scene& scene);
+
+PlanWriterParams writerParams(const Scene& scene);
+
+/// Fills summary.machine_name, build plate and summary.extruders (Griffin / UltiGCode headers);
+/// summary.filament_per_extruder must already hold one value per extruder train.
+void describeExtruders(const Scene& scene, bool volumetric, PrintSummary& summary);
+
+}  // namespace mixengine

@@ -1,0 +1,216 @@
+#include "planning/CombBoundary.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mixengine {
+namespace {
+
+__extension__ typedef __int128 Wide;
+
+int orientation(const Point2& a, const Point2& b, const Point2& c) {
+    const Wide cross = Wide(b.X - a.X) * Wide(c.Y - a.Y) - Wide(b.Y - a.Y) * Wide(c.X - a.X);
+    return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+}
+
+/// Proper crossing: the segments cross at a point interior to both (touching does not count).
+bool properlyCross(const Point2& p, const Point2& q, const Point2& a, const Point2& b) {
+    const int o1 = orientation(p, q, a), o2 = orientation(p, q, b);
+    const int o3 = orientation(a, b, p), o4 = orientation(a, b, q);
+    return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+bool onSegment(const Point2& p, const Point2& a, const Point2& b) {
+    return orientation(a, b, p) == 0 && std::min(a.X, b.X) <= p.X && p.X <= std::max(a.X, b.X) &&
+           std::min(a.Y, b.Y) <= p.Y && p.Y <= std::max(a.Y, b.Y);
+}
+
+}  // namespace
+
+CombBoundary::CombBoundary(const Paths& area) : loops_(area) {
+    coord_um min_x = INT64_MAX, min_y = INT64_MAX, max_x = INT64_MIN, max_y = INT64_MIN;
+    for (std::uint32_t l = 0; l < loops_.size(); ++l) {
+        const Path& loop = loops_[l];
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const Point2& a = loop[i];
+            const Point2& b = loop[(i + 1) % loop.size()];
+            if (a == b)
+                continue;
+            edges_.push_back({a, b, l, static_cast<std::uint32_t>(i)});
+            min_x = std::min(min_x, a.X), max_x = std::max(max_x, a.X);
+            min_y = std::min(min_y, a.Y), max_y = std::max(max_y, a.Y);
+        }
+    }
+    if (edges_.empty())
+        return;
+    // About one edge per cell on average, cells no smaller than 0.5 mm.
+    const double width = double(max_x - min_x) + 1, height = double(max_y - min_y) + 1;
+    const double cell = std::max(500.0, std::sqrt(width * height / double(edges_.size())));
+    cell_um_ = static_cast<coord_um>(cell);
+    origin_ = {min_x, min_y};
+    columns_ = static_cast<coord_um>(width / cell) + 1;
+    rows_ = static_cast<coord_um>(height / cell) + 1;
+    cells_.resize(static_cast<std::size_t>(columns_ * rows_));
+    for (std::uint32_t e = 0; e < edges_.size(); ++e) {
+        const Edge& edge = edges_[e];
+        const coord_um c0 = column(std::min(edge.a.X, edge.b.X)), c1 = column(std::max(edge.a.X, edge.b.X));
+        const coord_um r0 = row(std::min(edge.a.Y, edge.b.Y)), r1 = row(std::max(edge.a.Y, edge.b.Y));
+        for (coord_um r = r0; r <= r1; ++r)
+            for (coord_um c = c0; c <= c1; ++c)
+                cells_[cellIndex(c, r)].push_back(e);
+    }
+}
+
+coord_um CombBoundary::column(coord_um x) const {
+    return std::clamp<coord_um>((x - origin_.X) / cell_um_, 0, columns_ - 1);
+}
+
+coord_um CombBoundary::row(coord_um y) const {
+    return std::clamp<coord_um>((y - origin_.Y) / cell_um_, 0, rows_ - 1);
+}
+
+bool CombBoundary::inside(const Point2& p) const {
+    if (edges_.empty() || p.Y < origin_.Y || p.Y >= origin_.Y + rows_ * cell_um_ || p.X < origin_.X ||
+        p.X >= origin_.X + columns_ * cell_um_)
+        return false;
+    const coord_um r = row(p.Y);
+    bool odd = false;
+    for (coord_um c = column(p.X); c < columns_; ++c) {
+        const coord_um cell_left = origin_.X + c * cell_um_;
+        const coord_um cell_right = cell_left + cell_um_;
+        for (std::uint32_t e : cells_[cellIndex(c, r)]) {
+            const Edge& edge = edges_[e];
+            if (onSegment(p, edge.a, edge.b))
+                return true;
+            // Half-open rule on Y so a vertex on the ray counts once.
+            if ((edge.a.Y > p.Y) == (edge.b.Y > p.Y))
+                continue;
+            const double x = double(edge.a.X) + double(p.Y - edge.a.Y) * double(edge.b.X - edge.a.X) /
+                                                    double(edge.b.Y - edge.a.Y);
+            if (x < double(p.X))
+                continue;
+            // Count the crossing only in the cell that holds it (edges span several cells).
+            const bool first_cell = c == column(p.X);
+            if ((x >= double(cell_left) || first_cell) && (x < double(cell_right) || c == columns_ - 1))
+                odd = !odd;
+        }
+    }
+    return odd;
+}
+
+bool CombBoundary::straightInside(const Point2& a, const Point2& b) const {
+    // The midpoint catches chords between two boundary points that run outside without a
+    // proper crossing (e.g. corner to edge across a hole).
+    const Point2 middle{a.X + (b.X - a.X) / 2, a.Y + (b.Y - a.Y) / 2};
+    if (!inside(a) || !inside(b) || !inside(middle))
+        return false;
+    const coord_um c0 = column(std::min(a.X, b.X)), c1 = column(std::max(a.X, b.X));
+    const coord_um r0 = row(std::min(a.Y, b.Y)), r1 = row(std::max(a.Y, b.Y));
+    for (coord_um r = r0; r <= r1; ++r) {
+        for (coord_um c = c0; c <= c1; ++c) {
+            for (std::uint32_t e : cells_[cellIndex(c, r)]) {
+                if (properlyCross(a, b, edges_[e].a, edges_[e].b))
+                    return false;
+            }
+        }
+    }
+    return true;
+}
+
+std::vector<CombBoundary::Crossing> CombBoundary::crossings(const Point2& a, const Point2& b) const {
+    std::vector<Crossing> found;
+    const coord_um c0 = column(std::min(a.X, b.X)), c1 = column(std::max(a.X, b.X));
+    const coord_um r0 = row(std::min(a.Y, b.Y)), r1 = row(std::max(a.Y, b.Y));
+    std::vector<std::uint32_t> seen;
+    for (coord_um r = r0; r <= r1; ++r) {
+        for (coord_um c = c0; c <= c1; ++c) {
+            for (std::uint32_t e : cells_[cellIndex(c, r)]) {
+                const Edge& edge = edges_[e];
+                if (!properlyCross(a, b, edge.a, edge.b) ||
+                    std::find(seen.begin(), seen.end(), e) != seen.end())
+                    continue;
+                seen.push_back(e);
+                const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+                const double ex = double(edge.b.X - edge.a.X), ey = double(edge.b.Y - edge.a.Y);
+                const double denominator = dx * ey - dy * ex;
+                const double t = (double(edge.a.X - a.X) * ey - double(edge.a.Y - a.Y) * ex) / denominator;
+                const Point2 at{a.X + static_cast<coord_um>(std::llround(t * dx)),
+                                a.Y + static_cast<coord_um>(std::llround(t * dy))};
+                found.push_back({t, at, &edge});
+            }
+        }
+    }
+    std::sort(found.begin(), found.end(), [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
+    return found;
+}
+
+Path CombBoundary::aroundLoop(const Crossing& from, const Crossing& to) const {
+    const Path& loop = loops_[from.edge->loop];
+    const std::size_t n = loop.size();
+    // Edge i runs from loop[i] to loop[i + 1]; the two crossings lie on different edges i and j
+    // (a straight line crosses an edge once). Forward: loop[i+1] … loop[j]; backward: loop[i] …
+    // loop[j+1].
+    const std::size_t i = from.edge->index, j = to.edge->index;
+    auto walk = [&](bool forward) {
+        Path points{from.at};
+        std::size_t k = forward ? (i + 1) % n : i;
+        const std::size_t last = forward ? j : (j + 1) % n;
+        points.push_back(loop[k]);
+        for (std::size_t guard = 0; k != last && guard < n; ++guard) {
+            k = forward ? (k + 1) % n : (k + n - 1) % n;
+            points.push_back(loop[k]);
+        }
+        points.push_back(to.at);
+        return points;
+    };
+    auto length = [](const Path& p) {
+        double sum = 0;
+        for (std::size_t m = 1; m < p.size(); ++m)
+            sum += std::hypot(double(p[m].X - p[m - 1].X), double(p[m].Y - p[m - 1].Y));
+        return sum;
+    };
+    Path forward = walk(true), backward = walk(false);
+    return length(forward) <= length(backward) ? forward : backward;
+}
+
+Path CombBoundary::shortened(const Point2& start, const Path& points) const {
+    constexpr std::size_t kLookAhead = 48;
+    Path result;
+    Point2 current = start;
+    std::size_t i = 0;
+    while (i < points.size()) {
+        std::size_t best = i;
+        const std::size_t last = std::min(points.size() - 1, i + kLookAhead);
+        for (std::size_t j = last; j > i; --j) {
+            if (straightInside(current, points[j])) {
+                best = j;
+                break;
+            }
+        }
+        current = points[best];
+        result.push_back(current);
+        i = best + 1;
+    }
+    return result;
+}
+
+std::optional<Path> CombBoundary::route(const Point2& a, const Point2& b) const {
+    if (!inside(a) || !inside(b))
+        return std::nullopt;
+    const std::vector<Crossing> found = crossings(a, b);
+    if (found.empty())
+        return Path{b};
+    if (found.size() % 2 != 0)
+        return std::nullopt;
+    Path points;
+    for (std::size_t k = 0; k + 1 < found.size(); k += 2) {
+        if (found[k].edge->loop != found[k + 1].edge->loop)
+            return std::nullopt;  // leaves through one loop and comes back through another: other island
+        const Path around = aroundLoop(found[k], found[k + 1]);
+        points.insert(points.end(), around.begin(), around.end());
+    }
+    points.push_back(b);
+    return shortened(a, points);
+}
+
+}  // namespace mixengine

@@ -1,0 +1,60 @@
+#pragma once
+// Combing: a travel that stays inside the printed part needs no retraction (Cura's
+// retraction_combing). This answers "does the straight travel a→b stay inside `area`?" quickly
+// for areas with many thousands of edges: the edges are bucketed in a uniform grid, a point is
+// inside when a ray to +X crosses the boundary an odd number of times (counted cell by cell, each
+// crossing in the cell that contains it), and the segment must cross no edge.
+// Exact integer geometry; points on the boundary count as inside, touching is not crossing.
+#include <optional>
+#include <vector>
+
+#include "geometry/Point.h"
+
+namespace mixengine {
+
+class CombBoundary {
+  public:
+    CombBoundary() = default;
+    /// `area`: closed polygons, holes included (even-odd), microns.
+    explicit CombBoundary(const Paths& area);
+
+    bool empty() const { return edges_.empty(); }
+    bool inside(const Point2& p) const;
+    /// Both end points and the midpoint inside, and the segment crosses no boundary edge.
+    bool straightInside(const Point2& a, const Point2& b) const;
+    /// A travel from a to b that stays inside: the straight line where it can, else around each
+    /// boundary loop it would cross, along the loop's shorter side, then shortened where a
+    /// straight shortcut stays inside. The points after `a`, ending with b; nothing when a and b
+    /// are not both inside or lie in different islands.
+    std::optional<Path> route(const Point2& a, const Point2& b) const;
+
+  private:
+    struct Edge {
+        Point2 a, b;
+        std::uint32_t loop = 0;   ///< index into loops_
+        std::uint32_t index = 0;  ///< a = loops_[loop][index]
+    };
+    struct Crossing {
+        double t = 0;  ///< along the travel, 0..1
+        Point2 at{};
+        const Edge* edge = nullptr;
+    };
+    std::vector<Crossing> crossings(const Point2& a, const Point2& b) const;
+    Path aroundLoop(const Crossing& from, const Crossing& to) const;
+    Path shortened(const Point2& start, const Path& points) const;
+    std::size_t cellIndex(coord_um cx, coord_um cy) const {
+        return static_cast<std::size_t>(cy) * static_cast<std::size_t>(columns_) +
+               static_cast<std::size_t>(cx);
+    }
+    coord_um column(coord_um x) const;
+    coord_um row(coord_um y) const;
+
+    Paths loops_;
+    std::vector<Edge> edges_;
+    std::vector<std::vector<std::uint32_t>> cells_;  ///< edge indices per cell
+    Point2 origin_{0, 0};
+    coord_um cell_um_ = 1;
+    coord_um columns_ = 0, rows_ = 0;
+};
+
+}  // namespace mixengine

@@ -1,0 +1,82 @@
+#include "planning/Cooling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mixengine {
+
+CoolingParams coolingParams(const Settings& s) {
+    CoolingParams p;
+    p.fan_enabled = s.boolean("cool_fan_enabled");
+    p.fan_min_ratio = s.ratio("cool_fan_speed_min");
+    p.fan_max_ratio = s.ratio("cool_fan_speed_max");
+    p.fan_first_ratio = s.ratio("cool_fan_speed_0");
+    p.fan_full_layer = static_cast<int>(s.integer("cool_fan_full_layer"));
+    p.min_layer_time_s = s.durationSeconds("cool_min_layer_time");
+    p.fan_max_layer_time_s = s.durationSeconds("cool_min_layer_time_fan_speed_max");
+    p.min_speed_mm_s = s.velocityMmPerS("cool_min_speed");
+    return p;
+}
+
+namespace {
+
+double lengthMm(const Point2& a, const Point2& b) {
+    return std::hypot(double(b.X - a.X), double(b.Y - a.Y)) / kMicronsPerMm;
+}
+
+/// Time spent extruding and travelling, separately.
+std::pair<double, double> splitSeconds(const PlannedLayer& layer, Point2 head) {
+    double extruding = 0, travelling = 0;
+    for (const PlanStep& step : layer.steps) {
+        if (step.kind != PlanStep::Kind::Travel && step.kind != PlanStep::Kind::Extrude)
+            continue;
+        const double t = step.speed_mm_s > 0 ? lengthMm(head, step.to) / step.speed_mm_s : 0;
+        (step.kind == PlanStep::Kind::Extrude ? extruding : travelling) += t;
+        head = step.to;
+    }
+    return {extruding, travelling};
+}
+
+double fanRatio(const CoolingParams& p, int layer, double seconds) {
+    if (!p.fan_enabled)
+        return 0;
+    double regular = p.fan_min_ratio;
+    if (seconds <= p.min_layer_time_s) {
+        regular = p.fan_max_ratio;
+    } else if (seconds < p.fan_max_layer_time_s && p.fan_max_layer_time_s > p.min_layer_time_s) {
+        const double t = (p.fan_max_layer_time_s - seconds) / (p.fan_max_layer_time_s - p.min_layer_time_s);
+        regular = p.fan_min_ratio + (p.fan_max_ratio - p.fan_min_ratio) * t;
+    }
+    const int full = p.fan_full_layer - 1;  // 0-based layer at full speed
+    if (layer >= full || full <= 0)
+        return regular;
+    return p.fan_first_ratio + (regular - p.fan_first_ratio) * double(layer) / double(full);
+}
+
+}  // namespace
+
+double naiveLayerSeconds(const PlannedLayer& layer, Point2 start) {
+    const auto [extruding, travelling] = splitSeconds(layer, start);
+    return extruding + travelling;
+}
+
+void applyCooling(PlannedLayer& layer, Point2 start, const CoolingParams& params) {
+    const auto [extruding, travelling] = splitSeconds(layer, start);
+    double seconds = extruding + travelling;
+    if (seconds < params.min_layer_time_s && extruding > 0) {
+        const double wanted_extruding = params.min_layer_time_s - travelling;
+        const double factor = std::clamp(extruding / std::max(wanted_extruding, 1e-9), 0.0, 1.0);
+        for (PlanStep& step : layer.steps) {
+            if (step.kind == PlanStep::Kind::Extrude)
+                step.speed_mm_s =
+                    std::max(std::min(params.min_speed_mm_s, step.speed_mm_s), step.speed_mm_s * factor);
+        }
+        seconds = naiveLayerSeconds(layer, start);
+    }
+    for (PlanStep& step : layer.steps) {
+        if (step.kind == PlanStep::Kind::SetFan)
+            step.fan_ratio = fanRatio(params, layer.index, seconds);
+    }
+}
+
+}  // namespace mixengine

@@ -1,0 +1,34 @@
+#pragma once
+// Cooling of one planned layer, with Cura's keys:
+//   - minimum layer time: when the layer would take less than cool_min_layer_time, every
+//     extrusion is slowed by the same factor so that it takes that long, but never below
+//     cool_min_speed (travel keeps its speed);
+//   - fan: from cool_fan_full_layer on, cool_fan_speed_min for layers that take at least
+//     cool_min_layer_time_fan_speed_max, cool_fan_speed_max for layers at or under
+//     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0.
+// Layer time here is the planner's simple estimate: distance / speed of every move.
+#include "planning/LayerPlan.h"
+#include "settings/Settings.h"
+
+namespace mixengine {
+
+struct CoolingParams {
+    bool fan_enabled = true;
+    double fan_min_ratio = 1.0;  ///< cool_fan_speed_min
+    double fan_max_ratio = 1.0;  ///< cool_fan_speed_max
+    double fan_first_ratio = 0;  ///< cool_fan_speed_0
+    int fan_full_layer = 2;      ///< cool_fan_full_layer (1-based as in Cura)
+    double min_layer_time_s = 5;
+    double fan_max_layer_time_s = 10;  ///< cool_min_layer_time_fan_speed_max
+    double min_speed_mm_s = 10;
+};
+
+CoolingParams coolingParams(const Settings& settings);
+
+/// Seconds the layer's moves take at their planned speeds (distance / speed, from `start`).
+double naiveLayerSeconds(const PlannedLayer& layer, Point2 start);
+
+/// Slows the layer down and sets its fan (the layer's SetFan steps) as described above.
+void applyCooling(PlannedLayer& layer, Point2 start, const CoolingParams& params);
+
+}  // namespace mixengine

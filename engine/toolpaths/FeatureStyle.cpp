@@ -1,0 +1,62 @@
+#include "toolpaths/FeatureStyle.h"
+
+#include <cmath>
+
+namespace mixengine {
+
+int ownExtruder(const Settings& s) {
+    if (!s.has("extruder_nr"))
+        return 0;
+    const int nr = s.extruderIndex("extruder_nr");
+    return nr < 0 ? 0 : nr;
+}
+
+double layerSpeed(const Settings& s, std::string_view speed_key, int layer) {
+    const double speed = s.velocityMmPerS(speed_key);
+    if (!s.has("speed_print_layer_0"))
+        return speed;
+    const double first = s.velocityMmPerS("speed_print_layer_0");
+    if (layer <= 0)
+        return first;
+    const long long slowdown = s.has("speed_slowdown_layers") ? s.integer("speed_slowdown_layers") : 0;
+    if (layer >= slowdown)
+        return speed;
+    const double t = double(layer) / double(slowdown);
+    return first + (speed - first) * t;
+}
+
+FeatureStyle featureStyle(const Settings& s, const FeatureKeys& keys, int layer) {
+    FeatureStyle style;
+    style.width_um = s.lengthMicrons(keys.width);
+    if (layer == 0 && s.has("initial_layer_line_width_factor"))
+        style.width_um = static_cast<coord_um>(
+            std::llround(double(style.width_um) * s.ratio("initial_layer_line_width_factor")));
+    style.speed_mm_s = layerSpeed(s, keys.speed, layer);
+    style.flow = s.has(keys.flow) ? s.ratio(keys.flow) : 1.0;
+    if (layer == 0 && s.has("material_flow_layer_0"))
+        style.flow *= s.ratio("material_flow_layer_0");
+    const int nr = s.has(keys.extruder) ? s.extruderIndex(keys.extruder) : -1;
+    style.extruder = nr >= 0 ? nr : ownExtruder(s);
+    return style;
+}
+
+MeshStyles meshStyles(const Settings& s, int layer) {
+    MeshStyles m;
+    m.wall_0 = featureStyle(
+        s, {"wall_line_width_0", "speed_wall_0", "wall_0_material_flow", "wall_0_extruder_nr"}, layer);
+    m.wall_x = featureStyle(
+        s, {"wall_line_width_x", "speed_wall_x", "wall_x_material_flow", "wall_x_extruder_nr"}, layer);
+    m.skin = featureStyle(
+        s, {"skin_line_width", "speed_topbottom", "skin_material_flow", "top_bottom_extruder_nr"}, layer);
+    m.roofing =
+        s.has("roofing_line_width") && s.has("speed_roofing")
+            ? featureStyle(
+                  s, {"roofing_line_width", "speed_roofing", "roofing_material_flow", "roofing_extruder_nr"},
+                  layer)
+            : m.skin;
+    m.infill = featureStyle(
+        s, {"infill_line_width", "speed_infill", "infill_material_flow", "infill_extruder_nr"}, layer);
+    return m;
+}
+
+}  // namespace mixengine

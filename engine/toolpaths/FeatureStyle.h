@@ -1,0 +1,43 @@
+#pragma once
+// Line width, speed, flow and extruder of one feature on one layer, from Cura's keys:
+//   width    — the feature's *_line_width, × initial_layer_line_width_factor on layer 0;
+//   speed    — the feature's speed_*; layer 0 prints at speed_print_layer_0 and layers
+//              1 … speed_slowdown_layers-1 ramp linearly from it (CuraEngine's smoothing):
+//              v = v0 + (v − v0) · layer / speed_slowdown_layers;
+//   flow     — the feature's *_material_flow, × material_flow_layer_0 on layer 0 (a missing key
+//              counts as 100 %);
+//   extruder — the feature's *_extruder_nr; −1 (or a missing key) means the mesh's extruder_nr.
+#include <string_view>
+
+#include "geometry/Point.h"
+#include "settings/Settings.h"
+
+namespace mixengine {
+
+struct FeatureStyle {
+    coord_um width_um = 400;
+    double speed_mm_s = 60;
+    double flow = 1.0;
+    int extruder = 0;
+};
+
+struct FeatureKeys {
+    std::string_view width, speed, flow, extruder;
+};
+
+/// The mesh's (or scope's) own extruder: extruder_nr, 0 when absent.
+int ownExtruder(const Settings& s);
+
+/// Speed of `speed_key` on `layer` with the first-layer speed and the slow-down ramp.
+double layerSpeed(const Settings& s, std::string_view speed_key, int layer);
+
+FeatureStyle featureStyle(const Settings& s, const FeatureKeys& keys, int layer);
+
+/// The styles of a mesh's own features on one layer.
+struct MeshStyles {
+    FeatureStyle wall_0, wall_x, skin, roofing, infill;
+};
+
+MeshStyles meshStyles(const Settings& s, int layer);
+
+}  // namespace mixengine

@@ -1,0 +1,92 @@
+#include "toolpaths/GroupToolpaths.h"
+
+#include <set>
+
+#include "common/ParallelFor.h"
+#include "toolpaths/Adhesion.h"
+#include "toolpaths/PolygonOps.h"
+#include "toolpaths/PrimeTower.h"
+#include "toolpaths/Support.h"
+
+namespace mixengine {
+namespace {
+
+std::vector<Paths> unitedModel(const ToolpathInput& input, int threads) {
+    std::vector<Paths> model(input.heights.size());
+    parallelFor(model.size(), threads, [&](std::size_t i) {
+        Paths all;
+        for (const ToolpathMeshInput& mesh : input.meshes) {
+            if (i < mesh.layers->size())
+                all.insert(all.end(), (*mesh.layers)[i].outlines.begin(), (*mesh.layers)[i].outlines.end());
+        }
+        model[i] = input.meshes.size() > 1 ? unionOf(all) : std::move(all);
+    });
+    return model;
+}
+
+void collect(const std::vector<ExtrusionPath>& paths, std::set<int>& used) {
+    for (const ExtrusionPath& path : paths)
+        used.insert(path.extruder);
+}
+
+std::vector<std::set<int>> extrudersPerLayer(const GroupToolpaths& result, std::size_t layers) {
+    std::vector<std::set<int>> used(layers);
+    for (std::size_t i = 0; i < layers; ++i) {
+        for (const MeshToolpaths& mesh : result.meshes) {
+            if (i >= mesh.layers.size())
+                continue;
+            const MeshLayerGroups& g = mesh.layers[i];
+            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+                collect(*group, used[i]);
+        }
+        collect(result.support[i], used[i]);
+    }
+    return used;
+}
+
+Paths pointsOf(const std::vector<ExtrusionPath>& paths) {
+    Paths points;
+    for (const ExtrusionPath& path : paths)
+        points.push_back(path.points);
+    return points;
+}
+
+}  // namespace
+
+GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
+    GroupToolpaths result;
+    for (const ToolpathMeshInput& mesh : input.meshes) {
+        MeshToolpaths paths;
+        paths.settings = mesh.settings;
+        paths.name = mesh.name;
+        paths.layers = generateMeshToolpaths(*mesh.layers, *mesh.settings, threads);
+        result.meshes.push_back(std::move(paths));
+    }
+    const std::vector<Paths> model = unitedModel(input, threads);
+
+    SupportInput support{input.global, input.extruders, &input.heights, {}, &model};
+    for (const ToolpathMeshInput& mesh : input.meshes)
+        support.meshes.push_back({mesh.settings, mesh.layers});
+    SupportResult support_result = generateSupport(support, threads);
+    result.support = std::move(support_result.paths);
+
+    std::vector<std::set<int>> used = extrudersPerLayer(result, input.heights.size());
+    const TowerInput tower{input.global, input.extruders, &input.heights, used, &model};
+    result.prime_tower = generatePrimeTower(tower);
+    result.ooze_shield = generateOozeShield(tower);
+
+    if (!model.empty()) {
+        // As CuraEngine, the brim goes around the support on layer 0 too.
+        AdhesionInput adhesion{input.global, input.extruders,
+                               unionOf(model[0], support_result.first_layer_area),
+                               pointsOf(result.support[0])};
+        const Paths tower_points = pointsOf(result.prime_tower[0]);
+        adhesion.extras.insert(adhesion.extras.end(), tower_points.begin(), tower_points.end());
+        AdhesionResult skirt = generateAdhesion(adhesion);
+        result.adhesion = std::move(skirt.paths);
+        result.warnings = std::move(skirt.warnings);
+    }
+    return result;
+}
+
+}  // namespace mixengine

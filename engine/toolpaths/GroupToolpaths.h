@@ -1,0 +1,58 @@
+#pragma once
+// The toolpath stage for one mesh group: from the sliced outlines of every mesh to typed extrusion
+// lines per layer — each mesh's walls, skin and infill, the support, and the skirt or brim.
+//
+// Contract: plain data in, plain data out. Every ExtrusionPath carries the extruder that prints it
+// (the mesh's extruder_nr or a feature's *_extruder_nr), its width, speed and feature. Paths are
+// grouped, not yet ordered: ordering, travel and retraction belong to planning. Wall loops with a
+// chosen seam start at points.front() and have fixed_start set.
+//
+// Order of work: each mesh (toolpaths/MeshToolpaths.h), then the support around all meshes
+// (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
+// (toolpaths/PrimeTower.h), and last the skirt or brim around everything on layer 0
+// (toolpaths/Adhesion.h). `threads` is used inside every step; the result does not depend on it.
+#include <string>
+#include <vector>
+
+#include "settings/Settings.h"
+#include "slicing/LayerHeights.h"
+#include "slicing/Slicer.h"
+#include "toolpaths/MeshToolpaths.h"
+
+namespace mixengine {
+
+struct ToolpathMeshInput {
+    const Settings* settings = nullptr;                ///< the mesh's resolved settings
+    std::string name;                                  ///< for ;MESH:
+    const std::vector<SlicedLayer>* layers = nullptr;  ///< index = layer
+};
+
+struct ToolpathInput {
+    const Settings* global = nullptr;                  ///< the group's settings
+    const std::vector<Settings>* extruders = nullptr;  ///< resolved extruder trains, index = extruder_nr
+    std::vector<LayerZ> heights;
+    std::vector<ToolpathMeshInput> meshes;
+};
+
+struct MeshToolpaths {
+    const Settings* settings = nullptr;
+    std::string name;
+    std::vector<MeshLayerGroups> layers;  ///< index = layer
+};
+
+struct GroupToolpaths {
+    std::vector<MeshToolpaths> meshes;
+    std::vector<std::vector<ExtrusionPath>> support;  ///< [layer]; support and its interface
+    std::vector<ExtrusionPath> adhesion;              ///< skirt or brim, printed first on layer 0
+    /// [layer]; the prime tower's paths for every extruder (ExtrusionPath::extruder), printed by
+    /// each extruder right after it becomes active on that layer. Empty without a prime tower.
+    std::vector<std::vector<ExtrusionPath>> prime_tower;
+    std::vector<std::vector<ExtrusionPath>> ooze_shield;  ///< [layer]; empty without an ooze shield
+    /// Settings the stage could not honour (e.g. adhesion_type raft printed as a skirt), one line
+    /// each, for the caller to log.
+    std::vector<std::string> warnings;
+};
+
+GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads);
+
+}  // namespace mixengine

@@ -1,0 +1,146 @@
+#include "toolpaths/PolygonOps.h"
+
+#include <cmath>
+
+namespace mixengine {
+namespace {
+
+constexpr double kArcToleranceUm = 10.0;
+
+Paths offsetWith(const Paths& polygons, coord_um delta_um, ClipperLib::JoinType join) {
+    if (polygons.empty())
+        return {};
+    ClipperLib::ClipperOffset offset(2.0, kArcToleranceUm);
+    offset.AddPaths(polygons, join, ClipperLib::etClosedPolygon);
+    Paths result;
+    offset.Execute(result, static_cast<double>(delta_um));
+    return result;
+}
+
+Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(a, ClipperLib::ptSubject, true);
+    clipper.AddPaths(b, ClipperLib::ptClip, true);
+    Paths result;
+    clipper.Execute(operation, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return result;
+}
+
+void collectIslands(const ClipperLib::PolyNode& node, std::vector<Paths>& islands) {
+    for (const ClipperLib::PolyNode* child : node.Childs) {
+        // Children of the root and of holes are outer contours.
+        Paths island{child->Contour};
+        for (const ClipperLib::PolyNode* hole : child->Childs) {
+            island.push_back(hole->Contour);
+            collectIslands(*hole, islands);
+        }
+        islands.push_back(std::move(island));
+    }
+}
+
+}  // namespace
+
+Paths offsetPolygons(const Paths& polygons, coord_um delta_um) {
+    return offsetWith(polygons, delta_um, ClipperLib::jtRound);
+}
+
+Paths offsetMiter(const Paths& polygons, coord_um delta_um) {
+    return offsetWith(polygons, delta_um, ClipperLib::jtMiter);
+}
+
+Paths openPolygons(const Paths& polygons, coord_um radius_um) {
+    if (radius_um <= 0)
+        return polygons;
+    return offsetMiter(offsetMiter(polygons, -radius_um), radius_um);
+}
+
+Paths unionOf(const Paths& polygons) {
+    Paths result;
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(polygons, ClipperLib::ptSubject, true);
+    clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    return result;
+}
+
+Paths unionOf(const Paths& a, const Paths& b) {
+    return clip(a, b, ClipperLib::ctUnion);
+}
+
+Paths intersectAll(const Paths& a, const Paths& b) {
+    if (a.empty() || b.empty())
+        return {};
+    return clip(a, b, ClipperLib::ctIntersection);
+}
+
+Paths differenceOf(const Paths& a, const Paths& b) {
+    if (a.empty())
+        return {};
+    return clip(a, b, ClipperLib::ctDifference);
+}
+
+Paths cleanPolygons(const Paths& polygons, coord_um tolerance_um) {
+    Paths result;
+    ClipperLib::CleanPolygons(polygons, result, static_cast<double>(tolerance_um));
+    std::erase_if(result, [](const Path& p) { return p.size() < 3; });
+    return result;
+}
+
+Paths clipLines(const Paths& lines, const Paths& area) {
+    if (lines.empty() || area.empty())
+        return {};
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(lines, ClipperLib::ptSubject, false);
+    clipper.AddPaths(area, ClipperLib::ptClip, true);
+    ClipperLib::PolyTree tree;
+    clipper.Execute(ClipperLib::ctIntersection, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    Paths pieces;
+    ClipperLib::OpenPathsFromPolyTree(tree, pieces);
+    return pieces;
+}
+
+double areaUm2(const Paths& polygons) {
+    double total = 0;
+    for (const Path& p : polygons)
+        total += ClipperLib::Area(p);
+    return total;
+}
+
+std::vector<Paths> splitIslands(const Paths& polygons) {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(polygons, ClipperLib::ptSubject, true);
+    ClipperLib::PolyTree tree;
+    clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+    std::vector<Paths> islands;
+    collectIslands(tree, islands);
+    return islands;
+}
+
+Paths removeSmallIslands(const Paths& polygons, double min_area_um2) {
+    if (min_area_um2 <= 0)
+        return polygons;
+    Paths kept;
+    for (Paths& island : splitIslands(polygons)) {
+        if (areaUm2(island) < min_area_um2)
+            continue;
+        for (Path& p : island)
+            kept.push_back(std::move(p));
+    }
+    return kept;
+}
+
+ClipperLib::IntRect boundsOf(const Paths& polygons) {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(polygons, ClipperLib::ptSubject, true);
+    return clipper.GetBounds();
+}
+
+double lengthUm(const Path& path, bool closed) {
+    double total = 0;
+    for (std::size_t i = 1; i < path.size(); ++i)
+        total += std::hypot(double(path[i].X - path[i - 1].X), double(path[i].Y - path[i - 1].Y));
+    if (closed && path.size() > 2)
+        total += std::hypot(double(path.front().X - path.back().X), double(path.front().Y - path.back().Y));
+    return total;
+}
+
+}  // namespace mixengine

@@ -1,0 +1,49 @@
+#pragma once
+// Area operations on closed polygons in microns (Clipper, non-zero fill), shared by the toolpath
+// generators. Areas follow geometry/Point.h: outer contours counter-clockwise, holes clockwise.
+#include <vector>
+
+#include "geometry/Point.h"
+
+namespace mixengine {
+
+/// Offset with round joins (arc tolerance 10 µm); negative = inwards. Used where CuraEngine's
+/// lines are round: skirt, brim, support distances, ooze shield.
+Paths offsetPolygons(const Paths& polygons, coord_um delta_um);
+
+/// Offset with mitred joins (limit 2 × delta): keeps corners down to about 60° sharp, as
+/// CuraEngine's walls, skin and infill areas are.
+Paths offsetMiter(const Paths& polygons, coord_um delta_um);
+
+/// Removes the parts narrower than 2·radius (erode, then grow back with mitred joins), so the
+/// corners of what is left stay as they were.
+Paths openPolygons(const Paths& polygons, coord_um radius_um);
+
+Paths unionOf(const Paths& polygons);
+Paths unionOf(const Paths& a, const Paths& b);
+Paths intersectAll(const Paths& a, const Paths& b);
+Paths differenceOf(const Paths& a, const Paths& b);
+
+/// Removes vertices closer than `tolerance_um` to a neighbour or to the line through their
+/// neighbours (Clipper's CleanPolygons); loops that degenerate disappear.
+Paths cleanPolygons(const Paths& polygons, coord_um tolerance_um);
+
+/// Open polylines clipped to the area (the pieces inside it).
+Paths clipLines(const Paths& lines, const Paths& area);
+
+/// Signed total area in µm² (holes count negative).
+double areaUm2(const Paths& polygons);
+
+/// The islands of an area: each outer contour with the holes directly inside it.
+std::vector<Paths> splitIslands(const Paths& polygons);
+
+/// Drops islands whose area (holes subtracted) is below `min_area_um2`.
+Paths removeSmallIslands(const Paths& polygons, double min_area_um2);
+
+/// Axis-aligned bounds; empty input gives an all-zero rectangle.
+ClipperLib::IntRect boundsOf(const Paths& polygons);
+
+/// Total length of the polylines, closed ones including the closing segment.
+double lengthUm(const Path& path, bool closed);
+
+}  // namespace mixengine

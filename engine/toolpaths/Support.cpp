@@ -1,0 +1,149 @@
+#include "toolpaths/Support.h"
+
+#include <cmath>
+
+#include "common/ParallelFor.h"
+#include "toolpaths/PolygonOps.h"
+#include "toolpaths/SupportAreas.h"
+#include "toolpaths/SupportPaths.h"
+
+namespace mixengine {
+namespace {
+
+int layersFor(coord_um distance_um, coord_um layer_height_um, bool round_up) {
+    if (distance_um <= 0 || layer_height_um <= 0)
+        return 0;
+    return static_cast<int>(round_up ? (distance_um + layer_height_um - 1) / layer_height_um
+                                     : (distance_um + layer_height_um / 2) / layer_height_um);
+}
+
+int extruderOf(const Settings& s, std::string_view key) {
+    const int nr = s.has(key) ? s.extruderIndex(key) : 0;
+    return nr < 0 ? 0 : nr;
+}
+
+SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
+    SupportAreaParams p;
+    p.top_gap_layers = layersFor(s.lengthMicrons("support_top_distance"), layer_height, true);
+    p.bottom_gap_layers = layersFor(s.lengthMicrons("support_bottom_distance"), layer_height, true);
+    p.xy_distance_um = s.lengthMicrons("support_xy_distance");
+    p.xy_distance_overhang_um = s.has("support_xy_distance_overhang")
+                                    ? s.lengthMicrons("support_xy_distance_overhang")
+                                    : p.xy_distance_um;
+    p.z_overrides_xy =
+        !s.has("support_xy_overrides_z") || s.text("support_xy_overrides_z") == "z_overrides_xy";
+    p.buildplate_only = s.has("support_type") && s.text("support_type") == "buildplate";
+    p.join_distance_um = s.has("support_join_distance") ? s.lengthMicrons("support_join_distance") : 0;
+    p.offset_um = s.has("support_offset") ? s.lengthMicrons("support_offset") : 0;
+    p.min_area_um2 = s.has("minimum_support_area") ? s.real("minimum_support_area") * 1e6 : 0.0;
+    if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
+        p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
+    if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
+        p.floor_layers =
+            std::max(1, layersFor(s.lengthMicrons("support_bottom_height"), layer_height, false));
+    return p;
+}
+
+double angleFor(const Settings& s, std::string_view key, int layer, double fallback) {
+    const std::vector<double> angles = s.has(key) ? s.realList(key) : std::vector<double>{};
+    return angles.empty() ? fallback : angles[static_cast<std::size_t>(layer) % angles.size()];
+}
+
+SupportFill fillFrom(const Settings& s, std::string_view prefix, int layer) {
+    const std::string p(prefix);  // "support_roof" or "support_bottom"
+    SupportFill fill;
+    fill.pattern = infillPatternOf(s.text(p + "_pattern"), p + "_pattern");
+    fill.line_distance_um = s.lengthMicrons(p + "_line_distance");
+    fill.angle_degrees = angleFor(s, p + "_angles", layer, 90);
+    const std::string speed = p == "support_roof" ? "speed_support_roof" : "speed_support_bottom";
+    fill.style = featureStyle(s, {p + "_line_width", speed, p + "_material_flow", p + "_extruder_nr"}, layer);
+    return fill;
+}
+
+SupportLayerFills layerFills(const SupportInput& in, int layer) {
+    const Settings& g = *in.global;
+    const std::string_view body_key = layer == 0 && g.has("support_extruder_nr_layer_0")
+                                          ? "support_extruder_nr_layer_0"
+                                          : "support_infill_extruder_nr";
+    const int body_nr = extruderOf(g, body_key);
+    const Settings& body = trainSettings(g, in.extruders, body_nr);
+    SupportLayerFills fills;
+    fills.body.pattern = infillPatternOf(body.text("support_pattern"), "support_pattern");
+    fills.body.line_distance_um = body.lengthMicrons(
+        layer == 0 && body.has("support_initial_layer_line_distance") ? "support_initial_layer_line_distance"
+                                                                      : "support_line_distance");
+    fills.body.angle_degrees = angleFor(body, "support_infill_angles", layer, 0);
+    fills.body.connect_zigzags =
+        body.has("support_connect_zigzags") && body.boolean("support_connect_zigzags");
+    fills.body.wall_count =
+        body.has("support_wall_count") ? static_cast<int>(body.integer("support_wall_count")) : 0;
+    if (layer == 0) {  // as CuraEngine: the first layer of support is a grid with one more wall
+        if (fills.body.pattern == InfillPattern::Lines || fills.body.pattern == InfillPattern::ZigZag)
+            fills.body.pattern = InfillPattern::Grid;
+        fills.body.wall_count += 1;
+    }
+    fills.body.style = featureStyle(
+        body, {"support_line_width", "speed_support_infill", "support_material_flow", body_key}, layer);
+    fills.body.style.extruder = body_nr;
+    const Settings& roof = trainSettings(g, in.extruders, extruderOf(g, "support_roof_extruder_nr"));
+    const Settings& floor = trainSettings(g, in.extruders, extruderOf(g, "support_bottom_extruder_nr"));
+    if (roof.has("support_roof_pattern"))
+        fills.roof = fillFrom(roof, "support_roof", layer);
+    if (floor.has("support_bottom_pattern"))
+        fills.floor = fillFrom(floor, "support_bottom", layer);
+    return fills;
+}
+
+Overhangs collectOverhangs(const SupportInput& in, int threads) {
+    Overhangs all;
+    all.basic.resize(in.heights->size());
+    all.full.resize(in.heights->size());
+    for (const SupportMesh& mesh : in.meshes) {
+        if (!mesh.settings->boolean("support_enable"))
+            continue;
+        const Overhangs own =
+            detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees("support_angle"), threads);
+        parallelFor(all.basic.size(), threads, [&](std::size_t i) {
+            if (i >= own.basic.size())
+                return;
+            all.basic[i] = all.basic[i].empty() ? own.basic[i] : unionOf(all.basic[i], own.basic[i]);
+            all.full[i] = all.full[i].empty() ? own.full[i] : unionOf(all.full[i], own.full[i]);
+        });
+    }
+    return all;
+}
+
+}  // namespace
+
+const Settings& trainSettings(const Settings& global, const std::vector<Settings>* extruders, int nr) {
+    if (extruders == nullptr || extruders->empty())
+        return global;
+    const std::size_t index = static_cast<std::size_t>(std::max(0, nr));
+    return (*extruders)[std::min(index, extruders->size() - 1)];
+}
+
+SupportResult generateSupport(const SupportInput& in, int threads) {
+    SupportResult result;
+    std::vector<std::vector<ExtrusionPath>>& paths = result.paths;
+    paths.resize(in.heights->size());
+    bool wanted = false;
+    for (const SupportMesh& mesh : in.meshes)
+        wanted = wanted || mesh.settings->boolean("support_enable");
+    if (!wanted)
+        return result;
+    const Settings& g = *in.global;
+    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
+    const std::vector<SupportLayerAreas> areas = computeSupportAreas(
+        *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads);
+    parallelFor(paths.size(), threads, [&](std::size_t i) {
+        const SupportLayerAreas& a = areas[i];
+        if (a.support.empty() && a.roof.empty() && a.floor.empty())
+            return;
+        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z);
+    });
+    if (!areas.empty())
+        result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
+    return result;
+}
+
+}  // namespace mixengine

@@ -1,0 +1,39 @@
+#pragma once
+// Support for one mesh group: overhangs of every mesh with support_enable (its own support_angle),
+// support areas (toolpaths/SupportAreas.h) around all meshes, and their lines
+// (toolpaths/SupportPaths.h). The support keys are read from the extruder train that prints the
+// support infill (support_infill_extruder_nr; on layer 0 support_extruder_nr_layer_0), the
+// interfaces' from support_roof_extruder_nr / support_bottom_extruder_nr, as CuraEngine does.
+#include <vector>
+
+#include "settings/Settings.h"
+#include "slicing/LayerHeights.h"
+#include "slicing/Slicer.h"
+#include "toolpaths/ExtrusionPath.h"
+
+namespace mixengine {
+
+struct SupportMesh {
+    const Settings* settings = nullptr;
+    const std::vector<SlicedLayer>* layers = nullptr;
+};
+
+struct SupportInput {
+    const Settings* global = nullptr;
+    const std::vector<Settings>* extruders = nullptr;  ///< may be null or empty: global is used
+    const std::vector<LayerZ>* heights = nullptr;
+    std::vector<SupportMesh> meshes;
+    const std::vector<Paths>* model = nullptr;  ///< [layer] all meshes' outlines united
+};
+
+struct SupportResult {
+    std::vector<std::vector<ExtrusionPath>> paths;  ///< [layer]; all empty without support_enable
+    Paths first_layer_area;                         ///< the support's area on layer 0 (for the brim)
+};
+
+SupportResult generateSupport(const SupportInput& input, int threads);
+
+/// The settings of extruder train `nr` (the global settings when there is none such).
+const Settings& trainSettings(const Settings& global, const std::vector<Settings>* extruders, int nr);
+
+}  // namespace mixengine

@@ -1,0 +1,62 @@
+#pragma once
+// Where support goes, per layer (Cura's support_* keys, CuraEngine 4.13's rules):
+//   - overhang of layer n: the part of it farther than d = layer_thickness · (tan(support_angle) −
+//     0.01) outside layer n−1 (detectOverhangs; layer 0 rests on the plate); what gets supported is
+//     that grown by d + 0.1 mm within layer n, so the strips of consecutive layers join;
+//   - the overhang of layer n is supported from layer n − top_gap − 1 downwards, top_gap =
+//     ceil(support_top_distance / layer_height) empty layers under the model; on the way down each
+//     layer's support is united with the one above, closed by support_join_distance (gaps
+//     narrower than twice that are filled, mitred joins, so that it does not drift);
+//     the model itself is cut out on the way down, and so is the model bottom_gap =
+//     ceil(support_bottom_distance / layer_height) layers below (the support stops that far above it);
+//   - then (not propagated, as CuraEngine, so that support next to slopes survives) each layer is
+//     grown by support_offset, loses the model grown by support_xy_distance (with z_overrides_xy:
+//     only support_xy_distance_overhang next to the layer's own overhang) and the model top_gap
+//     layers up, and islands under minimum_support_area; support_type buildplate keeps only
+//     columns that reach the plate; support with no support above or below it is dropped;
+//   - interfaces: the top roof_layers of support under the model are roof, the bottom
+//     floor_layers on the model are floor (support_roof_height / support_bottom_height in layers).
+#include <vector>
+
+#include "geometry/Point.h"
+#include "slicing/LayerHeights.h"
+#include "slicing/Slicer.h"
+
+namespace mixengine {
+
+struct SupportAreaParams {
+    int top_gap_layers = 1;
+    int bottom_gap_layers = 1;
+    coord_um xy_distance_um = 700;
+    coord_um xy_distance_overhang_um = 200;
+    bool z_overrides_xy = true;
+    bool buildplate_only = false;
+    coord_um join_distance_um = 0;
+    coord_um offset_um = 0;
+    double min_area_um2 = 0;
+    int roof_layers = 0;   ///< 0 = no roof interface
+    int floor_layers = 0;  ///< 0 = no floor interface
+};
+
+struct SupportLayerAreas {
+    Paths support;  ///< the support's body (interfaces excluded)
+    Paths roof;     ///< interface right under the model
+    Paths floor;    ///< interface right on the model
+};
+
+struct Overhangs {
+    std::vector<Paths> basic;  ///< [layer] not supported by the layer below
+    std::vector<Paths> full;   ///< [layer] basic grown by d + 0.1 mm within the layer: to support
+};
+
+/// Per layer the overhangs of `layers` (angle in degrees from vertical).
+Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vector<LayerZ>& heights,
+                          double angle_degrees, int threads);
+
+/// `model[n]`: every mesh's outlines on layer n (united); `overhangs`: those of the meshes with
+/// support_enable, united per layer.
+std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& model,
+                                                   const Overhangs& overhangs,
+                                                   const SupportAreaParams& params, int threads);
+
+}  // namespace mixengine

@@ -1,0 +1,37 @@
+#pragma once
+// The lines that print the support areas of one layer (toolpaths/SupportAreas.h):
+//   body      — support_wall_count loops just inside the area, then support_pattern at
+//               support_line_distance (support_initial_layer_line_distance on layer 0) inside
+//               them, at support_infill_angles[layer % n] (default 0°: lines along Y); on layer
+//               0, as CuraEngine, one wall more and lines/zigzag become grid; Feature
+//               Support, style of the support infill extruder (support_line_width,
+//               speed_support_infill, support_material_flow);
+//   roof/floor — support_roof_* / support_bottom_* pattern, line distance, angles (default 90°),
+//               width, speed and flow; Feature SupportInterface.
+#include <vector>
+
+#include "geometry/Point.h"
+#include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/FeatureStyle.h"
+#include "toolpaths/InfillPatterns.h"
+#include "toolpaths/SupportAreas.h"
+
+namespace mixengine {
+
+struct SupportFill {
+    InfillPattern pattern = InfillPattern::Lines;
+    coord_um line_distance_um = 0;
+    double angle_degrees = 0;
+    int wall_count = 0;
+    bool connect_zigzags = false;  ///< support_connect_zigzags: zigzag with its end pieces
+    FeatureStyle style;
+};
+
+struct SupportLayerFills {
+    SupportFill body, roof, floor;
+};
+
+std::vector<ExtrusionPath> supportLayerPaths(const SupportLayerAreas& areas, const SupportLayerFills& fills,
+                                             coord_um z_um);
+
+}  // namespace mixengine

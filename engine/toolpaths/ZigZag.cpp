@@ -1,0 +1,205 @@
+#include "toolpaths/ZigZag.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace mixengine {
+namespace {
+
+struct Crossing {
+    long long line = 0;  ///< scanline number k
+    Point2 point;        ///< in the rotated frame
+    std::size_t polygon = 0;
+    std::size_t edge = 0;  ///< index of the edge's first vertex
+    double along = 0;      ///< position along the edge, 0..1
+    long scan_partner = -1;
+    long boundary_next = -1;  ///< kept boundary piece from this crossing to that one
+    long boundary_prev = -1;
+};
+
+Point2 rotate(const Point2& p, double c, double s) {
+    return {std::llround(double(p.X) * c - double(p.Y) * s), std::llround(double(p.X) * s + double(p.Y) * c)};
+}
+
+long long floorDiv(long long a, long long b) {
+    return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0);
+}
+
+/// Crossings of every polygon edge with the scanlines; a vertex exactly on a scanline counts as
+/// right of it, so every crossing is found once.
+std::vector<Crossing> findCrossings(const Paths& polys, coord_um d, coord_um shift) {
+    std::vector<Crossing> out;
+    for (std::size_t pi = 0; pi < polys.size(); ++pi) {
+        const Path& poly = polys[pi];
+        for (std::size_t e = 0; e < poly.size(); ++e) {
+            const Point2& a = poly[e];
+            const Point2& b = poly[(e + 1) % poly.size()];
+            if (a.X == b.X)
+                continue;
+            // Scanlines k with a side change: x_k in (min, max] for the "x >= x_k is right" rule.
+            const long long lo = floorDiv(std::min(a.X, b.X) - shift, d) + 1;
+            const long long hi = floorDiv(std::max(a.X, b.X) - shift, d);
+            std::vector<Crossing> here;
+            for (long long k = lo; k <= hi; ++k) {
+                const double x = double(shift) + double(k) * double(d);
+                const double t = (x - double(a.X)) / double(b.X - a.X);
+                Crossing c;
+                c.line = k;
+                c.point = {static_cast<coord_um>(x), std::llround(double(a.Y) + t * double(b.Y - a.Y))};
+                c.polygon = pi;
+                c.edge = e;
+                c.along = t;
+                here.push_back(c);
+            }
+            if (a.X > b.X)
+                std::reverse(here.begin(), here.end());
+            out.insert(out.end(), here.begin(), here.end());
+        }
+    }
+    return out;
+}
+
+void pairScanlines(std::vector<Crossing>& cs) {
+    std::vector<long> order(cs.size());
+    for (std::size_t i = 0; i < cs.size(); ++i)
+        order[i] = static_cast<long>(i);
+    std::sort(order.begin(), order.end(), [&](long a, long b) {
+        const Crossing &ca = cs[std::size_t(a)], &cb = cs[std::size_t(b)];
+        return ca.line != cb.line ? ca.line < cb.line : ca.point.Y < cb.point.Y;
+    });
+    for (std::size_t i = 0; i + 1 < order.size(); i += 2) {
+        if (cs[std::size_t(order[i])].line != cs[std::size_t(order[i + 1])].line) {
+            --i;  // an odd crossing count on a line (degenerate): resynchronise
+            continue;
+        }
+        cs[std::size_t(order[i])].scan_partner = order[i + 1];
+        cs[std::size_t(order[i + 1])].scan_partner = order[i];
+    }
+}
+
+/// Crossings are stored per polygon in walking order; keep the alternate boundary pieces.
+void linkBoundary(std::vector<Crossing>& cs) {
+    std::size_t begin = 0;
+    while (begin < cs.size()) {
+        std::size_t end = begin;
+        while (end < cs.size() && cs[end].polygon == cs[begin].polygon)
+            ++end;
+        const std::size_t n = end - begin;
+        for (std::size_t j = 0; j < n && n > 1; ++j) {
+            Crossing& from = cs[begin + j];
+            Crossing& to = cs[begin + (j + 1) % n];
+            if (from.line % 2 == 0 && std::llabs(to.line - from.line) == 1 && from.scan_partner >= 0 &&
+                to.scan_partner >= 0) {
+                from.boundary_next = static_cast<long>(begin + (j + 1) % n);
+                to.boundary_prev = static_cast<long>(begin + j);
+            }
+        }
+        begin = end;
+    }
+}
+
+/// The polygon vertices strictly between crossing `from` and the next crossing `to` (same polygon,
+/// walking order).
+Path interiorOf(const Paths& polys, const Crossing& from, const Crossing& to) {
+    const Path& poly = polys[from.polygon];
+    Path inner;
+    if (from.edge == to.edge && to.along >= from.along)
+        return inner;
+    std::size_t e = from.edge;
+    for (std::size_t guard = 0; guard < poly.size(); ++guard) {
+        e = (e + 1) % poly.size();
+        inner.push_back(poly[e]);
+        if (e == to.edge)
+            break;
+    }
+    return inner;
+}
+
+Paths chain(const Paths& polys, std::vector<Crossing>& cs) {
+    Paths lines;
+    std::vector<bool> used(cs.size(), false);
+    auto walk = [&](std::size_t start) {
+        Path line{cs[start].point};
+        std::size_t at = start;
+        while (true) {
+            used[at] = true;
+            const long partner = cs[at].scan_partner;
+            if (partner < 0 || used[std::size_t(partner)])
+                break;
+            at = std::size_t(partner);
+            used[at] = true;
+            line.push_back(cs[at].point);
+            const long next = cs[at].boundary_next >= 0 ? cs[at].boundary_next : cs[at].boundary_prev;
+            if (next < 0 || used[std::size_t(next)])
+                break;
+            const bool forward = cs[at].boundary_next >= 0;
+            Path inner = forward ? interiorOf(polys, cs[at], cs[std::size_t(next)])
+                                 : interiorOf(polys, cs[std::size_t(next)], cs[at]);
+            if (!forward)
+                std::reverse(inner.begin(), inner.end());
+            line.insert(line.end(), inner.begin(), inner.end());
+            at = std::size_t(next);
+            line.push_back(cs[at].point);
+        }
+        lines.push_back(std::move(line));
+    };
+    for (std::size_t i = 0; i < cs.size(); ++i) {  // chain ends first: no boundary piece
+        if (!used[i] && cs[i].scan_partner >= 0 && cs[i].boundary_next < 0 && cs[i].boundary_prev < 0)
+            walk(i);
+    }
+    for (std::size_t i = 0; i < cs.size(); ++i) {  // what is left are cycles
+        if (!used[i] && cs[i].scan_partner >= 0)
+            walk(i);
+    }
+    return lines;
+}
+
+/// Boundary pieces between consecutive crossings of the same scanline, as separate polylines.
+void appendEndPieces(const Paths& polys, const std::vector<Crossing>& cs, Paths& lines) {
+    std::size_t begin = 0;
+    while (begin < cs.size()) {
+        std::size_t end = begin;
+        while (end < cs.size() && cs[end].polygon == cs[begin].polygon)
+            ++end;
+        const std::size_t n = end - begin;
+        for (std::size_t j = 0; j < n && n > 1; ++j) {
+            const Crossing& from = cs[begin + j];
+            const Crossing& to = cs[begin + (j + 1) % n];
+            if (from.line != to.line || from.scan_partner < 0 || to.scan_partner < 0)
+                continue;
+            Path piece{from.point};
+            const Path inner = interiorOf(polys, from, to);
+            piece.insert(piece.end(), inner.begin(), inner.end());
+            piece.push_back(to.point);
+            lines.push_back(std::move(piece));
+        }
+        begin = end;
+    }
+}
+
+}  // namespace
+
+Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um shift_um, bool end_pieces) {
+    if (d <= 0 || area.empty())
+        return {};
+    const double a = angle_degrees * std::numbers::pi / 180.0;
+    const double c = std::cos(a), s = std::sin(a);
+    Paths rotated = area;
+    for (Path& p : rotated)
+        for (Point2& q : p)
+            q = rotate(q, c, s);
+    const coord_um shift = ((shift_um % d) + d) % d;
+    std::vector<Crossing> cs = findCrossings(rotated, d, shift);
+    pairScanlines(cs);
+    linkBoundary(cs);
+    Paths lines = chain(rotated, cs);
+    if (end_pieces)
+        appendEndPieces(rotated, cs, lines);
+    for (Path& line : lines)
+        for (Point2& q : line)
+            q = rotate(q, c, -s);
+    return lines;
+}
+
+}  // namespace mixengine

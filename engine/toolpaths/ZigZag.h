@@ -1,0 +1,20 @@
+#pragma once
+// Zigzag: the lines of LineInfill (same angle, spacing and grid) joined along the area's boundary
+// into long polylines, as CuraEngine's zigzag connects them.
+//
+// In the frame where the lines are vertical, every boundary polygon is cut by the scanlines
+// x = shift + k·d; inside the area the crossings of one scanline pair up (even-odd) into the line
+// segments. Walking each boundary polygon in its own direction, the boundary piece between two
+// consecutive crossings is kept when it starts on an even scanline and ends on a neighbouring one,
+// which alternates the connections at both ends of the lines. Segments and kept pieces share their
+// end points exactly and are chained into polylines. With `end_pieces` (support with
+// support_connect_zigzags) the boundary pieces that leave a scanline and come back to it — the
+// ends of the area beyond the outermost lines, notches — are printed too, as separate polylines.
+#include "geometry/Point.h"
+
+namespace mixengine {
+
+Paths zigzagLines(const Paths& area, coord_um line_distance_um, double angle_degrees, coord_um shift_um,
+                  bool end_pieces);
+
+}  // namespace mixengine

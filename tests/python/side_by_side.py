@@ -1,0 +1,260 @@
+"""MixEngine and Debian's CuraEngine 4.13 on the same model with equal settings, for
+test_compare_cura.py, test_gcode_validity.py and tests/bench/compare_quality.py (no pytest import here).
+
+Equal settings: MixEngine resolves the machine's settings (`mixengine settings -j MACHINE -s ... --json`,
+Cura's `value` formulas evaluated, as Cura's frontend does before it starts CuraEngine), and BOTH engines get
+that same complete list: every resolved global value as `-s key=value`, then `-e0` and the extruder-only
+keys. CuraEngine's command line does not evaluate formulas (it would otherwise use `default_value`s, e.g.
+infill_line_distance 2 mm where the formula gives 6 mm), so handing it the resolved values is what makes the
+two runs comparable.
+
+CuraEngine's results are cached in CACHE_DIR (default ~/.cache/mixengine-compare, env MIXENGINE_COMPARE_CACHE):
+<key>.gcode.gz and <key>.json, the key hashing CuraEngine's size and mtime, every argument and the models'
+contents. Its print-quality numbers are cached too, keyed also by the source of gcode_model.py and
+print_quality.py. CuraEngine's file header holds placeholders in command-line mode (;TIME:6666), so its
+real header is taken from its -v log ("Gcode header after slicing:" ... "End of gcode header.").
+"""
+import atexit
+import gzip
+import hashlib
+import json
+import math
+import os
+import shutil
+import tempfile
+import time
+from pathlib import Path
+
+import gcode_model
+import helpers
+import print_quality
+
+MACHINE = helpers.CURA_DEFS / "creality_ender3.def.json"
+# 0.2 mm layers keep CuraEngine and the quality measure fast; everything else is the Ender-3's resolved value.
+BASE_SETTINGS = {"layer_height": "0.2", "layer_height_0": "0.2"}
+CACHE_DIR = Path(os.environ.get("MIXENGINE_COMPARE_CACHE", Path.home() / ".cache" / "mixengine-compare"))
+_TMP = Path(tempfile.mkdtemp(prefix="mixengine-side-by-side-"))  # this process's G-code, removed at exit
+atexit.register(shutil.rmtree, _TMP, True)
+_MEMO = {}
+
+
+GENERATED = ("tube", "tee")
+
+
+def _make(name):
+    import shapely
+    import trimesh
+    if name == "tube":
+        return trimesh.creation.annulus(r_min=6.0, r_max=12.0, height=15.0, sections=128)
+    # tee: a T profile (30 x 6 mm bar on an 8 x 16 mm stem) extruded 10 mm, stood up so that the bar's
+    # underside is a 90-degree overhang on both sides of the stem.
+    profile = shapely.Polygon([(-4, 0), (4, 0), (4, 16), (15, 16), (15, 22), (-15, 22), (-15, 16), (-4, 16)])
+    mesh = trimesh.creation.extrude_polygon(profile, 10.0)
+    mesh.apply_transform(trimesh.transformations.rotation_matrix(math.pi / 2, [1, 0, 0]))
+    return mesh
+
+
+def generated_model(name):
+    """Models made here (not in the corpus), written once into CACHE_DIR/models, centred in XY with their
+    lowest point at Z 0: tube (a 24 mm tube with a 12 mm hole, 15 mm tall: a hole in every layer; 128-gon)
+    and tee (a 30 x 22 x 10 mm T standing on its stem: overhangs that need support)."""
+    path = CACHE_DIR / "models" / f"{name}.stl"
+    if not path.is_file():
+        if name not in GENERATED:
+            raise ValueError(f"unknown generated model {name}")
+        mesh = _make(name)
+        (x0, y0, z0), (x1, y1, _) = mesh.bounds
+        mesh.apply_translation([-(x0 + x1) / 2, -(y0 + y1) / 2, -z0])
+        path.parent.mkdir(parents=True, exist_ok=True)
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        mesh.export(tmp, file_type="stl")
+        tmp.replace(path)
+    return path
+
+
+def model_path(name):
+    """Corpus model (CORPUS/name.stl) or generated model; None when the corpus lacks it."""
+    if name in GENERATED:
+        return generated_model(name)
+    path = helpers.CORPUS / f"{name}.stl"
+    return path if path.is_file() else None
+
+
+def resolve(overrides=None):
+    """(global, extruder 0) settings as MixEngine resolves them for MACHINE with BASE_SETTINGS + overrides."""
+    values = dict(BASE_SETTINGS, **(overrides or {}))
+    key = ("resolve", tuple(sorted(values.items())))
+    if key not in _MEMO:
+        args = ["settings", "-j", MACHINE]
+        for k, v in values.items():
+            args += ["-s", f"{k}={v}"]
+        proc = helpers.mixengine(*args, "--json")
+        if proc.returncode != 0:
+            raise RuntimeError(f"mixengine settings failed (rc {proc.returncode}): {proc.stderr.strip()[-500:]}")
+        data = json.loads(proc.stdout)
+        _MEMO[key] = (data["global"], data["extruders"][0])
+    return _MEMO[key]
+
+
+def slice_args(global_values, extruder_values):
+    args = ["-j", MACHINE]
+    for k in sorted(global_values):
+        args += ["-s", f"{k}={global_values[k]}"]
+    args.append("-e0")
+    for k in sorted(extruder_values):
+        if k not in global_values:
+            args += ["-s", f"{k}={extruder_values[k]}"]
+    return args
+
+
+def _file_digest(path):
+    h = hashlib.sha256()
+    with open(path, "rb") as f:
+        for chunk in iter(lambda: f.read(1 << 20), b""):
+            h.update(chunk)
+    return h.hexdigest()
+
+
+def _cura_key(args):
+    stat = os.stat(helpers.CURA_BIN)
+    parts = [stat.st_size, int(stat.st_mtime)]
+    for a in map(str, args):
+        parts.append(_file_digest(a) if a.endswith(".stl") and os.path.isfile(a) else a)
+    return hashlib.sha256(json.dumps(parts).encode()).hexdigest()[:24]
+
+
+def log_header(log_text):
+    """The ;KEY:value lines CuraEngine -v logs after slicing (its file header has placeholders)."""
+    header, inside = {}, False
+    for line in log_text.splitlines():
+        if line.startswith("Gcode header after slicing:"):
+            inside = True
+        elif line.startswith("End of gcode header."):
+            break
+        elif inside and line.startswith(";") and ":" in line:
+            key, _, value = line[1:].partition(":")
+            header.setdefault(key.strip(), value.strip())
+    return header
+
+
+class Run:
+    """One engine's slice: rc, wall seconds, G-code path, the header with real values, stderr tail."""
+
+    def __init__(self, engine, rc, seconds, gcode, header, stderr):
+        self.engine, self.rc, self.seconds, self.gcode, self.header, self.stderr = \
+            engine, rc, seconds, gcode, header, stderr
+
+    def time_s(self):
+        return float(self.header["TIME"]) if "TIME" in self.header else None
+
+    def filament_mm(self):
+        """';Filament used: 1.2m' (several extruders: '1.2m, 0.3m') in mm; None when absent."""
+        text = self.header.get("Filament used")
+        if text is None:
+            return None
+        return sum(float(part.strip().rstrip("m")) for part in text.split(",") if part.strip()) * 1000.0
+
+
+def _timed(cmd, env=None):
+    start = time.perf_counter()
+    proc = helpers.run(cmd, env=env)
+    return proc, time.perf_counter() - start
+
+
+def run_mixengine(name, overrides=None, memo=True):
+    """MixEngine on a model with the resolved settings; memoised per process (the G-code lives in a temp dir)."""
+    g, e = resolve(overrides)
+    key = ("mix", name, tuple(sorted((overrides or {}).items())))
+    if memo and key in _MEMO:
+        return _MEMO[key]
+    out = _TMP / f"mix-{hashlib.sha256(repr(key).encode()).hexdigest()[:16]}.gcode"
+    proc, seconds = _timed([helpers.BIN, "slice", *slice_args(g, e), "-l", model_path(name), "-o", out],
+                           env=helpers.CURA_ENV)
+    header = gcode_model.read_header(out) if proc.returncode == 0 and out.exists() else {}
+    run = Run("mixengine", proc.returncode, seconds, out, header, proc.stderr[-2000:])
+    _MEMO[key] = run
+    return run
+
+
+def run_cura(name, overrides=None, use_cache=True):
+    """CuraEngine on a model with the same resolved settings; cached on disk (see the module doc)."""
+    g, e = resolve(overrides)
+    args = [*slice_args(g, e), "-l", model_path(name)]
+    key = _cura_key(args)
+    meta_path, gz_path = CACHE_DIR / f"{key}.json", CACHE_DIR / f"{key}.gcode.gz"
+    out = _TMP / f"cura-{key}.gcode"
+    if use_cache and meta_path.is_file() and gz_path.is_file():
+        meta = json.loads(meta_path.read_text())
+        if not out.exists():
+            with gzip.open(gz_path, "rb") as src, open(out, "wb") as dst:
+                shutil.copyfileobj(src, dst)
+        return Run("CuraEngine", meta["rc"], meta["seconds"], out, meta["header"], meta["stderr"])
+    proc, seconds = _timed([helpers.CURA_BIN, "slice", "-v", *args, "-o", out], env=helpers.CURA_ENV)
+    run = Run("CuraEngine", proc.returncode, seconds, out, log_header(proc.stderr), proc.stderr[-2000:])
+    if proc.returncode == 0 and out.exists():
+        CACHE_DIR.mkdir(parents=True, exist_ok=True)
+        tmp = gz_path.with_suffix(f".{os.getpid()}.tmp")
+        with open(out, "rb") as src, gzip.open(tmp, "wb", compresslevel=6) as dst:
+            shutil.copyfileobj(src, dst)
+        tmp.replace(gz_path)
+        _write_json(meta_path, {"rc": run.rc, "seconds": seconds, "header": run.header, "stderr": run.stderr,
+                                "model": name, "overrides": overrides or {}})
+    return run
+
+
+def _write_json(path, data):
+    tmp = path.with_suffix(f".{os.getpid()}.tmp")
+    tmp.write_text(json.dumps(data, indent=1))
+    tmp.replace(path)
+
+
+def bed_offset(global_values):
+    """Where the engines put the model's origin: the bed centre unless machine_center_is_zero."""
+    if global_values.get("machine_center_is_zero", "False").lower() == "true":
+        return 0.0, 0.0
+    return float(global_values["machine_width"]) / 2, float(global_values["machine_depth"]) / 2
+
+
+def _quality_source_digest():
+    here = Path(__file__).resolve().parent
+    h = hashlib.sha256()
+    for f in ("gcode_model.py", "print_quality.py"):
+        h.update((here / f).read_bytes())
+    return h.hexdigest()[:16]
+
+
+def machine(overrides=None):
+    """(bed offset, filament diameter, nozzle size) from the resolved settings."""
+    g, e = resolve(overrides)
+    return bed_offset(g), float(e["material_diameter"]), float(e["machine_nozzle_size"])
+
+
+def measured(run, name, overrides=None, sections=None):
+    """(gcode_model.Model, print_quality.Quality) of run.gcode against the model, with the resolved
+    settings (filament diameter, nozzle, bed offset)."""
+    offset, diameter, nozzle = machine(overrides)
+    model = gcode_model.read(run.gcode)
+    q = print_quality.measure(model, model_path(name), offset, diameter, nozzle_mm=nozzle, sections=sections)
+    return model, q
+
+
+def summary(run, name, overrides=None, cache=None):
+    """Quality numbers as a dict: coverage, outside_ratio, grid_mm, tolerance_mm, layers (per layer),
+    layer_count, extruded_mm (E in segments inside layers), net_e. cache: optional JSON file to reuse."""
+    digest = _quality_source_digest()
+    if cache and Path(cache).is_file():
+        data = json.loads(Path(cache).read_text())
+        if data.get("source") == digest:
+            return data["quality"]
+    model, q = measured(run, name, overrides)
+    result = dict(q.as_dict(), layer_count=model.layer_count, extruded_mm=model.layer_extruded_e,
+                  net_e=model.net_e)
+    if cache:
+        Path(cache).parent.mkdir(parents=True, exist_ok=True)
+        _write_json(Path(cache), {"source": digest, "quality": result})
+    return result
+
+
+def cura_quality_cache(run):
+    """The cache file for the quality numbers of a (cached) CuraEngine run."""
+    return CACHE_DIR / (Path(run.gcode).stem.replace("cura-", "") + ".quality.json")

@@ -1,0 +1,155 @@
+// The mixing stage (mixing/MixingPass.h): every extrusion step gets the mix of its mesh's schedule
+// at the layer height, per mesh height and settings; non-mesh steps use the group; single mode
+// leaves the plan alone; the chamber delay shifts mixes earlier.
+#include "mixing/MixingPass.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "common/Error.h"
+#include "pipeline/Scene.h"
+
+namespace mixengine {
+namespace {
+
+SceneMesh meshOfHeight(coord_um bottom_um, coord_um top_um, SettingValues values) {
+    SceneMesh m;
+    m.mesh.vertices = {{0, 0, bottom_um}, {1000, 1000, top_um}};
+    m.settings = Settings("mesh", std::move(values));
+    return m;
+}
+
+PlanStep extrusion(double volume_mm3) {
+    PlanStep s;
+    s.kind = PlanStep::Kind::Extrude;
+    s.volume_mm3 = volume_mm3;
+    return s;
+}
+
+PlanStep meshMarker(int mesh) {
+    PlanStep s;
+    s.kind = PlanStep::Kind::SetMesh;
+    s.mesh_index = mesh;
+    return s;
+}
+
+/// Layers at 2, 4, …, 20 mm; in each: one non-mesh extrusion, then one per mesh.
+PrintPlan tenLayers(int meshes) {
+    PrintPlan plan;
+    for (int i = 1; i <= 10; ++i) {
+        PlannedLayer layer;
+        layer.index = i - 1;
+        layer.z = 2000 * i;
+        layer.steps.push_back(extrusion(1.0));
+        for (int m = 0; m < meshes; ++m) {
+            layer.steps.push_back(meshMarker(m));
+            layer.steps.push_back(extrusion(1.0));
+        }
+        plan.layers.push_back(layer);
+    }
+    return plan;
+}
+
+double shareB(const PrintPlan& plan, int layer, int step) {
+    const PlanStep& s = plan.layers[static_cast<std::size_t>(layer)].steps[static_cast<std::size_t>(step)];
+    EXPECT_GE(s.mix, 0);
+    return plan.mixes[static_cast<std::size_t>(s.mix)][1];
+}
+
+TEST(MixingPass, SingleModeLeavesThePlanAlone) {
+    SceneGroup group;
+    group.settings = Settings("global", {});
+    group.meshes.push_back(meshOfHeight(0, 20000, {}));
+    PrintPlan plan = tenLayers(1);
+    std::ostringstream err;
+    Log log(err);
+    assignMixes(plan, group, log);
+    EXPECT_TRUE(plan.mixes.empty());
+    for (const PlannedLayer& l : plan.layers)
+        for (const PlanStep& s : l.steps)
+            EXPECT_EQ(s.mix, -1);
+}
+
+TEST(MixingPass, EachMeshFollowsItsOwnHeightAndSettings) {
+    SceneGroup group;
+    group.settings = Settings("global", {{"mixing_mode", "gradient"}});
+    // Mesh 0: 0..20 mm, the seed's 20/80. Mesh 1: 0..10 mm, whole height. Mesh 2: 10 mm in mm units
+    // from its bottom at 4 mm.
+    group.meshes.push_back(meshOfHeight(
+        0, 20000,
+        {{"mixing_mode", "gradient"}, {"mixing_gradient_start", "20"}, {"mixing_gradient_end", "80"}}));
+    group.meshes.push_back(meshOfHeight(0, 10000, {{"mixing_mode", "gradient"}}));
+    group.meshes.push_back(meshOfHeight(4000, 14000,
+                                        {{"mixing_mode", "gradient"},
+                                         {"mixing_gradient_unit", "mm"},
+                                         {"mixing_gradient_start", "2"},
+                                         {"mixing_gradient_end", "6"}}));
+    PrintPlan plan = tenLayers(3);
+    std::ostringstream err;
+    Log log(err);
+    assignMixes(plan, group, log);
+    // Layer 4 (z = 10 mm): mesh 0 at 50 % → (50 − 20) / 60; mesh 1 at 100 %; mesh 2 at 6 mm above
+    // its bottom → its end; non-mesh over 0..20 mm at 50 % with the group's 0..100 → 0.5.
+    EXPECT_DOUBLE_EQ(shareB(plan, 4, 0), 0.5);
+    EXPECT_DOUBLE_EQ(shareB(plan, 4, 2), 0.5);
+    EXPECT_DOUBLE_EQ(shareB(plan, 4, 4), 1.0);
+    EXPECT_DOUBLE_EQ(shareB(plan, 4, 6), 1.0);
+    // Layer 1 (z = 4 mm): mesh 0 at 20 % → A only; mesh 1 at 40 %; mesh 2 at its bottom → A only.
+    EXPECT_EQ(shareB(plan, 1, 2), 0.0);
+    EXPECT_DOUBLE_EQ(shareB(plan, 1, 4), 0.4);
+    EXPECT_EQ(shareB(plan, 1, 6), 0.0);
+    // Layer 2 (z = 6 mm): mesh 2 is 2 mm above its bottom = its start; layer 3 (8 mm): half way.
+    EXPECT_EQ(shareB(plan, 2, 6), 0.0);
+    EXPECT_DOUBLE_EQ(shareB(plan, 3, 6), 0.5);
+    // Mixes are stored once each.
+    for (std::size_t i = 0; i < plan.mixes.size(); ++i)
+        for (std::size_t j = i + 1; j < plan.mixes.size(); ++j)
+            EXPECT_FALSE(plan.mixes[i] == plan.mixes[j]);
+}
+
+TEST(MixingPass, DualModeFixedRatioPerMesh) {
+    SceneGroup group;
+    group.settings = Settings("global", {{"mixing_mode", "dual"}});
+    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "0.3:0.7"}}));
+    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "1:0"}}));
+    PrintPlan plan = tenLayers(2);
+    std::ostringstream err;
+    Log log(err);
+    assignMixes(plan, group, log);
+    for (int layer = 0; layer < 10; ++layer) {
+        EXPECT_DOUBLE_EQ(shareB(plan, layer, 0), 0.5);  // non-mesh: the group's default 0.5:0.5
+        EXPECT_DOUBLE_EQ(shareB(plan, layer, 2), 0.7);
+        EXPECT_EQ(shareB(plan, layer, 4), 0.0);
+    }
+    EXPECT_EQ(plan.mixes.size(), 3u);
+}
+
+TEST(MixingPass, ChamberDelayCommandsTheNextLayersMixEarlier) {
+    SceneGroup group;
+    group.settings = Settings("global", {{"mixing_mode", "gradient"}, {"mixing_chamber_volume", "1.5"}});
+    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "gradient"}}));
+    PrintPlan plan = tenLayers(1);  // two 1 mm³ extrusions per layer
+    std::ostringstream err;
+    Log log(err);
+    assignMixes(plan, group, log);
+    // Extrusion k (midpoint k + 0.5) commands the target at k + 2.0: one layer ahead.
+    for (int layer = 0; layer < 9; ++layer) {
+        EXPECT_DOUBLE_EQ(shareB(plan, layer, 0), 0.1 * (layer + 2)) << layer;
+        EXPECT_DOUBLE_EQ(shareB(plan, layer, 2), 0.1 * (layer + 2)) << layer;
+    }
+    EXPECT_DOUBLE_EQ(shareB(plan, 9, 2), 1.0);  // past the end: the last target
+}
+
+TEST(MixingPass, BadSettingsThrowBeforeAnythingIsWritten) {
+    SceneGroup group;
+    group.settings = Settings("global", {{"mixing_mode", "dual"}});
+    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "0.5:0.6"}}));
+    PrintPlan plan = tenLayers(1);
+    std::ostringstream err;
+    Log log(err);
+    EXPECT_THROW(assignMixes(plan, group, log), InputError);
+}
+
+}  // namespace
+}  // namespace mixengine

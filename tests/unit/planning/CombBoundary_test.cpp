@@ -1,0 +1,75 @@
+// Combing (planning/CombBoundary.h): inside tests, straight travel, routes around holes.
+#include "planning/CombBoundary.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace mixengine {
+namespace {
+
+Path square(coord_um x0, coord_um y0, coord_um size, bool ccw = true) {
+    Path p{{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
+    if (!ccw)
+        std::reverse(p.begin(), p.end());
+    return p;
+}
+
+/// A 30 mm square with a 10 mm square hole in the middle.
+Paths squareWithHole() {
+    return {square(0, 0, 30'000), square(10'000, 10'000, 10'000, false)};
+}
+
+double length(Point2 from, const Path& points) {
+    double sum = 0;
+    for (const Point2& p : points) {
+        sum += std::hypot(double(p.X - from.X), double(p.Y - from.Y));
+        from = p;
+    }
+    return sum;
+}
+
+TEST(CombBoundary, InsideOutsideAndHole) {
+    const CombBoundary comb(squareWithHole());
+    EXPECT_TRUE(comb.inside({5'000, 5'000}));
+    EXPECT_TRUE(comb.inside({0, 15'000}));        // on the boundary
+    EXPECT_FALSE(comb.inside({15'000, 15'000}));  // in the hole
+    EXPECT_FALSE(comb.inside({-1, 15'000}));
+    EXPECT_FALSE(comb.inside({31'000, 5'000}));
+}
+
+TEST(CombBoundary, StraightTravel) {
+    const CombBoundary comb(squareWithHole());
+    EXPECT_TRUE(comb.straightInside({5'000, 5'000}, {25'000, 5'000}));
+    EXPECT_FALSE(comb.straightInside({5'000, 15'000}, {25'000, 15'000}));  // across the hole
+}
+
+TEST(CombBoundary, RoutesAroundTheHoleOnItsShorterSide) {
+    const CombBoundary comb(squareWithHole());
+    const auto route = comb.route({5'000, 14'000}, {25'000, 14'000});
+    ASSERT_TRUE(route.has_value());
+    EXPECT_EQ(route->back(), (Point2{25'000, 14'000}));
+    // Below the hole: 5→(10,10): √(25+16) mm, 10 mm along the edge, (20,10)→25: √(25+16).
+    EXPECT_NEAR(length({5'000, 14'000}, *route), 10'000 + 2 * std::sqrt(41.0) * 1000, 1.0);
+    Point2 from{5'000, 14'000};
+    for (const Point2& p : *route) {
+        EXPECT_TRUE(comb.straightInside(from, p));
+        from = p;
+    }
+}
+
+TEST(CombBoundary, NoRouteBetweenIslandsOrFromOutside) {
+    const CombBoundary comb({square(0, 0, 10'000), square(20'000, 0, 10'000)});
+    EXPECT_FALSE(comb.route({5'000, 5'000}, {25'000, 5'000}).has_value());
+    EXPECT_FALSE(comb.route({15'000, 5'000}, {5'000, 5'000}).has_value());
+    EXPECT_TRUE(comb.route({1'000, 5'000}, {9'000, 5'000}).has_value());
+}
+
+TEST(CombBoundary, EmptyBoundaryHasNothingInside) {
+    const CombBoundary comb;
+    EXPECT_TRUE(comb.empty());
+    EXPECT_FALSE(comb.inside({0, 0}));
+}
+
+}  // namespace
+}  // namespace mixengine

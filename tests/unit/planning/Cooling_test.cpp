@@ -1,0 +1,73 @@
+// Cooling (planning/Cooling.h): minimum layer time slow-down and fan speed by layer time.
+#include "planning/Cooling.h"
+
+#include <gtest/gtest.h>
+
+namespace mixengine {
+namespace {
+
+PlannedLayer layerOf(double extrude_mm, double speed, int index = 5) {
+    PlannedLayer layer;
+    layer.index = index;
+    PlanStep fan;
+    fan.kind = PlanStep::Kind::SetFan;
+    PlanStep move;
+    move.kind = PlanStep::Kind::Extrude;
+    move.to = {static_cast<coord_um>(extrude_mm * 1000), 0};
+    move.speed_mm_s = speed;
+    layer.steps = {fan, move};
+    return layer;
+}
+
+CoolingParams params() {
+    CoolingParams p;
+    p.fan_min_ratio = 0.5;
+    p.fan_max_ratio = 1.0;
+    p.fan_first_ratio = 0;
+    p.fan_full_layer = 3;
+    p.min_layer_time_s = 5;
+    p.fan_max_layer_time_s = 10;
+    p.min_speed_mm_s = 10;
+    return p;
+}
+
+TEST(Cooling, SlowsShortLayersToTheMinimumTime) {
+    PlannedLayer layer = layerOf(100, 50);  // 2 s → slowed to 20 mm/s = 5 s
+    applyCooling(layer, {0, 0}, params());
+    EXPECT_DOUBLE_EQ(layer.steps[1].speed_mm_s, 20);
+    EXPECT_NEAR(naiveLayerSeconds(layer, {0, 0}), 5.0, 1e-9);
+    EXPECT_DOUBLE_EQ(layer.steps[0].fan_ratio, 1.0);  // at the minimum time: full fan
+}
+
+TEST(Cooling, NeverBelowMinimumSpeed) {
+    PlannedLayer layer = layerOf(10, 50);  // would need 2 mm/s
+    applyCooling(layer, {0, 0}, params());
+    EXPECT_DOUBLE_EQ(layer.steps[1].speed_mm_s, 10);
+}
+
+TEST(Cooling, FanBetweenMinAndMaxByLayerTime) {
+    PlannedLayer slow = layerOf(600, 50);  // 12 s: regular fan
+    applyCooling(slow, {0, 0}, params());
+    EXPECT_DOUBLE_EQ(slow.steps[0].fan_ratio, 0.5);
+    EXPECT_DOUBLE_EQ(slow.steps[1].speed_mm_s, 50);
+    PlannedLayer middle = layerOf(375, 50);  // 7.5 s: halfway
+    applyCooling(middle, {0, 0}, params());
+    EXPECT_DOUBLE_EQ(middle.steps[0].fan_ratio, 0.75);
+}
+
+TEST(Cooling, FirstLayersRampFromTheInitialFanSpeed) {
+    PlannedLayer first = layerOf(600, 50, 0);
+    applyCooling(first, {0, 0}, params());
+    EXPECT_DOUBLE_EQ(first.steps[0].fan_ratio, 0.0);
+    PlannedLayer second = layerOf(600, 50, 1);  // full speed from layer index 2
+    applyCooling(second, {0, 0}, params());
+    EXPECT_DOUBLE_EQ(second.steps[0].fan_ratio, 0.25);
+    CoolingParams off = params();
+    off.fan_enabled = false;
+    PlannedLayer none = layerOf(600, 50);
+    applyCooling(none, {0, 0}, off);
+    EXPECT_DOUBLE_EQ(none.steps[0].fan_ratio, 0.0);
+}
+
+}  // namespace
+}  // namespace mixengine

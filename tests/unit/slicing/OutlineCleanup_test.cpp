@@ -1,0 +1,62 @@
+// Outline clean-up (slicing/OutlineCleanup.h): small loops dropped, fine detail removed within
+// the deviation, collinear points removed, long edges kept.
+#include "slicing/OutlineCleanup.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace mixengine {
+namespace {
+
+Path circle(coord_um radius, int vertices) {
+    Path p;
+    for (int i = 0; i < vertices; ++i) {
+        const double a = 2 * std::numbers::pi * i / vertices;
+        p.push_back({std::llround(radius * std::cos(a)), std::llround(radius * std::sin(a))});
+    }
+    return p;
+}
+
+double distanceToLoop(const Point2& p, const Path& loop) {
+    double best = 1e300;
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        const Point2& a = loop[i];
+        const Point2& b = loop[(i + 1) % loop.size()];
+        const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+        double t = ((p.X - a.X) * dx + (p.Y - a.Y) * dy) / (dx * dx + dy * dy);
+        t = std::clamp(t, 0.0, 1.0);
+        best = std::min(best, std::hypot(a.X + t * dx - p.X, a.Y + t * dy - p.Y));
+    }
+    return best;
+}
+
+TEST(OutlineCleanup, FineCircleLosesVerticesWithinTheDeviation) {
+    const Path fine = circle(10'000, 4000);  // 15.7 µm edges
+    const Path simple = simplifyLoop(fine, 500, 25);
+    EXPECT_LT(simple.size(), 400U);
+    EXPECT_GT(simple.size(), 50U);
+    for (const Point2& p : fine)
+        EXPECT_LE(distanceToLoop(p, simple), 25.0 + 1.0);
+}
+
+TEST(OutlineCleanup, CollinearPointsGoLongEdgesStay) {
+    const Path square{{0, 0}, {5'000, 0}, {10'000, 0}, {10'000, 10'000}, {0, 10'000}};
+    EXPECT_EQ(simplifyLoop(square, 500, 25), (Path{{0, 0}, {10'000, 0}, {10'000, 10'000}, {0, 10'000}}));
+    // A 1 mm notch is deeper than the deviation: it stays.
+    const Path notch{{0, 0},      {4'000, 0},       {5'000, 1'000}, {6'000, 0},
+                     {10'000, 0}, {10'000, 10'000}, {0, 10'000}};
+    EXPECT_EQ(simplifyLoop(notch, 500, 25).size(), notch.size());
+}
+
+TEST(OutlineCleanup, SmallLoopsAreDropped) {
+    std::vector<SlicedLayer> layers(1);
+    layers[0].outlines = {circle(10'000, 64), circle(100, 16)};  // circumference 0.63 mm < 1 mm
+    cleanOutlines(layers, OutlineCleanupParams{}, 2);
+    ASSERT_EQ(layers[0].outlines.size(), 1U);
+    EXPECT_NEAR(loopLengthUm(layers[0].outlines[0]), 2 * std::numbers::pi * 10'000, 100);
+}
+
+}  // namespace
+}  // namespace mixengine

@@ -1,0 +1,80 @@
+// Area helpers (toolpaths/PolygonOps.h) on squares and strips.
+#include "toolpaths/PolygonOps.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <numbers>
+
+#include "ToolpathTestSupport.h"
+
+namespace mixengine {
+namespace {
+
+using test::rect;
+using test::square;
+
+TEST(PolygonOps, BooleansOnOverlappingSquares) {
+    const Paths a{square(0, 0, 10'000)};
+    const Paths b{square(5'000, 0, 10'000)};
+    EXPECT_EQ(areaUm2(intersectAll(a, b)), 50e6);
+    EXPECT_EQ(areaUm2(differenceOf(a, b)), 50e6);
+    EXPECT_EQ(areaUm2(unionOf(a, b)), 150e6);
+    EXPECT_EQ(areaUm2(unionOf(Paths{square(0, 0, 10'000), square(5'000, 0, 10'000)})), 150e6);
+    EXPECT_TRUE(intersectAll(a, {}).empty());
+    EXPECT_EQ(areaUm2(differenceOf(a, {})), 100e6);
+    EXPECT_TRUE(differenceOf({}, a).empty());
+}
+
+TEST(PolygonOps, MitredOffsetKeepsSquareCornersRoundOneRoundsThem) {
+    const Paths grown = offsetMiter({square(0, 0, 10'000)}, 1'000);
+    ASSERT_EQ(grown.size(), 1U);
+    EXPECT_EQ(areaUm2(grown), 12'000.0 * 12'000.0);
+    const double round = areaUm2(offsetPolygons({square(0, 0, 10'000)}, 1'000));
+    const double exact = 100e6 + 4 * 10e6 + std::numbers::pi * 1e6;
+    EXPECT_LT(round, exact);
+    EXPECT_GT(round, 0.998 * exact);
+}
+
+TEST(PolygonOps, OpeningDropsTheThinPartAndKeepsCorners) {
+    // A 10 mm square with a 0.3 mm wide, 5 mm long spike on its right side.
+    const Paths shape = unionOf({square(0, 0, 10'000)}, {rect(10'000, 4'000, 15'000, 4'300)});
+    const Paths opened = openPolygons(shape, 200);
+    EXPECT_EQ(areaUm2(opened), 100e6);
+    const ClipperLib::IntRect box = boundsOf(opened);
+    EXPECT_EQ(box.right, 10'000);
+    EXPECT_EQ(box.left, 0);
+    // A strip 0.5 mm wide survives an opening of radius 0.2 mm unchanged.
+    EXPECT_EQ(areaUm2(openPolygons({rect(0, 0, 10'000, 500)}, 200)), 10'000.0 * 500);
+}
+
+TEST(PolygonOps, IslandsKeepTheirHoles) {
+    Path hole = square(2'000, 2'000, 6'000);
+    std::reverse(hole.begin(), hole.end());
+    const Paths shapes{square(0, 0, 10'000), hole, square(4'000, 4'000, 2'000), square(20'000, 0, 500)};
+    const std::vector<Paths> islands = splitIslands(shapes);
+    ASSERT_EQ(islands.size(), 3U);
+    double total = 0;
+    for (const Paths& island : islands)
+        total += areaUm2(island);
+    EXPECT_EQ(total, 100e6 - 36e6 + 4e6 + 0.25e6);
+    // Dropping islands under 1 mm²: the 0.5 mm square goes, the frame (64 mm²) and the inner 4 mm² stay.
+    EXPECT_EQ(areaUm2(removeSmallIslands(shapes, 1e6)), 100e6 - 36e6 + 4e6);
+    EXPECT_EQ(areaUm2(removeSmallIslands(shapes, 5e6)), 64e6);
+}
+
+TEST(PolygonOps, ClipLinesKeepsTheInsidePieces) {
+    const Paths pieces = clipLines({{{-5'000, 5'000}, {15'000, 5'000}}}, {square(0, 0, 10'000)});
+    ASSERT_EQ(pieces.size(), 1U);
+    EXPECT_EQ(std::min(pieces[0][0].X, pieces[0][1].X), 0);
+    EXPECT_EQ(std::max(pieces[0][0].X, pieces[0][1].X), 10'000);
+}
+
+TEST(PolygonOps, LengthOfOpenAndClosedPaths) {
+    const Path sq = square(0, 0, 1'000);
+    EXPECT_EQ(lengthUm(sq, true), 4'000.0);
+    EXPECT_EQ(lengthUm(sq, false), 3'000.0);
+}
+
+}  // namespace
+}  // namespace mixengine

@@ -1,0 +1,115 @@
+// Seam placement (toolpaths/Seam.h): which vertex a wall loop starts at.
+#include "toolpaths/Seam.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <set>
+
+#include "common/Error.h"
+
+#include "ToolpathTestSupport.h"
+
+namespace mixengine {
+namespace {
+
+using test::square;
+
+/// An L-shaped outline (counter-clockwise) whose only concave corner is at (10, 10) mm.
+Path lShape() {
+    return {{0, 0}, {20'000, 0}, {20'000, 10'000}, {10'000, 10'000}, {10'000, 20'000}, {0, 20'000}};
+}
+
+Path circle(int segments, coord_um r) {
+    Path c;
+    for (int i = 0; i < segments; ++i) {
+        const double a = 2 * std::numbers::pi * i / segments;
+        c.push_back({std::llround(r * std::cos(a)), std::llround(r * std::sin(a))});
+    }
+    return c;
+}
+
+ExtrusionPath loop(const Path& points) {
+    ExtrusionPath p;
+    p.points = points;
+    p.closed = true;
+    return p;
+}
+
+TEST(Seam, BackPicksTheVertexNearestToThePoint) {
+    SeamParams p;
+    p.type = SeamType::Back;
+    p.position_um = {100'000, 200'000};  // far behind, to the right
+    const Path sq = square(0, 0, 10'000);
+    EXPECT_EQ(sq[seamVertex(sq, p, 0)], (Point2{10'000, 10'000}));
+    p.position_um = {-50'000, 200'000};
+    EXPECT_EQ(sq[seamVertex(sq, p, 0)], (Point2{0, 10'000}));
+}
+
+TEST(Seam, PlaceSeamsRotatesTheLoopAndFixesItsStart) {
+    SeamParams p;
+    p.type = SeamType::Back;
+    p.position_um = {0, -100'000};  // in front
+    std::vector<ExtrusionPath> paths{loop(square(0, 0, 10'000)), ExtrusionPath{}};
+    paths[1].points = {{0, 0}, {5'000, 0}};  // an open line is left alone
+    placeSeams(paths, p, 3);
+    EXPECT_TRUE(paths[0].fixed_start);
+    EXPECT_EQ(paths[0].points, (Path{{0, 0}, {10'000, 0}, {10'000, 10'000}, {0, 10'000}}));
+    EXPECT_FALSE(paths[1].fixed_start);
+}
+
+TEST(Seam, ShortestLeavesTheStartToThePlanner) {
+    SeamParams p;
+    p.type = SeamType::Shortest;
+    std::vector<ExtrusionPath> paths{loop(square(0, 0, 10'000))};
+    placeSeams(paths, p, 0);
+    EXPECT_FALSE(paths[0].fixed_start);
+    EXPECT_EQ(paths[0].points, square(0, 0, 10'000));
+}
+
+TEST(Seam, SharpestCornerPrefersTheConcaveCornerWhenHidingInside) {
+    SeamParams p;
+    p.type = SeamType::SharpestCorner;
+    p.corner = SeamCorner::Inner;
+    const Path l = lShape();
+    EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{10'000, 10'000}));
+    // Outer corners only: the five convex corners tie, the back-most (then rightmost) wins.
+    p.corner = SeamCorner::Outer;
+    EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{10'000, 20'000}));
+}
+
+TEST(Seam, NoCornersMeansTheBackMostVertex) {
+    SeamParams p;
+    p.type = SeamType::SharpestCorner;
+    const Path c = circle(100, 10'000);
+    EXPECT_EQ(c[seamVertex(c, p, 0)], (Point2{0, 10'000}));  // as CuraEngine puts it on a cylinder
+}
+
+TEST(Seam, RandomIsReproducibleAndVaries) {
+    SeamParams p;
+    p.type = SeamType::Random;
+    const Path c = circle(64, 10'000);
+    EXPECT_EQ(seamVertex(c, p, 7), seamVertex(c, p, 7));
+    std::set<std::size_t> seen;
+    for (std::uint64_t seed = 0; seed < 20; ++seed)
+        seen.insert(seamVertex(c, p, seed));
+    EXPECT_GT(seen.size(), 10U);
+}
+
+TEST(Seam, SettingsWithRelativePosition) {
+    const Settings s("mesh", {{"z_seam_type", "back"},
+                              {"z_seam_corner", "z_seam_corner_none"},
+                              {"z_seam_x", "10"},
+                              {"z_seam_y", "-5"},
+                              {"z_seam_relative", "True"},
+                              {"wall_line_width_0", "0.4"}});
+    const SeamParams p = seamParamsFrom(s, {100'000, 100'000});
+    EXPECT_EQ(p.type, SeamType::Back);
+    EXPECT_EQ(p.corner, SeamCorner::None);
+    EXPECT_EQ(p.position_um, (Point2{110'000, 95'000}));
+    EXPECT_THROW(seamParamsFrom(Settings("mesh", {{"z_seam_type", "front"}}), {0, 0}), InputError);
+}
+
+}  // namespace
+}  // namespace mixengine

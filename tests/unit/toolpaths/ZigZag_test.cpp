@@ -1,0 +1,47 @@
+// Zigzag (toolpaths/ZigZag.h): the lines of a square joined along its edge into one polyline.
+#include "toolpaths/ZigZag.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ToolpathTestSupport.h"
+
+namespace mixengine {
+namespace {
+
+double polylineLength(const Path& p) {
+    double total = 0;
+    for (std::size_t i = 1; i < p.size(); ++i)
+        total += std::hypot(double(p[i].X - p[i - 1].X), double(p[i].Y - p[i - 1].Y));
+    return total;
+}
+
+TEST(ZigZag, SquareBecomesOneConnectedPolyline) {
+    // Lines x = 1 … 9 mm in a square 0.5 … 9.5 mm: nine 9 mm lines joined by eight 1 mm pieces.
+    const Paths lines = zigzagLines({test::square(500, 500, 9'000)}, 1'000, 0, 0, false);
+    ASSERT_EQ(lines.size(), 1U);
+    EXPECT_NEAR(polylineLength(lines[0]), 9 * 9'000.0 + 8 * 1'000.0, 1.0);
+    // Consecutive vertices alternate: a line along Y, then a step along X on the edge.
+    for (std::size_t i = 1; i < lines[0].size(); ++i) {
+        const bool along_y = lines[0][i].X == lines[0][i - 1].X;
+        const bool along_x = lines[0][i].Y == lines[0][i - 1].Y;
+        EXPECT_TRUE(along_x != along_y) << i;
+    }
+}
+
+TEST(ZigZag, EndPiecesAddTheAreasEnds) {
+    // With end pieces the edge beyond the first and last line (0.5 mm each side, along 9 mm) comes too.
+    const Paths lines = zigzagLines({test::square(500, 500, 9'000)}, 1'000, 0, 0, true);
+    double total = 0;
+    for (const Path& l : lines)
+        total += polylineLength(l);
+    EXPECT_NEAR(total, 9 * 9'000.0 + 8 * 1'000.0 + 2 * (9'000.0 + 2 * 500.0), 1.0);
+}
+
+TEST(ZigZag, NothingWithoutDistance) {
+    EXPECT_TRUE(zigzagLines({test::square(0, 0, 1'000)}, 0, 0, 0, false).empty());
+}
+
+}  // namespace
+}  // namespace mixengine
