@@ -5,20 +5,12 @@
 namespace mixengine {
 namespace {
 
-bool printsSomething(const MeshLayerGroups& g) {
-    return !g.inner_walls.empty() || !g.outer_walls.empty() || !g.skin.empty() || !g.infill.empty();
-}
-
 bool layerEmpty(const GroupToolpaths& toolpaths, const std::vector<std::vector<SlicedLayer>>& meshes,
                 std::size_t i) {
-    for (const MeshToolpaths& mesh : toolpaths.meshes) {
-        if (i < mesh.layers.size() && printsSomething(mesh.layers[i]))
-            return false;
-    }
     if (i < toolpaths.support.size() && !toolpaths.support[i].empty())
         return false;
     return std::none_of(meshes.begin(), meshes.end(), [&](const auto& layers) {
-        return i < layers.size() && !layers[i].open_polylines.empty();
+        return i < layers.size() && (!layers[i].outlines.empty() || !layers[i].open_polylines.empty());
     });
 }
 
@@ -32,8 +24,8 @@ void dropFront(std::vector<T>& list, std::size_t count) {
 std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths,
                                const std::vector<std::vector<SlicedLayer>>& meshes) {
     std::size_t layers = 0;
-    for (const MeshToolpaths& mesh : toolpaths.meshes)
-        layers = std::max(layers, mesh.layers.size());
+    for (const auto& mesh : meshes)
+        layers = std::max(layers, mesh.size());
     std::size_t count = 0;
     while (count < layers && layerEmpty(toolpaths, meshes, count))
         ++count;

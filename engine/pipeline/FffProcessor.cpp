@@ -33,6 +33,8 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
         input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m]});
     }
     GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
+    for (const std::string& warning : toolpaths.warnings)
+        log.warning(warning);
     std::vector<Paths> comb_areas(sliced.heights.size());
     for (const auto& mesh_layers : sliced.meshes) {
         for (std::size_t i = 0; i < mesh_layers.size(); ++i)

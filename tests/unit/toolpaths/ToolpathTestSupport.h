@@ -1,5 +1,6 @@
 #pragma once
 // Shapes and settings shared by the toolpath tests.
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
