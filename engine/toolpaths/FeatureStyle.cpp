@@ -59,4 +59,21 @@ MeshStyles meshStyles(const Settings& s, int layer) {
     return m;
 }
 
+void appendStyledLoops(const Paths& loops, Feature feature, const FeatureStyle& style,
+                       std::vector<ExtrusionPath>& out) {
+    for (const Path& loop : loops) {
+        if (loop.size() < 3)
+            continue;
+        ExtrusionPath path;
+        path.points = loop;
+        path.closed = true;
+        path.width_um = style.width_um;
+        path.feature = feature;
+        path.speed_mm_s = style.speed_mm_s;
+        path.flow = style.flow;
+        path.extruder = style.extruder;
+        out.push_back(std::move(path));
+    }
+}
+
 }  // namespace mixengine

@@ -8,9 +8,11 @@
 //              counts as 100 %);
 //   extruder — the feature's *_extruder_nr; −1 (or a missing key) means the mesh's extruder_nr.
 #include <string_view>
+#include <vector>
 
 #include "geometry/Point.h"
 #include "settings/Settings.h"
+#include "toolpaths/ExtrusionPath.h"
 
 namespace mixengine {
 
@@ -32,6 +34,10 @@ int ownExtruder(const Settings& s);
 double layerSpeed(const Settings& s, std::string_view speed_key, int layer);
 
 FeatureStyle featureStyle(const Settings& s, const FeatureKeys& keys, int layer);
+
+/// Appends every loop of `loops` with at least three points as a closed path of `feature` in `style`.
+void appendStyledLoops(const Paths& loops, Feature feature, const FeatureStyle& style,
+                       std::vector<ExtrusionPath>& out);
 
 /// The styles of a mesh's own features on one layer.
 struct MeshStyles {

@@ -19,22 +19,6 @@ InfillParams fillParams(const SkinFillParams& p) {
     return fill;
 }
 
-void appendLoops(const Paths& loops, const SkinFillParams& p, std::vector<ExtrusionPath>& out) {
-    for (const Path& loop : loops) {
-        if (loop.size() < 3)
-            continue;
-        ExtrusionPath path;
-        path.points = loop;
-        path.closed = true;
-        path.width_um = p.style.width_um;
-        path.feature = Feature::Skin;
-        path.speed_mm_s = p.style.speed_mm_s;
-        path.flow = p.style.flow;
-        path.extruder = p.style.extruder;
-        out.push_back(std::move(path));
-    }
-}
-
 }  // namespace
 
 std::vector<ExtrusionPath> generateSkinPaths(const Paths& area, const SkinFillParams& p) {
@@ -48,7 +32,7 @@ std::vector<ExtrusionPath> generateSkinPaths(const Paths& area, const SkinFillPa
     Paths inside = area;
     for (int i = 0; i < p.outline_count && !inside.empty(); ++i) {
         const Paths loops = offsetMiter(inside, -w / 2);
-        appendLoops(loops, p, out);
+        appendStyledLoops(loops, Feature::Skin, p.style, out);
         inside = loops.empty() ? Paths{} : offsetMiter(loops, -w / 2);
     }
     if (inside.empty())

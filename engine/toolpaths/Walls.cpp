@@ -2,34 +2,11 @@
 
 #include <algorithm>
 
+#include "toolpaths/FeatureStyle.h"
 #include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 namespace {
-
-struct LoopStyle {
-    coord_um width_um;
-    Feature feature;
-    double speed_mm_s;
-    double flow;
-    int extruder;
-};
-
-void appendLoops(const Paths& loops, const LoopStyle& style, std::vector<ExtrusionPath>& out) {
-    for (const Path& loop : loops) {
-        if (loop.size() < 3)
-            continue;
-        ExtrusionPath path;
-        path.points = loop;
-        path.closed = true;
-        path.width_um = style.width_um;
-        path.feature = style.feature;
-        path.speed_mm_s = style.speed_mm_s;
-        path.flow = style.flow;
-        path.extruder = style.extruder;
-        out.push_back(std::move(path));
-    }
-}
 
 /// The centre region of a wall of `width_um`, its pieces too narrow for a loop removed (1 µm of
 /// slack so that a piece exactly one line wide, whose two sides just touch, stays).
@@ -62,10 +39,10 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     std::vector<coord_um> depths;  // its distance inside the outer wall's centre line
     Paths region = wallRegion(offsetMiter(outlines, -(params.outer_width_um / 2 + params.outer_inset_um)),
                               params.outer_width_um);
-    appendLoops(region,
-                {params.outer_width_um, Feature::WallOuter, params.outer_speed_mm_s, params.outer_flow,
-                 params.outer_extruder},
-                result.walls);
+    appendStyledLoops(
+        region, Feature::WallOuter,
+        {params.outer_width_um, params.outer_speed_mm_s, params.outer_flow, params.outer_extruder},
+        result.walls);
     if (!region.empty()) {
         regions.push_back(region);
         depths.push_back(0);
@@ -75,10 +52,10 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     coord_um last_half = params.outer_width_um / 2;
     for (int i = 1; i < params.wall_count && !region.empty(); ++i) {
         region = wallRegion(offsetMiter(region, -step), params.inner_width_um);
-        appendLoops(region,
-                    {params.inner_width_um, Feature::WallInner, params.inner_speed_mm_s, params.inner_flow,
-                     params.inner_extruder},
-                    result.walls);
+        appendStyledLoops(
+            region, Feature::WallInner,
+            {params.inner_width_um, params.inner_speed_mm_s, params.inner_flow, params.inner_extruder},
+            result.walls);
         if (!region.empty()) {
             depths.push_back(depths.back() + step);
             regions.push_back(region);
