@@ -30,6 +30,7 @@ format:
 
 bench: build
 	tests/bench/run.sh $(BUILD)
+	tests/bench/quality.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) out
