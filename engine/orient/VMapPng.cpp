@@ -1,13 +1,12 @@
 #include "orient/VMapPng.h"
 
-#include <png.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 
 #include "common/Error.h"
+#include "common/PngWriter.h"
 
 namespace mixengine::orient {
 namespace {
@@ -34,7 +33,14 @@ class Canvas {
     void text(int x, int y, const std::string& s, int scale, Rgb c);
     int width() const { return width_; }
     int height() const { return height_; }
-    const Rgb* row(int y) const { return &pixels_[y * width_]; }
+    /// Row-major RGB bytes from the top row, as common/PngWriter takes them.
+    std::vector<std::uint8_t> bytes() const {
+        std::vector<std::uint8_t> out;
+        out.reserve(pixels_.size() * 3);
+        for (const Rgb& p : pixels_)
+            out.insert(out.end(), {p.r, p.g, p.b});
+        return out;
+    }
 
   private:
     int width_, height_;
@@ -95,32 +101,6 @@ std::string formatValue(double v) {
     return text;
 }
 
-void appendBytes(png_structp png, png_bytep data, png_size_t size) {
-    auto* out = static_cast<std::string*>(png_get_io_ptr(png));
-    out->append(reinterpret_cast<const char*>(data), size);
-}
-
-void flushNothing(png_structp) {}
-
-/// Encodes the canvas; false when libpng reported an error.
-bool encode(const Canvas& canvas, std::string& out) {
-    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!png || !info || setjmp(png_jmpbuf(png))) {
-        png_destroy_write_struct(&png, &info);
-        return false;
-    }
-    png_set_write_fn(png, &out, appendBytes, flushNothing);
-    png_set_IHDR(png, info, canvas.width(), canvas.height(), 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    png_write_info(png, info);
-    for (int y = 0; y < canvas.height(); ++y)
-        png_write_row(png, reinterpret_cast<png_const_bytep>(canvas.row(y)));
-    png_write_end(png, nullptr);
-    png_destroy_write_struct(&png, &info);
-    return true;
-}
-
 }  // namespace
 
 std::string renderVMapPng(const VMap& map, const LatLon& chosen) {
@@ -166,10 +146,7 @@ std::string renderVMapPng(const VMap& map, const LatLon& chosen) {
                        cy + static_cast<int>(std::lround(radius * std::sin(a * M_PI / 180))), c);
         }
     }
-    std::string out;
-    if (!encode(canvas, out))
-        throw InternalError("orient: libpng failed to encode the V map");
-    return out;
+    return encodePng(canvas.width(), canvas.height(), canvas.bytes());
 }
 
 }  // namespace mixengine::orient
