@@ -59,20 +59,23 @@ MeshStyles meshStyles(const Settings& s, int layer) {
     return m;
 }
 
+ExtrusionPath styledPath(const Path& points, bool closed, Feature feature, const FeatureStyle& style) {
+    ExtrusionPath path;
+    path.points = points;
+    path.closed = closed;
+    path.width_um = style.width_um;
+    path.feature = feature;
+    path.speed_mm_s = style.speed_mm_s;
+    path.flow = style.flow;
+    path.extruder = style.extruder;
+    return path;
+}
+
 void appendStyledLoops(const Paths& loops, Feature feature, const FeatureStyle& style,
                        std::vector<ExtrusionPath>& out) {
     for (const Path& loop : loops) {
-        if (loop.size() < 3)
-            continue;
-        ExtrusionPath path;
-        path.points = loop;
-        path.closed = true;
-        path.width_um = style.width_um;
-        path.feature = feature;
-        path.speed_mm_s = style.speed_mm_s;
-        path.flow = style.flow;
-        path.extruder = style.extruder;
-        out.push_back(std::move(path));
+        if (loop.size() >= 3)
+            out.push_back(styledPath(loop, true, feature, style));
     }
 }
 

@@ -35,6 +35,9 @@ double layerSpeed(const Settings& s, std::string_view speed_key, int layer);
 
 FeatureStyle featureStyle(const Settings& s, const FeatureKeys& keys, int layer);
 
+/// A path of `feature` through `points` with the style's width, speed, flow and extruder.
+ExtrusionPath styledPath(const Path& points, bool closed, Feature feature, const FeatureStyle& style);
+
 /// Appends every loop of `loops` with at least three points as a closed path of `feature` in `style`.
 void appendStyledLoops(const Paths& loops, Feature feature, const FeatureStyle& style,
                        std::vector<ExtrusionPath>& out);

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "common/Error.h"
+#include "toolpaths/FeatureStyle.h"
 #include "toolpaths/GyroidInfill.h"
 #include "toolpaths/LineInfill.h"
 #include "toolpaths/PolygonOps.h"
@@ -118,15 +119,8 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
     for (const Path& line : lines) {
         if (line.size() < 2)
             continue;
-        ExtrusionPath path;
-        path.points = line;
-        path.closed = loops;
-        path.width_um = params.line_width_um;
-        path.feature = params.feature;
-        path.speed_mm_s = params.speed_mm_s;
-        path.flow = params.flow;
-        path.extruder = params.extruder;
-        result.push_back(std::move(path));
+        result.push_back(styledPath(line, loops, params.feature,
+                                    {params.line_width_um, params.speed_mm_s, params.flow, params.extruder}));
     }
     return result;
 }

@@ -12,18 +12,6 @@ namespace {
 
 constexpr int kCircleSegments = 32;
 
-ExtrusionPath loopPath(const Path& loop, const FeatureStyle& style, Feature feature) {
-    ExtrusionPath path;
-    path.points = loop;
-    path.closed = true;
-    path.width_um = style.width_um;
-    path.feature = feature;
-    path.speed_mm_s = style.speed_mm_s;
-    path.flow = style.flow;
-    path.extruder = style.extruder;
-    return path;
-}
-
 FeatureStyle towerStyle(const TowerInput& in, int extruder, int layer) {
     const Settings& s = trainSettings(*in.global, in.extruders, extruder);
     FeatureStyle style =
@@ -39,7 +27,7 @@ Paths addRings(Paths area, const FeatureStyle& style, double volume_mm3, coord_u
     while (!area.empty() && (fill || volume < volume_mm3)) {
         const Paths ring = offsetMiter(area, -style.width_um / 2);
         for (const Path& loop : ring) {
-            out.push_back(loopPath(loop, style, Feature::PrimeTower));
+            out.push_back(styledPath(loop, true, Feature::PrimeTower, style));
             volume += lengthUm(loop, true) * double(style.width_um) * double(thickness) * style.flow * 1e-9;
         }
         area = ring.empty() ? Paths{} : offsetMiter(ring, -style.width_um / 2);
@@ -125,7 +113,7 @@ std::vector<std::vector<ExtrusionPath>> generateOozeShield(const TowerInput& in)
         style.extruder = extruder;
         for (const Path& p : unionOf(shield[i])) {
             if (ClipperLib::Orientation(p))
-                layers[i].push_back(loopPath(p, style, Feature::Skirt));
+                layers[i].push_back(styledPath(p, true, Feature::Skirt, style));
         }
     }
     return layers;
