@@ -12,10 +12,13 @@ void Log::write(std::string_view prefix, std::string_view message) {
 }
 
 void Log::progress(std::string_view stage, double fraction) {
-    if (!progress_)
+    if (!progress_ && !sink_)
         return;
     std::lock_guard lock(mutex_);
-    out_ << "Progress: " << stage << ' ' << static_cast<int>(std::lround(fraction * 100.0)) << "%\n";
+    if (sink_)
+        sink_(stage, fraction);
+    if (progress_)
+        out_ << "Progress: " << stage << ' ' << static_cast<int>(std::lround(fraction * 100.0)) << "%\n";
 }
 
 }  // namespace mixengine

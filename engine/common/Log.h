@@ -1,9 +1,11 @@
 #pragma once
 // A small logger passed by reference (no global state). Messages go to a stream (stderr in main).
 // Verbosity: 0 = warnings and errors only, 1 = info (-v), 2 = debug (-vv).
+#include <functional>
 #include <mutex>
 #include <ostream>
 #include <string_view>
+#include <utility>
 
 namespace mixengine {
 
@@ -23,6 +25,11 @@ class Log {
     /// Progress of a long stage, 0..1; printed only when progress reporting is on (-p).
     void progress(std::string_view stage, double fraction);
 
+    /// Also hands every progress report to `sink` (e.g. Cura's socket), whether or not -p is on.
+    /// The sink is called under the log's lock, so it sees one report at a time.
+    using ProgressSink = std::function<void(std::string_view stage, double fraction)>;
+    void setProgressSink(ProgressSink sink) { sink_ = std::move(sink); }
+
     void setVerbosity(int verbosity) { verbosity_ = verbosity; }
     void setProgress(bool enabled) { progress_ = enabled; }
     int warningCount() const { return warnings_; }
@@ -33,6 +40,7 @@ class Log {
     std::ostream& out_;
     int verbosity_;
     bool progress_ = false;
+    ProgressSink sink_;
     int warnings_ = 0;
     std::mutex mutex_;
 };

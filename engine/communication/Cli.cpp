@@ -26,10 +26,12 @@ int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
         return runSettingsCommand(words, out, err);
     if (command == "demo")
         return runDemoCommand(words, out, err);
+    if (command == "connect")
+        return runConnectCommand(words, out, err);
     if (command == "orient")
         return runOrientCommand(words, out, err);
     throw InputError("unknown command '" + command +
-                     "' (commands: help, slice, layers, settings, demo, orient)");
+                     "' (commands: help, slice, connect, layers, settings, demo, orient)");
 }
 
 }  // namespace mixengine

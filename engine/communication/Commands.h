@@ -13,6 +13,7 @@ int runSliceCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runLayersCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runSettingsCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runDemoCommand(const Words& args, std::ostream& out, std::ostream& err);
+int runConnectCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runOrientCommand(const Words& args, std::ostream& out, std::ostream& err);
 
 }  // namespace mixengine

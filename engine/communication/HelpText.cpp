@@ -37,6 +37,13 @@ mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<va
                 Without these the definitions alone apply (as CuraEngine's command line does),
                 but their `value` formulas are always evaluated, so derived settings follow.
 
+mixengine connect <host>[:<port>] [-v] [-m<threads>]
+	Cura's engine mode: connect to Cura's socket (Arcus protocol, port 49674 by default), wait
+	for one Slice message, slice it with the settings Cura sends, stream back the G-code layer by
+	layer, the layer preview, the header and the print time / material estimates, then exit 0.
+	Cura starts it as `mixengine connect 127.0.0.1:<port> ""`; other flags are ignored with a
+	warning, as CuraEngine does. SIGTERM (Cura cancelling a slice) ends it at once.
+
 mixengine layers <slice arguments> -o <dir>
 	Slice only, and write <dir>/layers.json (outlines in mm, area per layer) and one SVG per
 	layer (<dir>/layer_00000.svg ...), in the model's own frame, to look at the slices.

@@ -50,10 +50,24 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     return planPrint(heights, toolpaths, group.settings, scene.machine.extruders, comb_areas, state);
 }
 
+/// "a.stl", "a.stl, b.stl", or "a.stl, b.stl and 3 more meshes" for messages.
+std::string meshNames(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const SceneGroup& group : scene.groups)
+        for (const SceneMesh& m : group.meshes)
+            names.push_back(m.mesh.name);
+    std::string text;
+    for (std::size_t i = 0; i < names.size() && i < 2; ++i)
+        text += (i ? ", " : "") + names[i];
+    if (names.size() > 2)
+        text += " and " + std::to_string(names.size() - 2) + " more meshes";
+    return text.empty() ? "the scene" : text;
+}
+
 }  // namespace
 
 std::string GCodeOutput::joined() const {
-    std::string text = prefix;
+    std::string text = header + start;
     for (const std::string& chunk : layer_chunks)
         text += chunk;
     return text + suffix;
@@ -115,8 +129,11 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         for (std::string& chunk : written.chunks)
             output.layer_chunks.push_back(std::move(chunk));
     }
-    if (output.layer_chunks.empty())
+    if (output.layer_chunks.empty()) {
         output.summary.min = output.summary.max = {};
+        log.warning("nothing to print: no part of " + meshNames(scene) +
+                    " lies at a slice height above the build plate (0 layers)");
+    }
 
     const bool relative = relativeExtrusion(global);
     output.summary.flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
@@ -126,10 +143,11 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     describeExtruders(scene, exportParams(scene).volumetric, output.summary);
     output.summary.layer_height_mm = global.millimetres("layer_height");
     output.summary.engine_version = MIXENGINE_VERSION;
-    output.prefix = makeHeader(output.summary) + startCode(global, scene.machine.extruders.front(), relative);
+    output.header = makeHeader(output.summary);
+    output.start = startCode(global, scene.machine.extruders.front(), relative);
     if (!relative)
-        output.prefix += "G92 E0\n";
-    output.prefix += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
+        output.start += "G92 E0\n";
+    output.start += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
     output.suffix = endCode(global, relative) + ";End of Gcode\n";
     log.progress("done", 1.0);
     return output;

@@ -19,7 +19,8 @@ struct SlicedGroup {
 };
 
 struct GCodeOutput {
-    std::string prefix;                     ///< header + start code + ;LAYER_COUNT:
+    std::string header;                     ///< ;FLAVOR: … or the Griffin block (Cura's GCodePrefix)
+    std::string start;                      ///< start code + ;LAYER_COUNT: (the first layer chunk)
     std::vector<std::string> layer_chunks;  ///< one per layer, ";LAYER:n" first
     std::string suffix;                     ///< end code
     PrintSummary summary;

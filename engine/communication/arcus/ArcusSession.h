@@ -1,0 +1,81 @@
+#pragma once
+// The engine's end of Cura's socket (shared/reference/cura-integration.md §2, §6), over Debian's
+// libArcus: Cura listens, the engine connects, waits idle for one Slice, sends its results and
+// closes with the 0xF0F0F0F0 handshake. libArcus does the framing, the keep-alives and the
+// handshake; this class adds the waiting, the error policy and the message type table.
+//
+// Error policy: a connection that cannot be made, a frame that cannot be parsed, an unknown
+// message type or a peer that goes away are thrown as ProtocolError (one line naming what
+// happened); the caller ends the process cleanly. Nothing here calls exit().
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <Arcus/Socket.h>
+#include <Arcus/SocketListener.h>
+
+#include "common/Error.h"
+#include "common/Log.h"
+
+namespace cura::proto {
+class Slice;
+}
+
+namespace mixengine {
+
+class ProtocolError : public InputError {
+  public:
+    using InputError::InputError;
+};
+
+class ArcusSession {
+  public:
+    explicit ArcusSession(Log& log);
+    ~ArcusSession();
+    ArcusSession(const ArcusSession&) = delete;
+    ArcusSession& operator=(const ArcusSession&) = delete;
+
+    /// Connects to the frontend; throws ProtocolError when not connected within `timeout`.
+    void connect(const std::string& host, int port, std::chrono::milliseconds timeout);
+
+    /// Waits (idle, as long as it takes) for the Slice message. Returns nullptr when the frontend
+    /// closes the connection first. Other known messages are logged and ignored; a fatal socket
+    /// error, an unknown type or an unparsable frame throws ProtocolError.
+    std::shared_ptr<cura::proto::Slice> waitForSlice();
+
+    /// Queues a message for sending; throws ProtocolError if the connection is gone.
+    void send(const Arcus::MessagePtr& message);
+
+    /// Sends what is queued, then the close request, and waits (at most `timeout`) for the
+    /// frontend's answer.
+    void close(std::chrono::milliseconds timeout);
+
+  private:
+    class Listener : public Arcus::SocketListener {
+      public:
+        explicit Listener(ArcusSession& session) : session_(session) {}
+        void stateChanged(Arcus::SocketState::SocketState state) override;
+        void messageReceived() override;
+        void error(const Arcus::Error& error) override;
+
+      private:
+        ArcusSession& session_;
+    };
+
+    void throwIfFailed();  // caller holds mutex_
+
+    Log& log_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    Arcus::SocketState::SocketState state_ = Arcus::SocketState::Initial;
+    int pending_messages_ = 0;
+    std::string failure_;  ///< the first fatal or protocol error, empty when none
+    /// Declared last so it is destroyed first: its destructor closes the connection and joins
+    /// its thread, which may still call the listener (owned and deleted by the socket itself)
+    /// and through it the members above.
+    Arcus::Socket socket_;
+};
+
+}  // namespace mixengine

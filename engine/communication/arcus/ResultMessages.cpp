@@ -1,0 +1,47 @@
+#include "communication/arcus/ResultMessages.h"
+
+#include <numbers>
+
+#include "Cura.pb.h"
+
+namespace mixengine {
+
+Arcus::MessagePtr progressMessage(double amount) {
+    auto message = std::make_shared<cura::proto::Progress>();
+    message->set_amount(static_cast<float>(amount));
+    return message;
+}
+
+Arcus::MessagePtr gcodeLayerMessage(const std::string& gcode) {
+    auto message = std::make_shared<cura::proto::GCodeLayer>();
+    message->set_data(gcode);
+    return message;
+}
+
+Arcus::MessagePtr gcodePrefixMessage(const std::string& header) {
+    auto message = std::make_shared<cura::proto::GCodePrefix>();
+    message->set_data(header);
+    return message;
+}
+
+Arcus::MessagePtr slicingFinishedMessage() {
+    return std::make_shared<cura::proto::SlicingFinished>();
+}
+
+Arcus::MessagePtr estimatesMessage(const PrintSummary& summary,
+                                   const std::vector<double>& filament_diameters_mm, bool volumetric) {
+    auto message = std::make_shared<cura::proto::PrintTimeMaterialEstimates>();
+    message->set_time_none(static_cast<float>(summary.print_time_s));
+    for (std::size_t i = 0; i < filament_diameters_mm.size(); ++i) {
+        const double amount =
+            i < summary.filament_per_extruder.size() ? summary.filament_per_extruder[i] : 0.0;
+        const double radius_mm = filament_diameters_mm[i] / 2.0;
+        const double volume_mm3 = volumetric ? amount : amount * std::numbers::pi * radius_mm * radius_mm;
+        cura::proto::MaterialEstimates* estimate = message->add_materialestimates();
+        estimate->set_id(static_cast<std::int64_t>(i));
+        estimate->set_material_amount(static_cast<float>(volume_mm3));
+    }
+    return message;
+}
+
+}  // namespace mixengine

@@ -1,0 +1,26 @@
+#pragma once
+// The messages the engine sends back to Cura (shared/reference/cura-integration.md §5), built
+// from the pipeline's plain results. Units on the wire: material amounts in mm³ (one entry per
+// extruder train, in train order, since Cura reads them by position), times in seconds.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Arcus/Types.h>
+
+#include "gcode/Header.h"
+
+namespace mixengine {
+
+Arcus::MessagePtr progressMessage(double amount);
+Arcus::MessagePtr gcodeLayerMessage(const std::string& gcode);
+Arcus::MessagePtr gcodePrefixMessage(const std::string& header);
+Arcus::MessagePtr slicingFinishedMessage();
+
+/// `summary.filament_per_extruder` is filament length in mm (volume in mm³ when `volumetric`);
+/// `filament_diameters_mm` has one entry per train. The print time is reported as one total
+/// (Cura sums the per-feature fields).
+Arcus::MessagePtr estimatesMessage(const PrintSummary& summary,
+                                   const std::vector<double>& filament_diameters_mm, bool volumetric);
+
+}  // namespace mixengine
