@@ -39,9 +39,13 @@ def free_port():
 
 
 def stl_triangles_bytes(path):
-    """The float32 vertex soup Cura sends (9 floats per triangle) from a binary STL."""
+    """The float32 vertex soup Cura sends (9 floats per triangle) from a binary or ASCII STL."""
     with open(path, "rb") as f:
         data = f.read()
+    if data[:5] == b"solid" and b"facet" in data[:1000]:
+        words = data.decode("ascii").split()
+        values = [float(words[i + j]) for i, w in enumerate(words) if w == "vertex" for j in (1, 2, 3)]
+        return struct.pack("<%df" % len(values), *values)
     (count,) = struct.unpack_from("<I", data, 80)
     out = bytearray()
     for i in range(count):

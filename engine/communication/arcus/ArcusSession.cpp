@@ -54,7 +54,13 @@ ArcusSession::ArcusSession(Log& log) : log_(log) {
     socket_.addListener(new Listener(*this));  // libArcus deletes its listeners with the socket
 }
 
-ArcusSession::~ArcusSession() = default;
+ArcusSession::~ArcusSession() {
+    // libArcus 4.13 leaves its thread joinable when the socket ended in Error (its destructor
+    // would then terminate the process); reset() joins it in that state.
+    const auto state = socket_.getState();
+    if (state == Arcus::SocketState::Error || state == Arcus::SocketState::Closed)
+        socket_.reset();
+}
 
 void ArcusSession::throwIfFailed() {
     if (!failure_.empty())

@@ -75,8 +75,12 @@ void addLayerSegments(const PlannedLayer& planned, double thickness_mm, cura::pr
                       Point2& head, int& extruder) {
     SegmentBuilder segment(layer, thickness_mm);
     segment.start(extruder, head);
+    Feature feature = Feature::Fill;  // the extrusions' type comes from the last SetFeature step
     for (const PlanStep& step : planned.steps) {
         switch (step.kind) {
+            case PlanStep::Kind::SetFeature:
+                feature = step.feature;
+                break;
             case PlanStep::Kind::SetExtruder:
                 if (step.extruder != extruder) {
                     extruder = step.extruder;
@@ -91,7 +95,7 @@ void addLayerSegments(const PlannedLayer& planned, double thickness_mm, cura::pr
                 const double length = lengthMm(head, step.to);
                 const double width =
                     length > 0 && thickness_mm > 0 ? step.volume_mm3 / (length * thickness_mm) : 0.0;
-                segment.line(step.to, curaLineType(step.feature), width, step.speed_mm_s);
+                segment.line(step.to, curaLineType(feature), width, step.speed_mm_s);
                 head = step.to;
                 break;
             }
