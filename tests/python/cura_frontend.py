@@ -176,6 +176,8 @@ def run(job):
             continue
         if terminate_at is not None and time.monotonic() >= terminate_at:
             engine.send_signal(signal.SIGTERM)
+            result["sigterm_at"] = time.monotonic()
+            result["messages_before_sigterm"] = sum(result["counts"].values())
             terminate_at = None
         if engine.poll() is not None:
             break
@@ -191,6 +193,8 @@ def run(job):
     except subprocess.TimeoutExpired:
         engine.kill()
         result["exit_code"] = "timeout"
+    if "sigterm_at" in result:
+        result["exit_after_sigterm_s"] = time.monotonic() - result.pop("sigterm_at")
     engine.stdout.read()
     reader.join(5)
     result["stderr"] = out.get("stderr", b"").decode("utf-8", "replace")

@@ -1,9 +1,14 @@
 #include "communication/arcus/ArcusSession.h"
 
+#include <future>
+#include <thread>
+
 #include "Cura.pb.h"
 
 namespace mixengine {
 namespace {
+
+using namespace std::chrono_literals;
 
 /// Every message type of Cura.proto that may appear as a top-level frame, both directions.
 void registerTypes(Arcus::Socket& socket) {
@@ -24,58 +29,92 @@ bool isEnded(Arcus::SocketState::SocketState state) {
            state == Arcus::SocketState::Error;
 }
 
+/// One printable line for an Arcus error (libArcus appends raw payload bytes to some messages).
+std::string describe(const Arcus::Error& error) {
+    switch (error.getErrorCode()) {
+        case Arcus::ErrorCode::UnknownMessageTypeError:
+            return "unknown message type (not in Cura.proto)";
+        case Arcus::ErrorCode::ParseFailedError:
+            return "a message failed to parse";
+        case Arcus::ErrorCode::ConnectionResetError:
+            return "the frontend reset the connection";
+        default:
+            break;
+    }
+    std::string text = error.getErrorMessage();
+    for (char& c : text) {
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
+            c = '?';
+    }
+    return text.empty() ? "socket error" : text;
+}
+
 }  // namespace
 
 void ArcusSession::Listener::stateChanged(Arcus::SocketState::SocketState state) {
-    std::lock_guard lock(session_.mutex_);
-    session_.state_ = state;
-    session_.changed_.notify_all();
+    std::lock_guard lock(shared_->mutex);
+    shared_->state = state;
+    shared_->changed.notify_all();
 }
 
 void ArcusSession::Listener::messageReceived() {
-    std::lock_guard lock(session_.mutex_);
-    ++session_.pending_messages_;
-    session_.changed_.notify_all();
+    std::lock_guard lock(shared_->mutex);
+    ++shared_->pending_messages;
+    shared_->changed.notify_all();
 }
 
 void ArcusSession::Listener::error(const Arcus::Error& error) {
+    std::lock_guard lock(shared_->mutex);
     if (error.getErrorCode() == Arcus::ErrorCode::Debug) {
-        session_.log_.debug("socket: " + error.getErrorMessage());
+        if (shared_->log)
+            shared_->log->debug("socket: " + error.getErrorMessage());
         return;
     }
-    std::lock_guard lock(session_.mutex_);
-    if (session_.failure_.empty())
-        session_.failure_ = error.getErrorMessage().empty() ? "socket error" : error.getErrorMessage();
-    session_.changed_.notify_all();
+    if (shared_->failure.empty())
+        shared_->failure = describe(error);
+    shared_->changed.notify_all();
 }
 
 ArcusSession::ArcusSession(Log& log) : log_(log) {
-    registerTypes(socket_);
-    socket_.addListener(new Listener(*this));  // libArcus deletes its listeners with the socket
+    shared_->log = &log;
+    registerTypes(*socket_);
+    socket_->addListener(new Listener(shared_));  // libArcus deletes its listeners with the socket
 }
 
 ArcusSession::~ArcusSession() {
-    // libArcus 4.13 leaves its thread joinable when the socket ended in Error (its destructor
-    // would then terminate the process); reset() joins it in that state.
-    const auto state = socket_.getState();
-    if (state == Arcus::SocketState::Error || state == Arcus::SocketState::Closed)
-        socket_.reset();
+    close(2s);
+    if (socket_) {
+        // libArcus 4.13 leaves its thread joinable when the socket ended in Error (its destructor
+        // would then terminate the process); reset() joins it in that state.
+        const auto state = socket_->getState();
+        if (state == Arcus::SocketState::Error || state == Arcus::SocketState::Closed)
+            socket_->reset();
+    }
+    std::lock_guard lock(shared_->mutex);
+    shared_->log = nullptr;
 }
 
-void ArcusSession::throwIfFailed() {
-    if (!failure_.empty())
-        throw ProtocolError("Cura socket: " + failure_);
+void ArcusSession::throwIfFailed() const {
+    if (!shared_->failure.empty())
+        throw ProtocolError("Cura socket: " + shared_->failure);
 }
 
 void ArcusSession::connect(const std::string& host, int port, std::chrono::milliseconds timeout) {
     log_.info("connecting to " + host + ":" + std::to_string(port));
-    socket_.connect(host, port);
-    std::unique_lock lock(mutex_);
-    const bool settled = changed_.wait_for(lock, timeout, [this] {
-        return state_ == Arcus::SocketState::Connected || isEnded(state_) || !failure_.empty();
+    socket_->connect(host, port);
+    std::unique_lock lock(shared_->mutex);
+    const bool settled = shared_->changed.wait_for(lock, timeout, [this] {
+        return shared_->state != Arcus::SocketState::Initial &&
+               shared_->state != Arcus::SocketState::Connecting;
     });
-    if (!failure_.empty() || state_ != Arcus::SocketState::Connected) {
-        const std::string why = !failure_.empty() ? failure_ : settled ? "connection closed" : "timed out";
+    // Connected, or already closing because the frontend asked at once: both were connections.
+    const bool connected = shared_->state == Arcus::SocketState::Connected ||
+                           shared_->state == Arcus::SocketState::Closing ||
+                           shared_->state == Arcus::SocketState::Closed;
+    if (!shared_->failure.empty() || !connected) {
+        const std::string why = !shared_->failure.empty() ? shared_->failure
+                                : settled                 ? "socket error"
+                                                          : "timed out";
         throw ProtocolError("cannot connect to Cura at " + host + ":" + std::to_string(port) + ": " + why);
     }
 }
@@ -83,15 +122,16 @@ void ArcusSession::connect(const std::string& host, int port, std::chrono::milli
 std::shared_ptr<cura::proto::Slice> ArcusSession::waitForSlice() {
     for (;;) {
         {
-            std::unique_lock lock(mutex_);
-            changed_.wait(lock,
-                          [this] { return pending_messages_ > 0 || isEnded(state_) || !failure_.empty(); });
+            std::unique_lock lock(shared_->mutex);
+            shared_->changed.wait(lock, [this] {
+                return shared_->pending_messages > 0 || isEnded(shared_->state) || !shared_->failure.empty();
+            });
             throwIfFailed();
-            if (pending_messages_ == 0)
+            if (shared_->pending_messages == 0)
                 return nullptr;  // the frontend closed the connection
-            --pending_messages_;
+            --shared_->pending_messages;
         }
-        const Arcus::MessagePtr message = socket_.takeNextMessage();
+        const Arcus::MessagePtr message = socket_->takeNextMessage();
         if (!message)
             continue;
         if (auto slice = std::dynamic_pointer_cast<cura::proto::Slice>(message))
@@ -102,23 +142,36 @@ std::shared_ptr<cura::proto::Slice> ArcusSession::waitForSlice() {
 
 void ArcusSession::send(const Arcus::MessagePtr& message) {
     {
-        std::lock_guard lock(mutex_);
+        std::lock_guard lock(shared_->mutex);
         throwIfFailed();
-        if (isEnded(state_))
+        if (isEnded(shared_->state))
             throw ProtocolError("Cura socket: the frontend closed the connection");
     }
-    socket_.sendMessage(message);
+    socket_->sendMessage(message);
 }
 
 void ArcusSession::close(std::chrono::milliseconds timeout) {
+    if (!socket_)
+        return;
     {
-        std::lock_guard lock(mutex_);
-        if (isEnded(state_) || state_ == Arcus::SocketState::Initial)
+        std::lock_guard lock(shared_->mutex);
+        if (shared_->state != Arcus::SocketState::Connected)
             return;
     }
-    socket_.close();
-    std::unique_lock lock(mutex_);
-    changed_.wait_for(lock, timeout, [this] { return state_ == Arcus::SocketState::Closed; });
+    auto closed = std::make_shared<std::promise<void>>();
+    std::future<void> done = closed->get_future();
+    std::thread closer([socket = socket_.get(), closed] {
+        socket->close();
+        closed->set_value();
+    });
+    if (done.wait_for(timeout) == std::future_status::ready) {
+        closer.join();
+        return;
+    }
+    log_.warning("Cura did not answer the close request within " + std::to_string(timeout.count()) +
+                 " ms; leaving the connection");
+    closer.detach();
+    static_cast<void>(socket_.release());  // abandoned on purpose: in use by the detached closer
 }
 
 }  // namespace mixengine

@@ -33,6 +33,7 @@ class ProtocolError : public InputError {
 class ArcusSession {
   public:
     explicit ArcusSession(Log& log);
+    /// Closes the connection if it is still open (bounded, see close()).
     ~ArcusSession();
     ArcusSession(const ArcusSession&) = delete;
     ArcusSession& operator=(const ArcusSession&) = delete;
@@ -48,34 +49,40 @@ class ArcusSession {
     /// Queues a message for sending; throws ProtocolError if the connection is gone.
     void send(const Arcus::MessagePtr& message);
 
-    /// Sends what is queued, then the close request, and waits (at most `timeout`) for the
-    /// frontend's answer.
+    /// Sends what is queued, then the close request, and waits at most `timeout` for the
+    /// frontend's answer. libArcus waits for that answer without a limit, so a frontend that
+    /// never answers gets its socket abandoned (its thread ends with the process) instead of
+    /// a hang.
     void close(std::chrono::milliseconds timeout);
 
   private:
+    /// What the socket's thread reports, shared with the listener so that a late report after
+    /// the session is gone still lands in live memory.
+    struct Shared {
+        std::mutex mutex;
+        std::condition_variable changed;
+        Arcus::SocketState::SocketState state = Arcus::SocketState::Initial;
+        int pending_messages = 0;
+        std::string failure;  ///< the first fatal or protocol error, empty when none
+        Log* log = nullptr;   ///< cleared when the session ends
+    };
+
     class Listener : public Arcus::SocketListener {
       public:
-        explicit Listener(ArcusSession& session) : session_(session) {}
+        explicit Listener(std::shared_ptr<Shared> shared) : shared_(std::move(shared)) {}
         void stateChanged(Arcus::SocketState::SocketState state) override;
         void messageReceived() override;
         void error(const Arcus::Error& error) override;
 
       private:
-        ArcusSession& session_;
+        std::shared_ptr<Shared> shared_;
     };
 
-    void throwIfFailed();  // caller holds mutex_
+    void throwIfFailed() const;  // caller holds shared_->mutex
 
     Log& log_;
-    std::mutex mutex_;
-    std::condition_variable changed_;
-    Arcus::SocketState::SocketState state_ = Arcus::SocketState::Initial;
-    int pending_messages_ = 0;
-    std::string failure_;  ///< the first fatal or protocol error, empty when none
-    /// Declared last so it is destroyed first: its destructor closes the connection and joins
-    /// its thread, which may still call the listener (owned and deleted by the socket itself)
-    /// and through it the members above.
-    Arcus::Socket socket_;
+    std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
+    std::unique_ptr<Arcus::Socket> socket_ = std::make_unique<Arcus::Socket>();
 };
 
 }  // namespace mixengine
