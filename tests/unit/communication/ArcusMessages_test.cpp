@@ -1,0 +1,164 @@
+// Cura's socket messages ↔ plain data (communication/arcus/): the connect command line as Cura
+// writes it, the Slice message → SliceRequest, and a plan → the LayerOptimized preview.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "Cura.pb.h"
+#include "communication/arcus/ConnectArgs.h"
+#include "communication/arcus/PreviewLayers.h"
+#include "communication/arcus/ResultMessages.h"
+#include "communication/arcus/SliceMessage.h"
+#include "unit/settings/ScratchDir.h"
+
+namespace mixengine {
+namespace {
+
+using unit::contains;
+using unit::inputErrorOf;
+
+TEST(ConnectArgs, CurasOwnCommandLine) {
+    const ConnectArgs args = parseConnectArguments({"127.0.0.1:49677", ""});
+    EXPECT_EQ(args.host, "127.0.0.1");
+    EXPECT_EQ(args.port, 49677);
+    EXPECT_EQ(args.verbosity, 0);
+    EXPECT_TRUE(args.ignored.empty());
+}
+
+TEST(ConnectArgs, DebugVerbosityThreadsAndUnknownFlags) {
+    const ConnectArgs args = parseConnectArguments({"localhost", "", "-vvv", "-m2", "-j", "x.def.json"});
+    EXPECT_EQ(args.host, "localhost");
+    EXPECT_EQ(args.port, 49674);  // CuraEngine's default port
+    EXPECT_EQ(args.verbosity, 3);
+    EXPECT_EQ(args.threads, 2);
+    EXPECT_EQ(args.ignored, (std::vector<std::string>{"-j", "x.def.json"}));
+}
+
+TEST(ConnectArgs, BadAddressesNameTheWord) {
+    EXPECT_TRUE(contains(inputErrorOf([] { parseConnectArguments({"127.0.0.1:0"}); }), "'127.0.0.1:0'"));
+    EXPECT_TRUE(contains(inputErrorOf([] { parseConnectArguments({"127.0.0.1:port"}); }), "port from 1"));
+    EXPECT_TRUE(contains(inputErrorOf([] { parseConnectArguments({""}); }), "missing <host>"));
+    EXPECT_TRUE(contains(inputErrorOf([] { parseConnectArguments({"h:1", "-m0"}); }), "'-m0'"));
+}
+
+std::string floatBytes(const std::vector<float>& values) {
+    std::string bytes(values.size() * sizeof(float), '\0');
+    std::memcpy(bytes.data(), values.data(), bytes.size());
+    return bytes;
+}
+
+void addSetting(google::protobuf::RepeatedPtrField<cura::proto::Setting>* list, const std::string& key,
+                const std::string& value) {
+    cura::proto::Setting* setting = list->Add();
+    setting->set_name(key);
+    setting->set_value(value);
+}
+
+cura::proto::Slice twoExtruderSlice() {
+    cura::proto::Slice slice;
+    addSetting(slice.mutable_global_settings()->mutable_settings(), "layer_height", "0.2");
+    addSetting(slice.mutable_global_settings()->mutable_settings(), "support_angle", "50");
+    for (int id : {0, 1}) {
+        cura::proto::Extruder* extruder = slice.add_extruders();
+        extruder->set_id(id);
+        addSetting(extruder->mutable_settings()->mutable_settings(), "support_angle", id == 0 ? "40" : "60");
+    }
+    cura::proto::SettingExtruder* limit = slice.add_limit_to_extruder();
+    limit->set_name("support_angle");
+    limit->set_extruder(1);
+    cura::proto::ObjectList* group = slice.add_object_lists();
+    addSetting(group->mutable_settings(), "print_sequence", "one_at_a_time");
+    cura::proto::Object* object = group->add_objects();
+    object->set_name("tri.stl");
+    object->set_vertices(floatBytes({0, 0, 0, 10, 0, 0, 0, 10, 5}));
+    addSetting(object->mutable_settings(), "extruder_nr", "1");
+    return slice;
+}
+
+TEST(SliceMessage, EveryScopeLandsInTheRequest) {
+    const SliceRequest request = requestFromSlice(twoExtruderSlice());
+    EXPECT_TRUE(request.settings_from_frontend);
+    EXPECT_EQ(request.user.global.at("layer_height"), "0.2");
+    ASSERT_EQ(request.user.extruders.size(), 2U);
+    EXPECT_EQ(request.user.extruders.at(0).at("support_angle"), "40");
+    // limit_to_extruder: the global lookup of support_angle reads extruder 1's value
+    EXPECT_EQ(request.user.global.at("support_angle"), "60");
+    ASSERT_EQ(request.groups.size(), 1U);
+    EXPECT_EQ(request.groups[0].settings.at("print_sequence"), "one_at_a_time");
+    const MeshInput& mesh = request.groups[0].meshes.at(0);
+    EXPECT_EQ(mesh.name, "tri.stl");
+    EXPECT_EQ(mesh.default_extruder, 1);
+    EXPECT_FALSE(mesh.file.has_value());
+    ASSERT_EQ(mesh.soups.size(), 1U);
+    ASSERT_EQ(mesh.soups[0].triangles.size(), 1U);
+    EXPECT_EQ(mesh.soups[0].triangles[0][2], (Vec3{0, 10, 5}));
+}
+
+TEST(SliceMessage, BrokenVertexBuffersNameTheObject) {
+    EXPECT_TRUE(contains(inputErrorOf([] { soupFromVertexBytes(std::string(35, '\0'), "a.stl"); }),
+                         "object 'a.stl' has 35 vertex bytes"));
+    const std::string nan = floatBytes({0, 0, 0, 1, 0, 0, 0, 1, std::numeric_limits<float>::quiet_NaN()});
+    EXPECT_TRUE(contains(inputErrorOf([&] { soupFromVertexBytes(nan, "b.stl"); }), "not finite"));
+    cura::proto::Slice slice = twoExtruderSlice();
+    slice.mutable_object_lists(0)->mutable_objects(0)->mutable_settings(0)->set_value("one");
+    EXPECT_TRUE(contains(inputErrorOf([&] { requestFromSlice(slice); }), "extruder_nr 'one'"));
+}
+
+PlanStep step(PlanStep::Kind kind, Point2 to = {}) {
+    PlanStep s;
+    s.kind = kind;
+    s.to = to;
+    s.speed_mm_s = 50;
+    return s;
+}
+
+TEST(PreviewLayers, LinesAreTypedSizedAndSplitByExtruder) {
+    PrintPlan plan;
+    PlannedLayer layer;
+    layer.z = 300;
+    PlanStep wall = step(PlanStep::Kind::SetFeature);
+    wall.feature = Feature::WallOuter;
+    PlanStep line = step(PlanStep::Kind::Extrude, {10000, 0});
+    line.volume_mm3 = 10.0 * 0.4 * 0.3;  // 10 mm of a 0.4 mm line, 0.3 mm thick
+    PlanStep travel = step(PlanStep::Kind::Travel, {10000, 5000});
+    travel.retract = true;
+    PlanStep tool = step(PlanStep::Kind::SetExtruder);
+    tool.extruder = 1;
+    layer.steps = {wall, line, travel, tool, step(PlanStep::Kind::Travel, {0, 5000})};
+    plan.layers.push_back(layer);
+    Point2 head{0, 0};
+    int extruder = 0;
+    const auto messages = previewLayers(plan, 7, head, extruder);
+    ASSERT_EQ(messages.size(), 1U);
+    const cura::proto::LayerOptimized& out = *messages[0];
+    EXPECT_EQ(out.id(), 7);
+    EXPECT_FLOAT_EQ(out.height(), 300.0F);  // microns
+    EXPECT_FLOAT_EQ(out.thickness(), 300.0F);
+    ASSERT_EQ(out.path_segment_size(), 2);
+    const cura::proto::PathSegment& first = out.path_segment(0);
+    EXPECT_EQ(first.extruder(), 0);
+    EXPECT_EQ(first.line_type(), std::string({1, 9}));  // outer wall, retracted travel
+    ASSERT_EQ(first.points().size(), 3 * 2 * sizeof(float));
+    float width = 0;
+    std::memcpy(&width, first.line_width().data(), sizeof width);
+    EXPECT_NEAR(width, 0.4F, 1e-6);
+    EXPECT_EQ(out.path_segment(1).extruder(), 1);
+    EXPECT_EQ(out.path_segment(1).line_type(), std::string({8}));  // combing travel
+    EXPECT_EQ(extruder, 1);
+    EXPECT_EQ(head, (Point2{0, 5000}));
+}
+
+TEST(ResultMessages, MaterialIsSentInCubicMillimetresPerExtruder) {
+    PrintSummary summary;
+    summary.print_time_s = 100;
+    summary.filament_per_extruder = {1000.0};  // mm of 1.75 mm filament
+    const auto message = estimatesMessage(summary, {1.75, 2.85}, false);
+    const auto& estimates = dynamic_cast<const cura::proto::PrintTimeMaterialEstimates&>(*message);
+    ASSERT_EQ(estimates.materialestimates_size(), 2);
+    EXPECT_NEAR(estimates.materialestimates(0).material_amount(), 1000.0 * 3.14159265 * 0.875 * 0.875, 0.01);
+    EXPECT_EQ(estimates.materialestimates(1).material_amount(), 0.0F);
+    EXPECT_FLOAT_EQ(estimates.time_none(), 100.0F);
+}
+
+}  // namespace
+}  // namespace mixengine
