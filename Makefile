@@ -4,7 +4,9 @@
 BUILD ?= build
 JOBS ?= 2
 
-.PHONY: install build demo test unit pytests format bench clean
+FUZZ_SECONDS ?= 30
+
+.PHONY: install build demo test unit pytests format bench clean fuzz memory plugin plugin-install
 
 install:
 	./install.sh
@@ -31,6 +33,21 @@ format:
 bench: build
 	tests/bench/run.sh $(BUILD)
 	tests/bench/quality.sh $(BUILD)
+
+# libFuzzer targets (clang, ASan + UBSan, own build dir build-fuzz), FUZZ_SECONDS per target
+fuzz: install
+	tests/fuzz/run.sh $(FUZZ_SECONDS)
+
+# peak RSS of MixEngine and CuraEngine 4.13 on a generated 2-million-triangle model
+memory: build
+	tests/bench/memory.sh $(BUILD)
+
+# Cura 4.13 plugin: $(BUILD)/MixEngine-<version>.curapackage (with the engine), and installing it for this user
+plugin: build
+	python3 plugin/package.py --engine $(BUILD)/mixengine --out $(BUILD)
+
+plugin-install: plugin
+	python3 plugin/install.py $$(ls -t $(BUILD)/MixEngine-*.curapackage | head -1)
 
 clean:
 	rm -rf $(BUILD) out

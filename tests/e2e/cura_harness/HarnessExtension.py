@@ -16,7 +16,7 @@ from UM.Extension import Extension
 from UM.Logger import Logger
 from UM.Scene.Iterator.DepthFirstIterator import DepthFirstIterator
 
-from . import SliceRecord
+from . import HarnessSteps, SliceRecord
 
 DEFAULT_MODEL = "/usr/lib/cura/plugins/SimulationView/resources/nozzle.stl"
 
@@ -69,6 +69,7 @@ class HarnessExtension(Extension):
                 harness._slice = SliceRecord.sliceToDict(message)
                 harness._status["slice_messages_sent"] += 1
                 harness._event("slice_sent")
+                harness._status["engine_command"] = HarnessSteps.engineCommand(harness._app)
                 if not harness._job.get("wait_for_done", True):
                     harness._app.callLater(harness._finish, "slice sent")
             return original(socket, message)
@@ -90,8 +91,17 @@ class HarnessExtension(Extension):
             return
         backend = self._app.getBackend()
         backend.backendStateChange.connect(self._onBackendState)
+        HarnessSteps.installLayerCounter(self._app, self._status)
+        backend.backendError.connect(self._onBackendError)  # a bound method: UM signals keep weak references
+        if self._job.get("probe_settings"):
+            self._status["settings_probe"] = HarnessSteps.probeSettings(self._app, self._job["probe_settings"])
+        if self._job.get("plugin_status"):
+            plugin = HarnessSteps.pluginObject(self._job["plugin_status"])
+            self._status["plugin_status"] = plugin.status() if hasattr(plugin, "status") else None
         self._app.fileCompleted.connect(self._onFileCompleted)
-        self._loadNextModel()
+        # The build volume follows a new machine on a timer; a model arranged before that can land
+        # outside the plate (seen with a 190 mm plate: "Nothing to slice").
+        QTimer.singleShot(int(self._job.get("load_delay_ms", 1500)), self._loadNextModel)
 
     def _setUpMachine(self):
         job, app = self._job, self._app
@@ -139,7 +149,10 @@ class HarnessExtension(Extension):
         loaded = self._status.setdefault("models", [])
         if len(loaded) == len(self._models):
             self._event("models_loaded")
-            QTimer.singleShot(int(self._job.get("settle_ms", 1000)), self._sliceNow)
+            if self._job.get("actions"):
+                HarnessSteps.ActionRunner(self._app, self._status, self._job["actions"], self._afterActions).start()
+            else:
+                self._afterActions()
             return
         entry = self._models[len(loaded)]
         path = entry["path"] if isinstance(entry, dict) else entry
@@ -158,8 +171,17 @@ class HarnessExtension(Extension):
             extruder = self._app.getGlobalContainerStack().extruderList[int(entry["extruder"])]
             for node in new_nodes:
                 node.callDecoration("setActiveExtruder", extruder.getId())
+        if isinstance(entry, dict) and entry.get("settings"):
+            for node in new_nodes:
+                HarnessSteps.setPerObjectSettings(node, entry["settings"])
         loaded.append({"file": file_name, "nodes": len(new_nodes)})
         self._loadNextModel()
+
+    def _afterActions(self):
+        if not self._job.get("slice", True):
+            self._app.callLater(self._finish, "done")
+            return
+        QTimer.singleShot(int(self._job.get("settle_ms", 1000)), self._sliceNow)
 
     def _sliceNow(self):
         if self._slice is not None or self._finished:
@@ -167,8 +189,12 @@ class HarnessExtension(Extension):
         attempt = self._status["slice_attempts"] = self._status.get("slice_attempts", 0) + 1
         self._event("force_slice" if attempt == 1 else "force_slice_%d" % attempt)
         self._app.getBackend().forceSlice()
-        if attempt < 4:  # watchdog: no Slice sent yet -> try again
-            QTimer.singleShot(45000, lambda: attempt == self._status["slice_attempts"] and self._sliceNow())
+        if attempt < 4:  # watchdog: no Slice sent yet -> log where the threads are, try again
+            QTimer.singleShot(45000, lambda: attempt == self._status["slice_attempts"] and self._slice is None
+                              and (HarnessSteps.logThreadStacks(), self._sliceNow()))
+
+    def _onBackendError(self, job):
+        HarnessSteps.recordBackendError(self._app, self._status, job)
 
     def _onBackendState(self, state):
         self._status["backend_state"] = BackendState(state).name
@@ -225,8 +251,13 @@ class HarnessExtension(Extension):
             return
         self._finished = True
         self._status["finish_reason"] = reason
+        self._status["nodes"] = HarnessSteps.nodeStates(self._app)
         try:
-            if self._slice is not None and self._app.getGlobalContainerStack() is not None:
+            if self._job.get("gcode_output") and self._status.get("backend_state") == "Done":
+                self._status["gcode_chunks"] = HarnessSteps.dumpGcode(self._app, self._job["gcode_output"])
+            if not self._job.get("slice", True):
+                pass  # nothing sliced, no fixture
+            elif self._slice is not None and self._app.getGlobalContainerStack() is not None:
                 self._writeJson(self._job["output"], self._fixture())
                 self._event("fixture_written")
             else:
@@ -234,6 +265,10 @@ class HarnessExtension(Extension):
         except Exception as e:
             Logger.logException("e", "[CuraHarness] writing the fixture failed")
             self._error("writing the fixture failed: %r" % e)
+        if self._job.get("preview") and self._status.get("backend_state") == "Done":
+            HarnessSteps.showPreview(self._app, self._status, self._screenshotAndClose,
+                                     self._job.get("camera"))
+            return
         # Give the GUI a moment to show the final state before the screenshot.
         QTimer.singleShot(1500 if self._job.get("screenshot") else 0, self._screenshotAndClose)
 
@@ -247,6 +282,10 @@ class HarnessExtension(Extension):
         self._status["visible_messages"] = [m.getText() for m in self._app.getVisibleMessages()]
         if self._job.get("status"):
             self._writeJson(self._job["status"], self._status)
+        for plugin_id in self._job.get("disable_plugins", []):  # as the Marketplace's "Disable" does
+            HarnessSteps.pluginRegistry().disablePlugin(plugin_id)
+        for package_id in self._job.get("remove_packages", []):  # as the Marketplace's "Uninstall" does
+            self._app.getPackageManager().removePackage(package_id, force_add=True)
         if not self._job.get("keep_open"):
             QTimer.singleShot(200, self._app.closeApplication)
 

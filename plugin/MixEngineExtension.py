@@ -1,0 +1,112 @@
+"""The MixEngine extension: settings, backend location, the orientation menu item.
+
+Timeline in Cura 4.13:
+  plugin load (register)       settings folder added to the resource search path (by __init__.py),
+                               containerLoadComplete hooked, shutdown hooked
+  loadAllMetadata / machines   every machine definition gets MixEngine's categories (SettingsInjector)
+  initializationFinished       cura.cfg has been read: backend/location -> mixengine (engine respawned),
+                               MixEngine's settings made visible once
+  shutdown                     backend/location given back before the preferences are saved
+"""
+from UM.Extension import Extension
+from UM.Logger import Logger
+from UM.Message import Message
+from UM.PluginRegistry import PluginRegistry
+
+from . import BackendLocation, PluginPaths
+from .OrientAction import OrientAction
+from .SettingsInjector import SettingsInjector
+
+PLUGIN_ID = "MixEngine"
+VISIBLE = "general/visible_settings"
+VISIBILITY_DONE = "mixengine/visibility_added"  # keys made visible once; the user may hide them again
+ORIENT_ITEM = "Optimize dual-nozzle orientation"
+
+
+class MixEngineExtension(Extension):
+    def __init__(self, app, settings_dir):
+        super().__init__()
+        self._app = app
+        self._settings_dir = settings_dir
+        self._backend = None
+        self._injector = None
+        self.engine_path, self.engine_how = None, "not looked up yet"
+        prefs = app.getPreferences()
+        for key in (BackendLocation.PREVIOUS, BackendLocation.ENGINE_PATH, VISIBILITY_DONE):
+            prefs.addPreference(key, "")
+        if settings_dir:
+            self._injector = SettingsInjector(PluginPaths.fragmentFiles(settings_dir))
+            self._injector.connect()
+        else:
+            Logger.log("e", "[MixEngine] no settings folder next to the plugin: no MixEngine settings")
+        self.orient = OrientAction(app, lambda: self._findEngine(mixengine_only=True))
+        self.setMenuName("MixEngine")
+        self.addMenuItem(ORIENT_ITEM, self.orient.run)
+        app.initializationFinished.connect(self._onInitializationFinished)
+        app.applicationShuttingDown.connect(self._onShutdown)
+
+    # ---- state for tests and the log ---------------------------------------------------------
+    def status(self):
+        return {"engine": self.engine_path, "engine_how": self.engine_how,
+                "settings_dir": self._settings_dir,
+                "backend_active": bool(self._backend and self._backend.active),
+                "injected": list(self._injector.injected) if self._injector else [],
+                "keys": self._injector.allKeys() if self._injector else []}
+
+    def _findEngine(self, mixengine_only=False):
+        preference = self._app.getPreferences().getValue(BackendLocation.ENGINE_PATH)
+        return PluginPaths.findEngine(preference, mixengine_only=mixengine_only)
+
+    # ---- start-up ----------------------------------------------------------------------------
+    def _onInitializationFinished(self):
+        self._showSettings()
+        self.engine_path, self.engine_how = self._findEngine()
+        if self.engine_path is None:
+            Logger.log("e", "[MixEngine] %s; Cura keeps its engine", self.engine_how)
+            Message("MixEngine is not slicing: %s." % self.engine_how, title="MixEngine").show()
+            return
+        Logger.log("i", "[MixEngine] engine %s (%s)", self.engine_path, self.engine_how)
+        self._backend = BackendLocation.BackendLocation(self._app.getPreferences(), self.engine_path,
+                                                        respawn=self._respawn,
+                                                        log=lambda t: Logger.log("i", "[MixEngine] %s", t))
+        self._backend.activate()
+
+    def _respawn(self):
+        """Replace the engine Cura spawned at start-up with the old location (private backend API)."""
+        backend = self._app.getBackend()
+        process = getattr(backend, "_process", None)
+        if process is None or list(process.args)[:1] == [self.engine_path]:
+            return  # nothing spawned yet: the next spawn reads the new location
+        backend._terminate()
+        backend._createSocket()
+
+    def _showSettings(self):
+        """Add MixEngine's keys to the visible settings once per key (later hiding is respected)."""
+        if not self._injector:
+            return
+        prefs = self._app.getPreferences()
+        done = set(filter(None, (prefs.getValue(VISIBILITY_DONE) or "").split(";")))
+        visible = [k for k in (prefs.getValue(VISIBLE) or "").split(";") if k]
+        new = [k for k in self._injector.allKeys() if k not in done and k not in visible]
+        if new:
+            prefs.setValue(VISIBLE, ";".join(visible + new))
+        prefs.setValue(VISIBILITY_DONE, ";".join(sorted(done | set(self._injector.allKeys()))))
+
+    # ---- shutdown ----------------------------------------------------------------------------
+    def _onShutdown(self):
+        if not self._backend:
+            return
+        registry = PluginRegistry.getInstance()
+        package_manager = self._app.getPackageManager()
+        reasons = [r for r, flagged in (
+            ("disabled", PLUGIN_ID in registry.getDisabledPlugins()),
+            ("scheduled for removal", PLUGIN_ID in package_manager.getToRemovePackageIDs()
+             or PLUGIN_ID in getattr(registry, "_plugins_to_remove", []))) if flagged]
+        restored = self._backend.restore()
+        Logger.log("i", "[MixEngine] shutdown%s: backend/location back to %s",
+                   " (plugin %s)" % " and ".join(reasons) if reasons else "", restored)
+        try:
+            self._app.savePreferences()
+        except Exception:
+            Logger.logException("w", "[MixEngine] saving the restored backend/location failed")
+
