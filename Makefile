@@ -5,6 +5,7 @@ BUILD ?= build
 JOBS ?= 2
 
 FUZZ_SECONDS ?= 30
+FUZZ_TEST_SECONDS ?= 10
 
 .PHONY: install build demo test unit pytests format bench clean fuzz memory plugin plugin-install
 
@@ -25,7 +26,9 @@ unit: build
 pytests: build
 	tests/python/run.sh $(BUILD)
 
+# the short fuzz run (tests/fuzz, ~1 min on a fresh clone with 2 cores) is part of the test flow
 test: unit pytests
+	tests/fuzz/run.sh $(FUZZ_TEST_SECONDS)
 
 format:
 	find engine tests -name '*.cpp' -o -name '*.h' | xargs clang-format -i

@@ -18,6 +18,8 @@ PACKAGES=(
   xvfb xauth python3-arcus
   # corpus fetching (apt-get download; npm comes with the base machine) and end-to-end tools
   xz-utils unzip ca-certificates
+  # reliability: libFuzzer targets (tests/fuzz, clang with its sanitizer runtimes), peak RSS (tests/bench/memory.sh)
+  clang libclang-rt-14-dev time
 )
 
 SUDO=""

@@ -41,9 +41,10 @@ bool zeroArea(const Point3& a, const Point3& b, const Point3& c) {
 
 class MeshAssembler {
   public:
-    MeshAssembler(const TriangleSoup& soup, const Matrix3& transform)
+    MeshAssembler(const TriangleSoup& soup, const Matrix3& transform, const std::string& label)
         : soup_(soup),
           transform_(transform),
+          label_(label.empty() ? soup.name : label),
           welder_(soup.triangles.size() / 2 + 16),
           seen_(soup.triangles.size()) {
         mesh_.name = soup.name;
@@ -72,7 +73,7 @@ class MeshAssembler {
     void quantiseBatch(std::size_t first, std::size_t count) {
         for (std::size_t i = 0; i < count; ++i) {
             for (std::size_t k = 0; k < 3; ++k) {
-                points_[3 * i + k] = quantise(transform_.apply(soup_.triangles[first + i][k]), soup_.name);
+                points_[3 * i + k] = quantise(transform_.apply(soup_.triangles[first + i][k]), label_);
                 welder_.prefetch(points_[3 * i + k]);
             }
         }
@@ -106,6 +107,7 @@ class MeshAssembler {
 
     const TriangleSoup& soup_;
     const Matrix3& transform_;
+    const std::string& label_;  ///< names the part in errors
     VertexWelder welder_;
     FaceSet seen_;
     Mesh mesh_;
@@ -116,12 +118,14 @@ class MeshAssembler {
 
 }  // namespace
 
-Mesh buildMesh(const TriangleSoup& soup, const Matrix3& transform, MeshBuildStats* stats) {
+Mesh buildMesh(const TriangleSoup& soup, const Matrix3& transform, MeshBuildStats* stats,
+               const std::string& label) {
     const std::size_t count = soup.triangles.size();
+    const std::string& part = label.empty() ? soup.name : label;
     if (count > std::numeric_limits<std::uint32_t>::max() / 3) {
-        throw InputError(soup.name + ": too many triangles (" + std::to_string(count) + ")");
+        throw InputError(part + ": too many triangles (" + std::to_string(count) + ")");
     }
-    MeshAssembler assembler(soup, transform);
+    MeshAssembler assembler(soup, transform, label);
     for (std::size_t first = 0; first < count; first += kBatch) {
         assembler.addBatch(first, std::min(kBatch, count - first));
     }

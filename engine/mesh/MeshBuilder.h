@@ -10,8 +10,9 @@
 //
 // Guarantees: every vertex is used by a kept face; vertices are numbered in order of first use and
 // faces keep the soup's order, so the result is deterministic. O(n) time (hash tables, no
-// allocation per triangle). Throws InputError naming the part (soup.name) when a transformed
-// coordinate is not finite or lies outside +-1 km, or when there are more than 2^32/3 triangles.
+// allocation per triangle). Throws InputError naming the part (`label`, or soup.name when empty) when
+// a transformed coordinate is not finite or lies outside +-1 km, or when there are more than 2^32/3
+// triangles.
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct MeshBuildStats {
     std::size_t welded_vertices = 0;     ///< distinct vertices of the result (mesh.vertices.size())
 };
 
-Mesh buildMesh(const TriangleSoup& soup, const Matrix3& transform, MeshBuildStats* stats = nullptr);
+Mesh buildMesh(const TriangleSoup& soup, const Matrix3& transform, MeshBuildStats* stats = nullptr,
+               const std::string& label = {});
 
 }  // namespace mixengine

@@ -29,7 +29,7 @@ std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths,
     std::size_t count = 0;
     while (count < layers && layerEmpty(toolpaths, meshes, count))
         ++count;
-    return count == layers ? 0 : count;
+    return count;  // all of them when nothing prints (a flat or floating facet): 0 layers, as CuraEngine
 }
 
 void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths, std::vector<LayerZ>& heights,

@@ -3,10 +3,12 @@
 #include <cstdlib>
 
 #include "common/Error.h"
+#include "mesh/BuildVolume.h"
 #include "mesh/MeshBuilder.h"
 #include "mesh/ModelReader.h"
 #include "orient/OrientSettings.h"
 #include "settings/FrontendValues.h"
+#include "settings/SettingLimits.h"
 #include "settings/profiles/ProfileSelector.h"
 
 namespace mixengine {
@@ -33,6 +35,34 @@ void placeMesh(Mesh& mesh, const Settings& group, const Settings& settings) {
     mesh.translate(dx, dy, dz);
 }
 
+/// Reports a placed mesh reaching outside the build volume; refuses one far larger than it.
+void checkPlacement(const Mesh& mesh, const Settings& group, Log& log) {
+    const BuildVolume volume =
+        machineVolume(group.lengthMicrons("machine_width"), group.lengthMicrons("machine_depth"),
+                      group.lengthMicrons("machine_height"), group.boolean("machine_center_is_zero"));
+    const std::string warning = checkBuildVolume(mesh.name, mesh.bounds(), volume);
+    if (!warning.empty())
+        log.warning(warning);
+}
+
+/// The keys the user gave (-s, -e, -g, per mesh), to name them when a computed value is out of range.
+std::vector<std::string> givenKeys(const SliceRequest& request) {
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : request.user.global)
+        keys.push_back(key);
+    for (const auto& [nr, values] : request.user.extruders)
+        for (const auto& [key, value] : values)
+            keys.push_back(key);
+    for (const MeshGroupInput& group : request.groups) {
+        for (const auto& [key, value] : group.settings)
+            keys.push_back(key);
+        for (const MeshInput& mesh : group.meshes)
+            for (const auto& [key, value] : mesh.settings)
+                keys.push_back(key);
+    }
+    return keys;
+}
+
 /// The input's triangles: read from its file into `loaded`, or Cura's soups as they are (no copy).
 const std::vector<TriangleSoup>& soupsOf(const MeshInput& input, std::vector<TriangleSoup>& loaded,
                                          Log& log) {
@@ -49,23 +79,32 @@ void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshI
                SceneGroup& group, Log& log) {
     std::vector<TriangleSoup> loaded;
     const std::vector<TriangleSoup>& soups = soupsOf(input, loaded, log);
+    std::size_t kept = 0;
+    std::vector<std::string> skipped;
     for (std::size_t part = 0; part < soups.size(); ++part) {
         const std::string name = soups.size() == 1 ? input.name : input.name + "#" + soups[part].name;
         Settings settings = resolveMesh(scene.definitions, request_user, scene.machine, group.settings,
                                         input.settings, input.default_extruder, name, &scene.profiles);
         MeshBuildStats stats;
-        Mesh mesh = buildMesh(soups[part], input.transform, &stats);
+        Mesh mesh = buildMesh(soups[part], input.transform, &stats, name);
         if (stats.degenerate_dropped || stats.duplicates_dropped) {
             log.info(name + ": dropped " + std::to_string(stats.degenerate_dropped) + " degenerate and " +
                      std::to_string(stats.duplicates_dropped) + " duplicate facets");
         }
         if (mesh.faces.empty()) {
-            log.warning(name + ": no facets left after cleaning; skipped");
+            skipped.push_back(name);
             continue;
         }
         mesh.name = name;
         group.meshes.push_back({std::move(mesh), std::move(settings)});  // placed by prepareScene
+        ++kept;
     }
+    if (kept == 0 && input.file)  // a model file that gives nothing to slice is an error, not a skip
+        throw InputError(input.name +
+                         ": no facets left after removing degenerate (zero-area) and "
+                         "duplicate facets: nothing to slice");
+    for (const std::string& name : skipped)
+        log.warning(name + ": no facets left after cleaning; skipped");
 }
 
 }  // namespace
@@ -92,18 +131,26 @@ Scene prepareSettings(const SliceRequest& request) {
 
 Scene prepareScene(const SliceRequest& request, Log& log) {
     Scene scene = prepareSettings(request);
+    const std::vector<std::string> given = givenKeys(request);
+    checkLineWidths(scene.machine.global, given);
+    for (const Settings& extruder : scene.machine.extruders)
+        checkLineWidths(extruder, given);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
         SceneGroup& group = scene.groups[g];
         for (const MeshInput& input : request.groups[g].meshes)
             addMeshes(scene, request.user, input, group, log);
+        for (const SceneMesh& m : group.meshes)
+            checkLineWidths(m.settings, given);
         // Dual-nozzle orientation pass (orient/OrientSettings.h): before placement.
         std::vector<std::pair<Mesh*, int>> by_extruder;
         for (SceneMesh& m : group.meshes)
             by_extruder.emplace_back(
                 &m.mesh, m.settings.has("extruder_nr") ? m.settings.extruderIndex("extruder_nr") : 0);
         orient::orientForDualNozzle(by_extruder, group.settings, scene.machine.extruders, log);
-        for (SceneMesh& m : group.meshes)
+        for (SceneMesh& m : group.meshes) {
             placeMesh(m.mesh, group.settings, m.settings);
+            checkPlacement(m.mesh, group.settings, log);
+        }
     }
     bool any = false;
     for (const SceneGroup& group : scene.groups)

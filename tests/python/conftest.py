@@ -38,6 +38,10 @@ def report():
     return _REPORT.append
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "memory: the 2-million-triangle peak-RSS test (deselect: -m 'not memory')")
+
+
 def pytest_terminal_summary(terminalreporter):
     if _REPORT:
         terminalreporter.write_sep("-", "mixengine report")

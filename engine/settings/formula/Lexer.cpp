@@ -174,7 +174,11 @@ class Lexer {
             fail(begin, "imaginary numbers are not supported");
         const std::string_view text = src_.substr(begin, pos_ - begin);
         if (isFloat) {
-            push(TokenKind::Number, begin, pos_, Value(parseFloatString(text)));
+            try {  // e.g. "0._0": the digit scan allows underscores that Python rejects there
+                push(TokenKind::Number, begin, pos_, Value(parseFloatString(text)));
+            } catch (const detail::EvalProblem&) {
+                fail(begin, "invalid decimal literal " + std::string(text));
+            }
             return;
         }
         if (text.size() > 1 && text[0] == '0' && text.find_first_not_of("0_") != std::string_view::npos) {

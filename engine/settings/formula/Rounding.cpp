@@ -99,8 +99,10 @@ bool equalsIgnoreCase(std::string_view a, std::string_view b) {
 bool literalOverflows(std::string_view s) {
     long exponent = 0;
     const std::size_t e = s.find_first_of("eE");
+    // strtol saturates at LONG_MAX on a huge exponent; clamped so that the sum below cannot overflow.
     if (e != std::string_view::npos)
-        exponent = std::strtol(std::string(s.substr(e + 1)).c_str(), nullptr, 10);
+        exponent = std::clamp(std::strtol(std::string(s.substr(e + 1)).c_str(), nullptr, 10), -1000000000L,
+                              1000000000L);
     const std::string_view mantissa = s.substr(0, e);
     const std::size_t point = std::min(mantissa.find('.'), mantissa.size());
     const std::size_t firstNonZero = mantissa.find_first_of("123456789");
