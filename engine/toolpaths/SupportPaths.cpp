@@ -13,19 +13,7 @@ void appendFill(const Paths& area, const SupportFill& fill, Feature feature, coo
     Paths inside = area;
     for (int i = 0; i < fill.wall_count && !inside.empty(); ++i) {
         const Paths loops = offsetMiter(inside, -w / 2);
-        for (const Path& loop : loops) {
-            if (loop.size() < 3)
-                continue;
-            ExtrusionPath path;
-            path.points = loop;
-            path.closed = true;
-            path.width_um = w;
-            path.feature = feature;
-            path.speed_mm_s = fill.style.speed_mm_s;
-            path.flow = fill.style.flow;
-            path.extruder = fill.style.extruder;
-            out.push_back(std::move(path));
-        }
+        appendStyledLoops(loops, feature, fill.style, out);
         inside = loops.empty() ? Paths{} : offsetMiter(loops, -w / 2);
     }
     InfillParams p;

@@ -78,25 +78,33 @@ void pairScanlines(std::vector<Crossing>& cs) {
     }
 }
 
-/// Crossings are stored per polygon in walking order; keep the alternate boundary pieces.
-void linkBoundary(std::vector<Crossing>& cs) {
+/// Calls visit(from, to) for every pair of consecutive crossings along each polygon, indices into
+/// `cs` (crossings are stored per polygon in walking order; the last one wraps to the first).
+template <typename Visit>
+void forEachBoundaryStep(const std::vector<Crossing>& cs, Visit&& visit) {
     std::size_t begin = 0;
     while (begin < cs.size()) {
         std::size_t end = begin;
         while (end < cs.size() && cs[end].polygon == cs[begin].polygon)
             ++end;
         const std::size_t n = end - begin;
-        for (std::size_t j = 0; j < n && n > 1; ++j) {
-            Crossing& from = cs[begin + j];
-            Crossing& to = cs[begin + (j + 1) % n];
-            if (from.line % 2 == 0 && std::llabs(to.line - from.line) == 1 && from.scan_partner >= 0 &&
-                to.scan_partner >= 0) {
-                from.boundary_next = static_cast<long>(begin + (j + 1) % n);
-                to.boundary_prev = static_cast<long>(begin + j);
-            }
-        }
+        for (std::size_t j = 0; j < n && n > 1; ++j)
+            visit(begin + j, begin + (j + 1) % n);
         begin = end;
     }
+}
+
+/// Keep the alternate boundary pieces between scanlines.
+void linkBoundary(std::vector<Crossing>& cs) {
+    forEachBoundaryStep(cs, [&cs](std::size_t i, std::size_t k) {
+        Crossing& from = cs[i];
+        Crossing& to = cs[k];
+        if (from.line % 2 == 0 && std::llabs(to.line - from.line) == 1 && from.scan_partner >= 0 &&
+            to.scan_partner >= 0) {
+            from.boundary_next = static_cast<long>(k);
+            to.boundary_prev = static_cast<long>(i);
+        }
+    });
 }
 
 /// The polygon vertices strictly between crossing `from` and the next crossing `to` (same polygon,
@@ -157,25 +165,17 @@ Paths chain(const Paths& polys, std::vector<Crossing>& cs) {
 
 /// Boundary pieces between consecutive crossings of the same scanline, as separate polylines.
 void appendEndPieces(const Paths& polys, const std::vector<Crossing>& cs, Paths& lines) {
-    std::size_t begin = 0;
-    while (begin < cs.size()) {
-        std::size_t end = begin;
-        while (end < cs.size() && cs[end].polygon == cs[begin].polygon)
-            ++end;
-        const std::size_t n = end - begin;
-        for (std::size_t j = 0; j < n && n > 1; ++j) {
-            const Crossing& from = cs[begin + j];
-            const Crossing& to = cs[begin + (j + 1) % n];
-            if (from.line != to.line || from.scan_partner < 0 || to.scan_partner < 0)
-                continue;
-            Path piece{from.point};
-            const Path inner = interiorOf(polys, from, to);
-            piece.insert(piece.end(), inner.begin(), inner.end());
-            piece.push_back(to.point);
-            lines.push_back(std::move(piece));
-        }
-        begin = end;
-    }
+    forEachBoundaryStep(cs, [&](std::size_t i, std::size_t k) {
+        const Crossing& from = cs[i];
+        const Crossing& to = cs[k];
+        if (from.line != to.line || from.scan_partner < 0 || to.scan_partner < 0)
+            return;
+        Path piece{from.point};
+        const Path inner = interiorOf(polys, from, to);
+        piece.insert(piece.end(), inner.begin(), inner.end());
+        piece.push_back(to.point);
+        lines.push_back(std::move(piece));
+    });
 }
 
 }  // namespace

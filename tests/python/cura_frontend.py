@@ -29,6 +29,8 @@ import time
 
 import Arcus
 
+from stl_soup import triangle_soup_bytes  # noqa: E402 (beside this script)
+
 CURA_PROTO = "/usr/lib/cura/plugins/CuraEngineBackend/Cura.proto"
 
 
@@ -36,22 +38,6 @@ def free_port():
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         return s.getsockname()[1]
-
-
-def stl_triangles_bytes(path):
-    """The float32 vertex soup Cura sends (9 floats per triangle) from a binary or ASCII STL."""
-    with open(path, "rb") as f:
-        data = f.read()
-    if data[:5] == b"solid" and b"facet" in data[:1000]:
-        words = data.decode("ascii").split()
-        values = [float(words[i + j]) for i, w in enumerate(words) if w == "vertex" for j in (1, 2, 3)]
-        return struct.pack("<%df" % len(values), *values)
-    (count,) = struct.unpack_from("<I", data, 80)
-    out = bytearray()
-    for i in range(count):
-        base = 84 + i * 50 + 12
-        out += data[base:base + 36]
-    return bytes(out)
 
 
 class Listener(Arcus.SocketListener):
@@ -99,7 +85,7 @@ def build_slice(sock, job):
             obj = obj_list.addRepeatedMessage("objects")
             obj.id = 1
             obj.name = o.get("name", os.path.basename(o.get("stl", "object")))
-            obj.vertices = stl_triangles_bytes(o["stl"]) if "stl" in o else bytes.fromhex(o.get("vertices_hex", ""))
+            obj.vertices = triangle_soup_bytes(o["stl"]) if "stl" in o else bytes.fromhex(o.get("vertices_hex", ""))
             add_settings(obj, o.get("settings", {"extruder_nr": "0"}))
     add_settings(msg.getMessage("global_settings"), job.get("global", {}))
     for nr, values in sorted(job.get("extruders", {}).items(), key=lambda kv: int(kv[0])):

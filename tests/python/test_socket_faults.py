@@ -21,9 +21,9 @@ import time
 
 import pytest
 
-import helpers
 from cura_socket import one_object, resolved_settings, slice_over_socket
 from mixing_gcode import box_stl
+from stl_soup import triangle_soup_bytes
 from raw_frontend import CLOSE, RawFrontend, cura_pb2, frame
 
 CRASH_SIGNALS = {-signal.SIGSEGV, -signal.SIGABRT, -signal.SIGBUS, -signal.SIGFPE, -signal.SIGILL}
@@ -54,16 +54,9 @@ def slice_message(pb, cube, global_settings, extruders, vertices=None):
         for key, value in values.items():
             ext.settings.settings.add(name=key, value=str(value).encode())
     obj = msg.object_lists.add().objects.add(id=1, name="cube.stl")
-    obj.vertices = vertices if vertices is not None else helpers_cube_vertices(cube)
+    obj.vertices = vertices if vertices is not None else triangle_soup_bytes(cube)
     obj.settings.add(name="extruder_nr", value=b"0")
     return msg
-
-
-def helpers_cube_vertices(cube):
-    import struct
-    words = open(cube).read().split()
-    values = [float(words[i + j]) for i, w in enumerate(words) if w == "vertex" for j in (1, 2, 3)]
-    return struct.pack("<%df" % len(values), *values)
 
 
 def start_engine(engine, frontend):
@@ -126,7 +119,7 @@ def test_frontend_closing_before_a_slice_is_a_clean_exit(engine):
 def test_frontend_closing_mid_slice_is_one_error_line(engine, pb, ender3, corpus):
     model = corpus("armadillo52k")
     global_settings, extruders = ender3
-    msg = slice_message(pb, model, global_settings, extruders, vertices=stl_binary_vertices(model))
+    msg = slice_message(pb, model, global_settings, extruders, vertices=triangle_soup_bytes(model))
 
     def actions(f):
         f.send(frame("cura.proto.Slice", msg.SerializeToString()))
@@ -136,13 +129,6 @@ def test_frontend_closing_mid_slice_is_one_error_line(engine, pb, ender3, corpus
     code, err = run_raw(engine, actions)
     assert code == 1
     assert "Cura socket" in error_line(err)
-
-
-def stl_binary_vertices(path):
-    import struct
-    data = open(path, "rb").read()
-    (count,) = struct.unpack_from("<I", data, 80)
-    return b"".join(data[84 + i * 50 + 12:84 + i * 50 + 48] for i in range(count))
 
 
 @pytest.mark.parametrize("case,data,needle", [
