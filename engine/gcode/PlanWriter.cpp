@@ -71,6 +71,12 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
         case PlanStep::Kind::SetExtruder:
             changeExtruder(step.extruder, params, gcode);
             break;
+        case PlanStep::Kind::SetNozzleTemperature:
+            gcode.line("M104 S" + formatDecimal(step.temperature_c, 1));
+            break;
+        case PlanStep::Kind::SetBedTemperature:
+            gcode.line("M140 S" + formatDecimal(step.temperature_c, 1));
+            break;
     }
 }
 

@@ -53,6 +53,35 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
     return out;
 }
 
+bool heatedBuildVolume(const Settings& global) {
+    return global.has("machine_heated_build_volume") && global.boolean("machine_heated_build_volume");
+}
+
+/// What CuraEngine switches off before the end code: the bed and the build volume.
+std::string heatersOff(const Settings& global) {
+    std::string out;
+    if (global.has("machine_heated_bed") && global.boolean("machine_heated_bed"))
+        appendLine(out, "M140 S0");
+    const std::string flavor = flavorText(global);
+    if (heatedBuildVolume(global) && global.temperatureCelsius("build_volume_temperature") != 0 &&
+        flavor != "UltiGCode" && flavor != "Griffin")
+        appendLine(out, "M141 S0");
+    return out;
+}
+
+/// M104 S0 for every nozzle after the end code (T<n> for all but the active one).
+std::string nozzlesOff(const std::vector<Settings>& extruders, int active) {
+    std::string out;
+    for (std::size_t e = 0; e < extruders.size(); ++e) {
+        if (extruders[e].has("machine_nozzle_temp_enabled") &&
+            !extruders[e].boolean("machine_nozzle_temp_enabled"))
+            continue;
+        const bool current = static_cast<int>(e) == active;
+        appendLine(out, current ? "M104 S0" : "M104 T" + std::to_string(e) + " S0");
+    }
+    return out;
+}
+
 }  // namespace
 
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion) {
@@ -67,11 +96,27 @@ std::string startCode(const Settings& global, const Settings& extruder0, bool re
         out += prependedTemperatures(global, extruder0, reprap);
     appendLine(out, "M82 ;absolute extrusion mode");
     appendLine(out, global.text("machine_start_gcode"));
+    if (heatedBuildVolume(global) && flavor != "UltiGCode" && !griffin)
+        appendLine(out, "M141 S" + formatDecimal(global.temperatureCelsius("build_volume_temperature"), 1));
     if (griffin)
         appendLine(out, "M109 S" + formatDecimal(initialNozzleTemperature(extruder0), 1));
     if (relative_extrusion)
         appendLine(out, "M83 ;relative extrusion mode");
     return out;
+}
+
+std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::vector<Settings>& extruders,
+                        bool relative_extrusion) {
+    gcode.retract();
+    std::string out = gcode.takeText() + heatersOff(global);
+    if (relative_extrusion) {  // absolute mode before the fan and the end code, as CuraEngine
+        appendLine(out, "M82 ;absolute extrusion mode");
+        relative_extrusion = false;
+    }
+    gcode.setFan(0);
+    out += gcode.takeText();
+    return out + endCode(global, relative_extrusion) + nozzlesOff(extruders, gcode.extruder()) +
+           ";End of Gcode\n";
 }
 
 std::string endCode(const Settings& global, bool relative_extrusion) {

@@ -2,14 +2,26 @@
 // Start and end G-code: the temperature lines Cura prepends (material_bed_temp_prepend,
 // material_print_temp_prepend and their *_wait flags), the machine's start/end code as the
 // settings hold it (tokens were expanded by the frontend, or by settings/FrontendValues for the
-// command line), and the extrusion mode lines.
+// command line), the extrusion mode lines, and what CuraEngine writes around them.
 #include <string>
+#include <vector>
 
+#include "gcode/GCodeExport.h"
 #include "settings/Settings.h"
 
 namespace mixengine {
 
+/// The start: temperatures, M82, machine_start_gcode, the heated build volume (M141), M83.
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion);
+
+/// machine_end_gcode between the extrusion-mode lines CuraEngine writes.
 std::string endCode(const Settings& global, bool relative_extrusion);
+
+/// Everything after the last layer, as CuraEngine 4.13 writes it: a last retraction, the bed
+/// (M140 S0) and a heated build volume (M141 S0) switched off, the fan off, endCode(), every
+/// nozzle switched off (M104 [T<n>] S0, none when machine_nozzle_temp_enabled is false) and
+/// ";End of Gcode".
+std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::vector<Settings>& extruders,
+                        bool relative_extrusion);
 
 }  // namespace mixengine

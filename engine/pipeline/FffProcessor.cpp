@@ -148,7 +148,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     if (!relative)
         output.start += "G92 E0\n";
     output.start += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
-    output.suffix = endCode(global, relative) + ";End of Gcode\n";
+    output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
     log.progress("done", 1.0);
     return output;
 }

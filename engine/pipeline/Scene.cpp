@@ -8,6 +8,7 @@
 #include "mesh/ModelReader.h"
 #include "orient/OrientSettings.h"
 #include "settings/FrontendValues.h"
+#include "settings/NotHonoured.h"
 #include "settings/SettingLimits.h"
 #include "settings/profiles/ProfileSelector.h"
 
@@ -135,6 +136,10 @@ Scene prepareScene(const SliceRequest& request, Log& log) {
     checkLineWidths(scene.machine.global, given);
     for (const Settings& extruder : scene.machine.extruders)
         checkLineWidths(extruder, given);
+    const int trains = static_cast<int>(scene.machine.extruders.size());
+    for (const std::string& warning :
+         notHonouredWarnings(embeddedNotHonoured(), scene.definitions, request.user, trains))
+        log.warning(warning);
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
         SceneGroup& group = scene.groups[g];
         for (const MeshInput& input : request.groups[g].meshes)

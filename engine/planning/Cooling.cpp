@@ -26,14 +26,10 @@ double lengthMm(const Point2& a, const Point2& b) {
 
 /// Time spent extruding and travelling, separately.
 std::pair<double, double> splitSeconds(const PlannedLayer& layer, Point2 head) {
+    const std::vector<double> seconds = stepSeconds(layer, head);
     double extruding = 0, travelling = 0;
-    for (const PlanStep& step : layer.steps) {
-        if (step.kind != PlanStep::Kind::Travel && step.kind != PlanStep::Kind::Extrude)
-            continue;
-        const double t = step.speed_mm_s > 0 ? lengthMm(head, step.to) / step.speed_mm_s : 0;
-        (step.kind == PlanStep::Kind::Extrude ? extruding : travelling) += t;
-        head = step.to;
-    }
+    for (std::size_t i = 0; i < seconds.size(); ++i)
+        (layer.steps[i].kind == PlanStep::Kind::Extrude ? extruding : travelling) += seconds[i];
     return {extruding, travelling};
 }
 
@@ -54,6 +50,18 @@ double fanRatio(const CoolingParams& p, int layer, double seconds) {
 }
 
 }  // namespace
+
+std::vector<double> stepSeconds(const PlannedLayer& layer, Point2 head) {
+    std::vector<double> seconds(layer.steps.size(), 0.0);
+    for (std::size_t i = 0; i < layer.steps.size(); ++i) {
+        const PlanStep& step = layer.steps[i];
+        if (step.kind != PlanStep::Kind::Travel && step.kind != PlanStep::Kind::Extrude)
+            continue;
+        seconds[i] = step.speed_mm_s > 0 ? lengthMm(head, step.to) / step.speed_mm_s : 0;
+        head = step.to;
+    }
+    return seconds;
+}
 
 double naiveLayerSeconds(const PlannedLayer& layer, Point2 start) {
     const auto [extruding, travelling] = splitSeconds(layer, start);

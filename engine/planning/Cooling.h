@@ -7,6 +7,8 @@
 //     cool_min_layer_time_fan_speed_max, cool_fan_speed_max for layers at or under
 //     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0.
 // Layer time here is the planner's simple estimate: distance / speed of every move.
+#include <vector>
+
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
 
@@ -24,6 +26,9 @@ struct CoolingParams {
 };
 
 CoolingParams coolingParams(const Settings& settings);
+
+/// Seconds each step takes at its planned speed (index = step; 0 for markers), the head at `start`.
+std::vector<double> stepSeconds(const PlannedLayer& layer, Point2 start);
 
 /// Seconds the layer's moves take at their planned speeds (distance / speed, from `start`).
 double naiveLayerSeconds(const PlannedLayer& layer, Point2 start);

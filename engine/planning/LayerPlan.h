@@ -12,12 +12,14 @@ namespace mixengine {
 
 struct PlanStep {
     enum class Kind {
-        Travel,       ///< move without extruding to `to`; `retract` says whether to retract first
-        Extrude,      ///< move to `to` while extruding `volume_mm3`
-        SetFeature,   ///< ;TYPE: marker
-        SetMesh,      ///< ;MESH: marker (mesh_index −1 = NONMESH)
-        SetFan,       ///< fan to `fan_ratio` (0..1)
-        SetExtruder,  ///< tool change to `extruder`
+        Travel,                ///< move without extruding to `to`; `retract` says whether to retract first
+        Extrude,               ///< move to `to` while extruding `volume_mm3`
+        SetFeature,            ///< ;TYPE: marker
+        SetMesh,               ///< ;MESH: marker (mesh_index −1 = NONMESH)
+        SetFan,                ///< fan to `fan_ratio` (0..1)
+        SetExtruder,           ///< tool change to `extruder`
+        SetNozzleTemperature,  ///< M104 `temperature_c` for the active extruder, without waiting
+        SetBedTemperature,     ///< M140 `temperature_c`, without waiting
     };
     Kind kind = Kind::Travel;
     Point2 to{};
@@ -28,6 +30,7 @@ struct PlanStep {
     int mesh_index = -1;
     double fan_ratio = 0;
     int extruder = 0;
+    double temperature_c = 0;
     int mix = -1;  ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
 };
 

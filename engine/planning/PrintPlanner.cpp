@@ -6,6 +6,7 @@
 
 #include "planning/Cooling.h"
 #include "planning/PathOrder.h"
+#include "planning/Temperatures.h"
 
 namespace mixengine {
 
@@ -107,6 +108,8 @@ PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& to
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         plan.mesh_names.push_back(mesh.name);
     const CoolingParams cooling = coolingParams(global);
+    const Point2 print_start = state.head;
+    std::set<int> used;
     for (std::size_t i = 0; i < heights.size(); ++i) {
         const Point2 layer_start = state.head;
         const CombBoundary comb = i < comb_areas.size() ? CombBoundary(comb_areas[i]) : CombBoundary();
@@ -117,6 +120,7 @@ PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& to
         fan.kind = PlanStep::Kind::SetFan;
         planned.steps.push_back(fan);
         for (int extruder : extruderOrder(toolpaths, i, state.extruder)) {
+            used.insert(extruder);
             if (extruder != state.extruder) {
                 PlanStep change;
                 change.kind = PlanStep::Kind::SetExtruder;
@@ -142,6 +146,9 @@ PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& to
         applyCooling(planned, layer_start, cooling);
         plan.layers.push_back(std::move(planned));
     }
+    const int only = used.size() == 1 ? *used.begin() : state.extruder;
+    const std::size_t train = std::min<std::size_t>(static_cast<std::size_t>(only), extruders.size() - 1);
+    planTemperatures(plan, temperatureParams(global, extruders[train]), used.size() == 1, print_start);
     return plan;
 }
 

@@ -38,7 +38,7 @@ atexit.register(shutil.rmtree, _TMP, True)
 _MEMO = {}
 
 
-GENERATED = ("tube", "tee")
+GENERATED = ("tube", "tee", "parity")
 
 
 def _make(name):
@@ -46,12 +46,30 @@ def _make(name):
     import trimesh
     if name == "tube":
         return trimesh.creation.annulus(r_min=6.0, r_max=12.0, height=15.0, sections=128)
+    if name == "parity":
+        return _parity_scene(shapely, trimesh)
     # tee: a T profile (30 x 6 mm bar on an 8 x 16 mm stem) extruded 10 mm, stood up so that the bar's
     # underside is a 90-degree overhang on both sides of the stem.
     profile = shapely.Polygon([(-4, 0), (4, 0), (4, 16), (15, 16), (15, 22), (-15, 22), (-15, 16), (-4, 16)])
     mesh = trimesh.creation.extrude_polygon(profile, 10.0)
     mesh.apply_transform(trimesh.transformations.rotation_matrix(math.pi / 2, [1, 0, 0]))
     return mesh
+
+
+def _parity_scene(shapely, trimesh):
+    """parity.py's model, three disjoint bodies on a 40 x 30 mm plot, 8 mm tall: two pillars under a 16 mm
+    bridge whose deck overhangs 4 mm on both sides (bridge, overhangs, support), a 0.6 mm fin 5 mm tall
+    (thin walls) and a tube with a 4 mm hole (holes, combing)."""
+    side = shapely.Polygon([(-10, 0), (-6, 0), (-6, 5), (6, 5), (6, 0), (10, 0), (10, 5), (14, 5), (14, 7),
+                            (-14, 7), (-14, 5), (-10, 5)])
+    bridge = trimesh.creation.extrude_polygon(side, 6.0)
+    bridge.apply_transform(trimesh.transformations.rotation_matrix(math.pi / 2, [1, 0, 0]))
+    bridge.apply_translation([0, 10, 0])
+    fin = trimesh.creation.box(extents=[8.0, 0.6, 5.0])
+    fin.apply_translation([-6, -6, 2.5])
+    tube = trimesh.creation.annulus(r_min=2.0, r_max=5.0, height=8.0, sections=64)
+    tube.apply_translation([8, -8, 4.0])
+    return trimesh.util.concatenate([bridge, fin, tube])
 
 
 def generated_model(name):

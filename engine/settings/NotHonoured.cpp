@@ -1,0 +1,107 @@
+#include "settings/NotHonoured.h"
+
+#include <algorithm>
+#include <cctype>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "common/Error.h"
+#include "settings/FrontendValues.h"
+#include "settings/StackEvaluator.h"
+#include "settings/formula/Value.h"
+
+namespace mixengine {
+namespace {
+
+constexpr std::string_view kEmbeddedList =
+#include "not_honoured_json.inc"
+    ;
+
+NotHonouredEntry parseEntry(const std::string& key, const nlohmann::json& entry, const std::string& origin) {
+    if (entry.is_string())
+        return {key, {}, entry.get<std::string>()};
+    if (!entry.is_object() || !entry.contains("values") || !entry["values"].is_array() ||
+        !entry.contains("why"))
+        throw InputError(origin + ": entry '" + key +
+                         "' must be a reason or {\"values\": [...], \"why\": ...}");
+    NotHonouredEntry out{key, {}, entry["why"].get<std::string>()};
+    for (const nlohmann::json& value : entry["values"])
+        out.values.push_back(value.is_string() ? value.get<std::string>() : value.dump());
+    return out;
+}
+
+/// The user's values without the listed keys: what the definitions give for those keys.
+UserSettings withoutListed(const UserSettings& user, const std::vector<NotHonouredEntry>& list) {
+    UserSettings stock = user;
+    for (const NotHonouredEntry& entry : list) {
+        stock.global.erase(entry.key);
+        for (auto& [nr, values] : stock.extruders)
+            values.erase(entry.key);
+    }
+    return stock;
+}
+
+bool sameText(std::string_view a, std::string_view b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                      [](char x, char y) { return std::tolower(x) == std::tolower(y); });
+}
+
+/// The offending value in one scope as text, or nullopt when this scope honours the entry.
+std::optional<std::string> offending(const NotHonouredEntry& entry, StackEvaluator& given,
+                                     StackEvaluator& stock, int scope) {
+    const std::optional<formula::Value> value = given.value(scope, entry.key);
+    if (!value)
+        return std::nullopt;
+    const std::string text = formula::toPythonStr(*value);
+    if (!entry.values.empty()) {
+        const bool listed = std::any_of(entry.values.begin(), entry.values.end(),
+                                        [&](const std::string& v) { return sameText(v, text); });
+        return listed ? std::optional<std::string>(text) : std::nullopt;
+    }
+    const std::optional<formula::Value> reference = stock.value(scope, entry.key);
+    if (reference && formula::pythonEquals(*value, *reference))
+        return std::nullopt;
+    return text;
+}
+
+}  // namespace
+
+std::vector<NotHonouredEntry> parseNotHonoured(std::string_view json_text, const std::string& origin) {
+    nlohmann::json document;
+    try {
+        document = nlohmann::json::parse(json_text);
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(origin + ": " + e.what());
+    }
+    if (!document.is_object() || !document.contains("settings") || !document["settings"].is_object())
+        throw InputError(origin + ": no \"settings\" object");
+    std::vector<NotHonouredEntry> list;
+    for (const auto& [key, entry] : document["settings"].items())
+        list.push_back(parseEntry(key, entry, origin));
+    return list;
+}
+
+std::vector<NotHonouredEntry> embeddedNotHonoured() {
+    return parseNotHonoured(kEmbeddedList, "not_honoured.json");
+}
+
+std::vector<std::string> notHonouredWarnings(const std::vector<NotHonouredEntry>& list,
+                                             const DefinitionSet& definitions, const UserSettings& user,
+                                             int extruder_count) {
+    const UserSettings canonical = withCanonicalKeys(user);
+    const UserSettings stock_user = withoutListed(canonical, list);
+    StackEvaluator given(definitions, canonical, extruder_count);
+    StackEvaluator stock(definitions, stock_user, extruder_count);
+    std::vector<std::string> warnings;
+    for (const NotHonouredEntry& entry : list) {
+        std::optional<std::string> bad = offending(entry, given, stock, StackEvaluator::kGlobal);
+        for (int nr = 0; nr < extruder_count && !bad; ++nr)
+            bad = offending(entry, given, stock, StackEvaluator::extruderScope(nr));
+        if (bad)
+            warnings.push_back("setting '" + entry.key + "' has no effect in MixEngine yet (value " + *bad +
+                               ": " + entry.why + ")");
+    }
+    return warnings;
+}
+
+}  // namespace mixengine

@@ -1,0 +1,473 @@
+"""Setting parity with CuraEngine 4.13: change one setting at a time, slice with both engines, and say whether
+MixEngine's print changes as CuraEngine's does (issue 19). Used by test_parity.py and tests/bench/parity.sh;
+no pytest import here.
+
+What is compared
+  Both engines get the same *resolved* values (side_by_side.resolve: MixEngine evaluates Cura's formulas for
+  the Ender-3 with the change applied, and both engines receive every resolved value), so a changed parent
+  setting reaches both engines through the children its formulas drive.
+
+  A flip is one (key, value) with the value taken from the setting's type: booleans negated, every other enum
+  option, numbers moved inside their limits, `[int]` lists given one angle, strings given an extra comment.
+  A flip runs in the first *context* (a few structure switches such as support or brim) where the setting's
+  own `enabled` formula is true, so sub-settings are flipped with their structure switched on.
+
+Verdicts (verdict()): compared on G-code signatures (signature()), not on bytes:
+  cura-unchanged      CuraEngine's G-code does not change: nothing to match (reported, not asserted).
+  honoured            MixEngine's G-code changes too, and in the same direction wherever CuraEngine's
+                      changed clearly: filament, extruded and travel length, retractions, layer count,
+                      mean extrusion speed; the G-code commands and ;TYPE: features CuraEngine adds or drops;
+                      the temperature commands (M104/M109/M140/M190/M141/M191 with their values) it adds.
+  not honoured: ...   otherwise, with the first reason.
+
+The list of settings MixEngine does not honour yet is settings/mixengine/not_honoured.json: the engine warns
+about them, the plugin shows them, and test_parity.py runs every entry as a strict xfail.
+"""
+import hashlib
+import json
+import math
+import os
+import re
+from collections import Counter
+from pathlib import Path
+
+import helpers
+import side_by_side as sbs
+
+NOT_HONOURED = helpers.REPO / "settings" / "mixengine" / "not_honoured.json"
+MODEL = "parity"  # side_by_side.GENERATED: pillars and a bridge with overhangs, a thin fin, a tube
+CACHE = sbs.CACHE_DIR / "parity"
+
+# Structures switched on so that their sub-settings are enabled (first match wins; {} is the plain print).
+CONTEXTS = [
+    {},
+    {"support_enable": "True"},
+    {"support_enable": "True", "support_interface_enable": "True"},
+    {"support_enable": "True", "support_structure": "tree"},
+    {"adhesion_type": "brim"},
+    {"adhesion_type": "raft"},
+    {"adhesion_type": "none"},
+    {"ironing_enabled": "True"},
+    {"magic_spiralize": "True"},
+    {"bridge_settings_enabled": "True"},
+    {"bridge_settings_enabled": "True", "bridge_enable_more_layers": "True"},
+    {"coasting_enable": "True"},
+    {"acceleration_enabled": "True"},
+    {"jerk_enabled": "True"},
+    {"draft_shield_enabled": "True"},
+    {"draft_shield_enabled": "True", "draft_shield_height_limitation": "limited"},
+    {"magic_fuzzy_skin_enabled": "True"},
+    {"mold_enabled": "True"},
+    {"conical_overhang_enabled": "True"},
+    {"wall_0_wipe_dist": "0.4", "travel_retract_before_outer_wall": "True"},
+    {"retraction_hop_enabled": "True"},
+    {"retraction_combing": "infill"},
+    {"infill_pattern": "zigzag"},
+    {"infill_pattern": "cubicsubdiv"},
+    {"infill_pattern": "lines"},
+    {"gradual_infill_steps": "2"},
+    {"clean_between_layers": "True"},
+    {"adaptive_layer_height_enabled": "True"},
+    {"machine_heated_build_volume": "True"},
+    {"material_flow_dependent_temperature": "True"},
+    {"support_enable": "True", "support_use_towers": "True"},
+    {"support_enable": "True", "support_conical_enabled": "True"},
+    {"wireframe_enabled": "True"},
+    {"prime_blob_enable": "True"},
+    {"cool_fan_enabled": "True", "cool_min_layer_time_fan_speed_max": "20"},
+]
+
+# Not flipped: the machine's identity and shape of the scene (extruder count, build volume, head shape,
+# names and ids), and settings the command line cannot carry or that only Cura's frontend reads.
+SKIP_TYPES = {"category", "polygon", "polygons", "extruder", "optional_extruder"}
+SKIP_KEYS = {
+    "machine_extruder_count", "extruders_enabled_count", "machine_name", "machine_width", "machine_depth",
+    "machine_height", "machine_shape", "machine_center_is_zero", "machine_show_variants", "material_guid",
+    "material_type", "material_brand", "material_name", "material_is_support_material", "material_diameter",
+    "extruder_nr", "extruder_prime_pos_abs", "machine_extruder_start_pos_abs", "machine_extruder_end_pos_abs",
+    "machine_extruder_cooling_fan_number", "center_object", "mesh_position_x", "mesh_position_y",
+    "mesh_position_z", "mesh_rotation_matrix", "machine_nozzle_id", "machine_buildplate_type",
+    "material_bed_temp_prepend", "material_print_temp_prepend", "material_bed_temp_wait",
+    "material_print_temp_wait", "machine_use_extruder_offset_to_offset_coords",
+    "infill_mesh", "cutting_mesh", "support_mesh", "anti_overhang_mesh", "infill_mesh_order",
+    "support_mesh_drop_down", "mold_enabled_meshes", "print_sequence", "user_defined_print_order_enabled",
+    "machine_scale_fan_speed_zero_to_one", "machine_max_feedrate_x", "machine_max_feedrate_y",
+}
+
+
+def load_not_honoured():
+    """key -> (values or None, why): None = any value other than the definitions' is not honoured."""
+    entries = json.loads(NOT_HONOURED.read_text())["settings"]
+    out = {}
+    for key, entry in entries.items():
+        if isinstance(entry, str):
+            out[key] = (None, entry)
+        else:
+            out[key] = (tuple(str(v) for v in entry["values"]), entry["why"])
+    return out
+
+
+def is_listed(listed, key, value):
+    if key not in listed:
+        return None
+    values, why = listed[key]
+    return why if values is None or str(value) in values else None
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Definitions: type, options, limits and `enabled` formula of every fdmprinter / fdmextruder setting.
+
+def _flatten(settings, out):
+    for key, node in settings.items():
+        out[key] = node
+        _flatten(node.get("children", {}), out)
+
+
+def definitions():
+    out = {}
+    for name in ("fdmprinter", "fdmextruder"):
+        data = json.loads((helpers.CURA_DEFS / f"{name}.def.json").read_text())
+        _flatten(data.get("settings", {}), out)
+    return out
+
+
+class _Values(dict):
+    """The namespace of an `enabled` formula: setting keys, Cura's helper functions and Python builtins."""
+
+    def __init__(self, values):
+        super().__init__()
+        self.values = values
+
+    def __missing__(self, name):
+        if name in self.values:
+            return _typed(self.values[name])
+        helpers_ = {
+            "resolveOrValue": lambda k: _typed(self.values.get(k)),
+            "extruderValue": lambda e, k: _typed(self.values.get(k)),
+            "extruderValues": lambda k: [_typed(self.values.get(k))],
+            "defaultExtruderPosition": lambda: "0",
+            "valueFromContainer": lambda *a: None,
+            "math": math, "any": any, "all": all, "len": len, "min": min, "max": max, "sum": sum,
+            "int": int, "float": float, "round": round, "str": str, "abs": abs, "True": True, "False": False,
+            "None": None, "list": list, "map": map,
+        }
+        if name in helpers_:
+            return helpers_[name]
+        raise NameError(name)
+
+
+def _typed(text):
+    """A resolved value as printed by `mixengine settings --json` (text) in its Python type."""
+    if text is None or not isinstance(text, str):
+        return text
+    if text in ("True", "False"):
+        return text == "True"
+    try:
+        return int(text)
+    except ValueError:
+        pass
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+def is_enabled(node, values):
+    """The setting's `enabled` formula evaluated on resolved values (an unreadable formula counts as true)."""
+    formula = node.get("enabled", True)
+    if isinstance(formula, bool):
+        return formula
+    try:
+        return bool(eval(str(formula), {"__builtins__": {}}, _Values(values)))  # noqa: S307 (Cura's formulas)
+    except Exception:  # noqa: BLE001 - a formula this small evaluator cannot read counts as enabled
+        return True
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Flips: the changed values tried for one setting.
+
+def _limit(node, name):
+    text = node.get(name)
+    try:
+        return float(text) if text is not None else None
+    except (TypeError, ValueError):
+        return None
+
+
+def _number_flips(node, current, is_int):
+    lo = _limit(node, "minimum_value") if _limit(node, "minimum_value") is not None else -1e9
+    lo_warn = _limit(node, "minimum_value_warning")
+    hi = min(x for x in (_limit(node, "maximum_value"), _limit(node, "maximum_value_warning"), 1e9)
+             if x is not None)
+    if current == 0:
+        candidate = 1.0 if hi >= 1 else hi / 2
+    else:
+        candidate = current * 1.5
+        if candidate > hi or (lo_warn is not None and candidate < lo_warn):
+            candidate = current * 0.6
+    if is_int:
+        candidate = int(round(candidate)) if int(round(candidate)) != int(current) else int(current) + 1
+    if candidate < lo or candidate > hi or candidate == current:
+        return []
+    return [str(candidate) if is_int else f"{candidate:.4g}"]
+
+
+def flips(key, node, current):
+    """The values to try for KEY whose resolved value is CURRENT (text)."""
+    kind = node.get("type")
+    if kind == "bool":
+        return ["False" if current == "True" else "True"]
+    if kind == "enum":
+        return [o for o in node.get("options", {}) if o != current]
+    if kind in ("float", "int"):
+        try:
+            value = float(current)
+        except (TypeError, ValueError):
+            return []
+        return _number_flips(node, value, kind == "int")
+    if kind == "[int]":
+        return ["[30]"] if current.replace(" ", "") != "[30]" else ["[60]"]
+    if kind == "str":
+        return [(current or "") + "\\n;parity"] if key.endswith("gcode") else []
+    return []
+
+
+def context_for(node, resolve):
+    """The first context in which the setting is enabled, with its resolved values; None if in none."""
+    for context in CONTEXTS:
+        g, e = resolve(context)
+        if is_enabled(node, {**g, **e}):
+            return context, g, e
+    return None
+
+
+# ---------------------------------------------------------------------------------------------------------
+# G-code signatures.
+
+_WORD = re.compile(r"([A-Z])(-?[0-9.]+)")
+TEMPERATURE_COMMANDS = ("M104", "M109", "M140", "M190", "M141", "M191")
+
+
+class _Reader:
+    def __init__(self):
+        self.relative, self.x, self.y, self.e = False, 0.0, 0.0, 0.0
+        self.s = {"filament": 0.0, "extrude_len": 0.0, "travel_len": 0.0, "retractions": 0, "layers": 0,
+                  "speed_x_len": 0.0}
+        self.commands, self.types, self.temps = Counter(), Counter(), set()
+        self.f_last = 0.0
+
+    def comment(self, line):
+        if line.startswith(";LAYER:"):
+            self.s["layers"] += 1
+        elif line.startswith(";TYPE:"):
+            self.types[line[6:].strip()] += 1
+
+    def move(self, words):
+        x, y = words.get("X", self.x), words.get("Y", self.y)
+        dist = math.hypot(x - self.x, y - self.y)
+        de = 0.0
+        if "E" in words:
+            de = words["E"] if self.relative else words["E"] - self.e
+            self.e = words["E"] if not self.relative else self.e + words["E"]
+        if de > 0 and dist > 0:
+            self.s["filament"] += de
+            self.s["extrude_len"] += dist
+            self.s["speed_x_len"] += dist * words.get("F", self.f_last)
+        elif de < 0:
+            self.s["retractions"] += 1
+        elif dist > 0:
+            self.s["travel_len"] += dist
+        if "F" in words:
+            self.f_last = words["F"]
+        self.x, self.y = x, y
+
+    def command(self, code, words, line):
+        self.commands[code] += 1
+        if code in ("M82", "M83"):
+            self.relative = code == "M83"
+        elif code == "G92" and "E" in words:
+            self.e = words["E"]
+        elif code == "G10":
+            self.s["retractions"] += 1
+        if code in TEMPERATURE_COMMANDS:
+            self.temps.add(f"{code} S{float(words.get('S', words.get('R', 0))):g}"
+                           + (f" T{int(words['T'])}" if "T" in words else ""))
+
+
+def signature(path):
+    """Digest of the G-code (comments other than ;LAYER:/;TYPE: left out) and the compared figures."""
+    reader, digest = _Reader(), hashlib.sha256()
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for raw in f:
+            line = raw.strip()
+            if not line:
+                continue
+            if line.startswith(";"):
+                if line.startswith((";LAYER:", ";TYPE:")):
+                    digest.update(line.encode())
+                    reader.comment(line)
+                continue
+            code_part = line.split(";", 1)[0].strip()
+            digest.update(code_part.encode())
+            parts = code_part.split(None, 1)
+            code = parts[0]
+            words = {k: float(v) for k, v in _WORD.findall(parts[1] if len(parts) > 1 else "")
+                     if v not in ("-", ".", "-.")}
+            if code in ("G0", "G1"):
+                reader.move(words)
+            else:
+                reader.command(code, words, line)
+    s = reader.s
+    figures = {k: s[k] for k in ("filament", "extrude_len", "travel_len", "retractions", "layers")}
+    figures["mean_speed"] = s["speed_x_len"] / s["extrude_len"] if s["extrude_len"] else 0.0
+    return {"digest": digest.hexdigest(), "figures": figures, "commands": sorted(reader.commands),
+            "types": sorted(reader.types), "temps": sorted(reader.temps)}
+
+
+# (relative threshold, absolute threshold): a change counts as clear when it passes both.
+THRESHOLDS = {"filament": (0.003, 0.5), "extrude_len": (0.005, 5.0), "travel_len": (0.03, 20.0),
+              "retractions": (0.03, 2), "layers": (0.0, 1), "mean_speed": (0.01, 30.0)}
+
+
+def _clear(delta, base, metric):
+    rel, absolute = THRESHOLDS[metric]
+    return abs(delta) >= absolute and abs(delta) >= rel * abs(base)
+
+
+def verdict(cura_base, cura_flip, mix_base, mix_flip):
+    if cura_flip["digest"] == cura_base["digest"]:
+        return "cura-unchanged"
+    if mix_flip["digest"] == mix_base["digest"]:
+        return "not honoured: MixEngine's G-code does not change"
+    for metric in THRESHOLDS:
+        dc = cura_flip["figures"][metric] - cura_base["figures"][metric]
+        dm = mix_flip["figures"][metric] - mix_base["figures"][metric]
+        if _clear(dc, cura_base["figures"][metric], metric) and dc * dm <= 0:
+            return f"not honoured: {metric} CuraEngine {dc:+.4g}, MixEngine {dm:+.4g}"
+    for field in ("commands", "types", "temps"):
+        added = set(cura_flip[field]) - set(cura_base[field])
+        dropped = set(cura_base[field]) - set(cura_flip[field])
+        missing = added - set(mix_flip[field])
+        kept = (dropped & set(mix_flip[field])) if field != "temps" else set()
+        if missing:
+            return f"not honoured: CuraEngine adds {field} {sorted(missing)[:4]}"
+        if kept:
+            return f"not honoured: CuraEngine drops {field} {sorted(kept)[:4]}"
+    return "honoured"
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Running one flip.
+
+def _cache_path(kind, args):
+    stat = os.stat(helpers.CURA_BIN)
+    key = hashlib.sha256(json.dumps([kind, stat.st_size, int(stat.st_mtime), *map(str, args)]).encode())
+    return CACHE / f"{key.hexdigest()[:24]}.json"
+
+
+def cura_signature(settings):
+    """CuraEngine's signature for a settings context (cached on disk: CuraEngine is the slow half)."""
+    g, e = sbs.resolve(settings)
+    args = [*sbs.slice_args(g, e), "-l", sbs.model_path(MODEL)]
+    cached = _cache_path("cura", args + [sbs._file_digest(sbs.model_path(MODEL))])
+    if cached.is_file():
+        return json.loads(cached.read_text())
+    out = sbs._TMP / f"parity-cura-{cached.stem}.gcode"
+    proc = helpers.run([helpers.CURA_BIN, "slice", *args, "-o", out], env=helpers.CURA_ENV)
+    result = signature(out) if proc.returncode == 0 and out.exists() else {"error": proc.stderr[-300:]}
+    out.unlink(missing_ok=True)
+    CACHE.mkdir(parents=True, exist_ok=True)
+    tmp = cached.with_suffix(f".{os.getpid()}.tmp")
+    tmp.write_text(json.dumps(result))
+    tmp.replace(cached)
+    return result
+
+
+def mix_signature(settings):
+    g, e = sbs.resolve(settings)
+    name = hashlib.sha256(repr(sorted(settings.items())).encode()).hexdigest()[:16]
+    out = sbs._TMP / f"parity-mix-{name}.gcode"
+    proc = helpers.run([helpers.BIN, "slice", *sbs.slice_args(g, e), "-l", sbs.model_path(MODEL), "-o", out],
+                       env=helpers.CURA_ENV)
+    result = signature(out) if proc.returncode == 0 and out.exists() else {"error": proc.stderr[-300:]}
+    out.unlink(missing_ok=True)
+    return result
+
+
+def judge(context, key, value):
+    """The verdict for setting KEY=VALUE on top of CONTEXT."""
+    flipped = dict(context, **{key: value})
+    try:
+        cb, cf = cura_signature(context), cura_signature(flipped)
+        mb, mf = mix_signature(context), mix_signature(flipped)
+    except RuntimeError as err:  # mixengine settings refused the value
+        return f"error: {str(err)[-200:]}"
+    for name, sig in (("CuraEngine", cf), ("MixEngine", mf), ("CuraEngine base", cb), ("MixEngine base", mb)):
+        if "error" in sig:
+            return f"error: {name} failed: {sig['error'].strip().splitlines()[-1:] if sig['error'] else ''}"
+    return verdict(cb, cf, mb, mf)
+
+
+def all_flips():
+    """[(key, value, context)] for every flippable fdmprinter / fdmextruder setting."""
+    defs = definitions()
+    out = []
+    for key, node in defs.items():
+        if node.get("type") in SKIP_TYPES or key in SKIP_KEYS:
+            continue
+        found = context_for(node, sbs.resolve)
+        if found is None:
+            continue
+        context, g, e = found
+        current = e.get(key, g.get(key))
+        if current is None:
+            continue
+        for value in flips(key, node, current):
+            out.append((key, value, context))
+    return out
+
+
+def run_all(workers=2, progress=None):
+    """{"key=value": verdict} for every flip, judged on WORKERS threads (each runs the engines' processes)."""
+    from concurrent.futures import ThreadPoolExecutor
+    todo = all_flips()
+    for context in {tuple(sorted(c.items())) for _, _, c in todo}:  # bases first, once each
+        sbs.resolve(dict(context))
+    with ThreadPoolExecutor(max_workers=workers) as pool:
+        results = {}
+        futures = {pool.submit(judge, c, k, v): (k, v, c) for k, v, c in todo}
+        for done, future in enumerate(futures, 1):
+            key, value, context = futures[future]
+            results[f"{key}={value}"] = {"key": key, "value": value, "context": context,
+                                         "verdict": future.result()}
+            if progress:
+                progress(done, len(futures), key, value, results[f"{key}={value}"]["verdict"])
+    return results
+
+
+def explain(key, value):
+    """Text: the context, the verdict, and what changed in each engine's signature (for a person)."""
+    found = context_for(definitions()[key], sbs.resolve)
+    context = found[0] if found else {}
+    flipped = dict(context, **{key: value})
+    sigs = {"CuraEngine": (cura_signature(context), cura_signature(flipped)),
+            "MixEngine": (mix_signature(context), mix_signature(flipped))}
+    lines = [f"{key}={value} on {context or 'the plain print'}: {judge(context, key, value)}"]
+    for engine, (base, flip) in sigs.items():
+        figures = {m: round(flip["figures"][m] - base["figures"][m], 3) for m in THRESHOLDS}
+        lines.append(f"  {engine}: changed {base['digest'] != flip['digest']}, deltas {figures}")
+        for field in ("commands", "types", "temps"):
+            plus, minus = set(flip[field]) - set(base[field]), set(base[field]) - set(flip[field])
+            if plus or minus:
+                lines.append(f"    {field}: +{sorted(plus)} -{sorted(minus)}")
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    import sys
+    if len(sys.argv) > 2 and sys.argv[1] == "--explain":
+        for flip in sys.argv[2:]:
+            print(explain(*flip.split("=", 1)))
+        sys.exit(0)
+    report = run_all(progress=lambda i, n, k, v, r: print(f"[{i}/{n}] {k}={v}: {r}", flush=True))
+    Path(sys.argv[1] if len(sys.argv) > 1 else "parity.json").write_text(json.dumps(report, indent=1))
