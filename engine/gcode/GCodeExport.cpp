@@ -11,7 +11,8 @@ GCodeExport::GCodeExport(const ExportParams& params)
     : params_(params),
       dialect_(makeMixDialect(params.mixing, params.relative_extrusion)),
       mix_(MixVector::only(0, params.mixing.channels)),
-      time_(params.kinematics) {}
+      time_(params.kinematics),
+      motion_(params.motion_flavor) {}
 
 void GCodeExport::timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s) {
     time_.addMove(
@@ -112,11 +113,15 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
 void GCodeExport::retract() {
     if (retracted_ || params_.retraction_amount_mm <= 0)
         return;
-    std::string before;
-    const std::string words = dialect_->retract(retractionOnAxis(), before);
-    out_ += before;
-    line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + words);
-    timeMove(position_, z_, -params_.retraction_amount_mm, params_.retraction_speed_mm_s);
+    if (params_.firmware_retract) {
+        line("G10");  // the firmware retracts; the E axis does not move
+    } else {
+        std::string before;
+        const std::string words = dialect_->retract(retractionOnAxis(), before);
+        out_ += before;
+        line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + words);
+        timeMove(position_, z_, -params_.retraction_amount_mm, params_.retraction_speed_mm_s);
+    }
     retracted_ = true;
     if (params_.retraction_hop_um > 0)
         moveZ(z_ + params_.retraction_hop_um, params_.retraction_speed_mm_s);
@@ -127,11 +132,15 @@ void GCodeExport::unretract() {
         return;
     if (params_.retraction_hop_um > 0)
         moveZ(z_ - params_.retraction_hop_um, params_.retraction_speed_mm_s);
-    std::string before;
-    const std::string words = dialect_->prime(retractionOnAxis(), before);
-    out_ += before;
-    line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + words);
-    timeMove(position_, z_, params_.retraction_amount_mm, params_.prime_speed_mm_s);
+    if (params_.firmware_retract) {
+        line("G11");
+    } else {
+        std::string before;
+        const std::string words = dialect_->prime(retractionOnAxis(), before);
+        out_ += before;
+        line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + words);
+        timeMove(position_, z_, params_.retraction_amount_mm, params_.prime_speed_mm_s);
+    }
     retracted_ = false;
 }
 
@@ -139,6 +148,17 @@ void GCodeExport::resetExtrusionAxis() {
     std::string reset = dialect_->reset();
     if (!reset.empty())
         line(reset);
+}
+
+void GCodeExport::setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel) {
+    for (const std::string& text : motion_.acceleration(acceleration_mm_s2, travel))
+        line(text);
+    for (const std::string& text : motion_.jerk(jerk_mm_s))
+        line(text);
+    if (acceleration_mm_s2 > 0)
+        time_.setAcceleration(acceleration_mm_s2);
+    if (jerk_mm_s > 0)
+        time_.setJerkXy(jerk_mm_s);
 }
 
 void GCodeExport::setFan(double ratio) {

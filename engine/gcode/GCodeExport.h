@@ -11,6 +11,7 @@
 
 #include "gcode/ExtrusionAxis.h"
 #include "gcode/MixDialect.h"
+#include "gcode/MotionCommands.h"
 #include "gcode/TimeEstimate.h"
 #include "geometry/Point.h"
 
@@ -24,8 +25,10 @@ struct ExportParams {
     double retraction_speed_mm_s = 25;
     double prime_speed_mm_s = 25;
     coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
+    bool firmware_retract = false;   ///< G10/G11 instead of E moves (machine_firmware_retract)
     Kinematics kinematics;
     MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
+    MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
 };
 
 /// A tool change: the new extruder's filament diameter and nozzle offset (subtracted from X/Y).
@@ -48,6 +51,9 @@ class GCodeExport {
     void unretract();
     void resetExtrusionAxis();  ///< G92 E0 in absolute mode
     void setFan(double ratio);  ///< M106 S0..255 / M107
+    /// Acceleration (mm/s²) and XY jerk (mm/s) of the following moves, 0 = unchanged: writes
+    /// M204/M205 (gcode/MotionCommands.h) when they change and uses them for the time estimate.
+    void setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel);
     /// The mix of the following extrusions (mixing dialects only; ignored in single mode).
     void setMix(const MixVector& mix) { mix_ = mix; }
     /// Retracts, writes T<n>, resets E (absolute mode); filament is then counted for the new one.
@@ -89,6 +95,7 @@ class GCodeExport {
     double total_at_last_change_ = 0;
     bool retracted_ = false;
     double fan_ratio_ = -1;
+    MotionCommands motion_;
 };
 
 }  // namespace mixengine

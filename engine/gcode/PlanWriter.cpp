@@ -47,11 +47,13 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
+            gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, true);
             if (step.retract)
                 gcode.retract();
             gcode.travel(step.to, step.speed_mm_s);
             break;
         case PlanStep::Kind::Extrude:
+            gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, false);
             if (step.mix >= 0)  // colour mixing (mixing/MixingPass.h)
                 gcode.setMix(plan.mixes[static_cast<std::size_t>(step.mix)]);
             gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);

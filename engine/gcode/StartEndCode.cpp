@@ -109,6 +109,13 @@ std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::v
                         bool relative_extrusion) {
     gcode.retract();
     std::string out = gcode.takeText() + heatersOff(global);
+    if (global.has("acceleration_enabled") && global.boolean("acceleration_enabled")) {
+        gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, false);
+        gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, true);
+    }
+    if (global.has("jerk_enabled") && global.boolean("jerk_enabled"))
+        gcode.setMotion(0, global.velocityMmPerS("machine_max_jerk_xy"), false);
+    out += gcode.takeText();
     if (relative_extrusion) {  // absolute mode before the fan and the end code, as CuraEngine
         appendLine(out, "M82 ;absolute extrusion mode");
         relative_extrusion = false;

@@ -36,8 +36,10 @@ ExportParams exportParams(const Scene& scene) {
     p.retraction_speed_mm_s = e0.velocityMmPerS("retraction_retract_speed");
     p.prime_speed_mm_s = e0.velocityMmPerS("retraction_prime_speed");
     p.retraction_hop_um = e0.boolean("retraction_hop_enabled") ? e0.lengthMicrons("retraction_hop") : 0;
+    p.firmware_retract = e0.has("machine_firmware_retract") && e0.boolean("machine_firmware_retract");
     p.kinematics = kinematicsOf(global);
     p.mixing = parseMixingOutput(global);
+    p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
     return p;
 }
 

@@ -31,7 +31,9 @@ struct PlanStep {
     double fan_ratio = 0;
     int extruder = 0;
     double temperature_c = 0;
-    int mix = -1;  ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
+    double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
+    double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
+    int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
 };
 
 struct PlannedLayer {

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "planning/Cooling.h"
+#include "planning/Motion.h"
 #include "planning/PathOrder.h"
 #include "planning/Temperatures.h"
 
@@ -52,13 +53,27 @@ struct LayerContext {
     const CombBoundary* comb = nullptr;
 };
 
+/// The order of a mesh's groups on a layer: walls (inner first, or outer first with
+/// outer_inset_first), skin, infill — infill first with infill_before_walls.
+std::vector<const std::vector<ExtrusionPath>*> groupOrder(const MeshLayerGroups& g, const Settings& s) {
+    const bool outer_first = s.has("outer_inset_first") && s.boolean("outer_inset_first");
+    std::vector<const std::vector<ExtrusionPath>*> order;
+    if (outer_first)
+        order = {&g.outer_walls, &g.inner_walls, &g.skin, &g.infill};
+    else
+        order = {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill};
+    if (s.has("infill_before_walls") && s.boolean("infill_before_walls"))
+        std::rotate(order.begin(), order.begin() + 3, order.end());
+    return order;
+}
+
 void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
                    PlannedLayer& planned) {
     const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(ctx.layer)];
     const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb);
     std::optional<Feature> feature;
     bool marked = false;
-    for (const auto* group : {&groups.inner_walls, &groups.outer_walls, &groups.skin, &groups.infill}) {
+    for (const std::vector<ExtrusionPath>* group : groupOrder(groups, *mesh.settings)) {
         std::vector<ExtrusionPath> selected = ofExtruder(*group, ctx.extruder);
         if (selected.empty())
             continue;
@@ -79,6 +94,26 @@ void planNonMesh(const std::vector<ExtrusionPath>& paths, const LayerContext& ct
     appendOrderedPaths(std::move(selected),
                        travelParams(*ctx.extruder_settings, ctx.layer, ctx.thickness, nullptr), head, feature,
                        planned.steps);
+}
+
+std::size_t trainOf(int extruder, const std::vector<Settings>& extruders) {
+    return std::min<std::size_t>(static_cast<std::size_t>(std::max(extruder, 0)), extruders.size() - 1);
+}
+
+/// retract_at_layer_change: the first travel of a layer retracts (not in spiralize mode).
+void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
+    if (!extruder.has("retract_at_layer_change") || !extruder.boolean("retract_at_layer_change") ||
+        !extruder.boolean("retraction_enable") ||
+        (extruder.has("magic_spiralize") && extruder.boolean("magic_spiralize")))
+        return;
+    for (PlanStep& step : layer.steps) {
+        if (step.kind == PlanStep::Kind::Extrude)
+            return;
+        if (step.kind == PlanStep::Kind::Travel) {
+            step.retract = true;
+            return;
+        }
+    }
 }
 
 }  // namespace
@@ -110,9 +145,14 @@ PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& to
     const CoolingParams cooling = coolingParams(global);
     const Point2 print_start = state.head;
     std::set<int> used;
+    std::vector<const Settings*> mesh_settings;
+    for (const MeshToolpaths& mesh : toolpaths.meshes)
+        mesh_settings.push_back(mesh.settings);
+    const MotionSources motion = motionSources(global, std::move(mesh_settings), extruders);
     for (std::size_t i = 0; i < heights.size(); ++i) {
         const Point2 layer_start = state.head;
         const CombBoundary comb = i < comb_areas.size() ? CombBoundary(comb_areas[i]) : CombBoundary();
+        const int layer_extruder = state.extruder;
         PlannedLayer planned;
         planned.index = static_cast<int>(i);
         planned.z = heights[i].print_z;
@@ -143,7 +183,10 @@ PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& to
             for (std::size_t m = 0; m < toolpaths.meshes.size(); ++m)
                 planMeshLayer(toolpaths.meshes[m], static_cast<int>(m), ctx, state.head, planned);
         }
+        if (i > 0)
+            retractAtLayerStart(planned, extruders[trainOf(layer_extruder, extruders)]);
         applyCooling(planned, layer_start, cooling);
+        assignMotion(planned, motion, layer_extruder);
         plan.layers.push_back(std::move(planned));
     }
     const int only = used.size() == 1 ? *used.begin() : state.extruder;

@@ -90,6 +90,7 @@ AdhesionResult generateAdhesion(const AdhesionInput& in) {
     const Settings& s = trainSettings(g, in.extruders, nr);
     FeatureStyle style = featureStyle(
         s, {"skirt_brim_line_width", "skirt_brim_speed", "skirt_brim_material_flow", extruder_key}, 0);
+    style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");  // CuraEngine does not slow skirt and brim down
     style.extruder = nr;
     const double min_length =
         s.has("skirt_brim_minimal_length") ? s.millimetres("skirt_brim_minimal_length") * 1000 : 0;

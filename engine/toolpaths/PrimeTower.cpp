@@ -110,6 +110,7 @@ std::vector<std::vector<ExtrusionPath>> generateOozeShield(const TowerInput& in)
         FeatureStyle style =
             featureStyle(s, {"skirt_brim_line_width", "skirt_brim_speed", "skirt_brim_material_flow", ""},
                          static_cast<int>(i));
+        style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");  // shields are not slowed down either
         style.extruder = extruder;
         for (const Path& p : unionOf(shield[i])) {
             if (ClipperLib::Orientation(p))

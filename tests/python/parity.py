@@ -28,6 +28,7 @@ import json
 import math
 import os
 import re
+import uuid
 from collections import Counter
 from pathlib import Path
 
@@ -326,7 +327,7 @@ def signature(path):
 
 # (relative threshold, absolute threshold): a change counts as clear when it passes both.
 THRESHOLDS = {"filament": (0.003, 0.5), "extrude_len": (0.005, 5.0), "travel_len": (0.03, 20.0),
-              "retractions": (0.03, 2), "layers": (0.0, 1), "mean_speed": (0.01, 30.0)}
+              "retractions": (0.03, 2), "layers": (0.0, 1), "mean_speed": (0.05, 60.0)}
 
 
 def _clear(delta, base, metric):
@@ -372,10 +373,12 @@ def cura_signature(settings):
     cached = _cache_path("cura", args + [sbs._file_digest(sbs.model_path(MODEL))])
     if cached.is_file():
         return json.loads(cached.read_text())
-    out = sbs._TMP / f"parity-cura-{cached.stem}.gcode"
+    out = sbs._TMP / f"parity-cura-{cached.stem}-{uuid.uuid4().hex[:8]}.gcode"
     proc = helpers.run([helpers.CURA_BIN, "slice", *args, "-o", out], env=helpers.CURA_ENV)
     result = signature(out) if proc.returncode == 0 and out.exists() else {"error": proc.stderr[-300:]}
     out.unlink(missing_ok=True)
+    if "error" in result:
+        return result  # not cached: a failure is reported, and tried again next time
     CACHE.mkdir(parents=True, exist_ok=True)
     tmp = cached.with_suffix(f".{os.getpid()}.tmp")
     tmp.write_text(json.dumps(result))
@@ -383,10 +386,21 @@ def cura_signature(settings):
     return result
 
 
+_MIX_MEMO = {}
+
+
 def mix_signature(settings):
+    """MixEngine's signature for a settings context (memoised in this process)."""
+    memo_key = tuple(sorted(settings.items()))
+    if memo_key not in _MIX_MEMO:
+        _MIX_MEMO[memo_key] = _mix_signature(settings)
+    return _MIX_MEMO[memo_key]
+
+
+def _mix_signature(settings):
     g, e = sbs.resolve(settings)
     name = hashlib.sha256(repr(sorted(settings.items())).encode()).hexdigest()[:16]
-    out = sbs._TMP / f"parity-mix-{name}.gcode"
+    out = sbs._TMP / f"parity-mix-{name}-{uuid.uuid4().hex[:8]}.gcode"
     proc = helpers.run([helpers.BIN, "slice", *sbs.slice_args(g, e), "-l", sbs.model_path(MODEL), "-o", out],
                        env=helpers.CURA_ENV)
     result = signature(out) if proc.returncode == 0 and out.exists() else {"error": proc.stderr[-300:]}
@@ -431,8 +445,10 @@ def run_all(workers=2, progress=None):
     """{"key=value": verdict} for every flip, judged on WORKERS threads (each runs the engines' processes)."""
     from concurrent.futures import ThreadPoolExecutor
     todo = all_flips()
-    for context in {tuple(sorted(c.items())) for _, _, c in todo}:  # bases first, once each
-        sbs.resolve(dict(context))
+    contexts = [dict(c) for c in {tuple(sorted(c.items())) for _, _, c in todo}]
+    with ThreadPoolExecutor(max_workers=workers) as pool:  # each context's base once, before the flips
+        list(pool.map(cura_signature, contexts))
+        list(pool.map(mix_signature, contexts))
     with ThreadPoolExecutor(max_workers=workers) as pool:
         results = {}
         futures = {pool.submit(judge, c, k, v): (k, v, c) for k, v, c in todo}
