@@ -54,6 +54,48 @@ void appendTravel(const Point2& from, const Point2& to, const TravelParams& para
     steps.push_back(travel);
 }
 
+/// A travel (no retraction) from `head` along `points` for `distance_um`, as a nozzle wipe.
+void appendWipe(const Path& points, coord_um distance_um, double speed_mm_s, Point2& head,
+                std::vector<PlanStep>& steps) {
+    double left = static_cast<double>(distance_um);
+    for (const Point2& p : points) {
+        const double d = distanceUm(head, p);
+        if (d <= 0)
+            continue;
+        PlanStep wipe;
+        wipe.kind = PlanStep::Kind::Travel;
+        wipe.speed_mm_s = speed_mm_s;
+        const double t = std::min(1.0, left / d);
+        wipe.to = {head.X + static_cast<coord_um>(std::llround(double(p.X - head.X) * t)),
+                   head.Y + static_cast<coord_um>(std::llround(double(p.Y - head.Y) * t))};
+        steps.push_back(wipe);
+        head = wipe.to;
+        left -= d * t;
+        if (left <= 0)
+            return;
+    }
+}
+
+/// The wipe after a path: along an outer wall loop from its start, or straight on past an infill line.
+void appendPathWipe(const ExtrusionPath& path, std::size_t start, const TravelParams& params,
+                    const Point2& before_end, Point2& head, std::vector<PlanStep>& steps) {
+    if (path.closed && path.feature == Feature::WallOuter && params.wall_0_wipe_um > 0) {
+        Path loop;
+        for (std::size_t k = 1; k <= path.points.size(); ++k)
+            loop.push_back(path.points[(start + k) % path.points.size()]);
+        appendWipe(loop, params.wall_0_wipe_um, params.travel_speed_mm_s, head, steps);
+    } else if (!path.closed && path.feature == Feature::Fill && params.infill_wipe_um > 0) {
+        const double d = distanceUm(before_end, head);
+        if (d <= 0)
+            return;
+        const double k = 1.0 + static_cast<double>(params.infill_wipe_um) / d;
+        const Point2 beyond{
+            before_end.X + static_cast<coord_um>(std::llround(double(head.X - before_end.X) * k)),
+            before_end.Y + static_cast<coord_um>(std::llround(double(head.Y - before_end.Y) * k))};
+        appendWipe({beyond}, params.infill_wipe_um, params.travel_speed_mm_s, head, steps);
+    }
+}
+
 void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& params, Point2& head,
               std::vector<PlanStep>& steps) {
     const Point2& first = path.points[start];
@@ -63,6 +105,7 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
     const std::size_t n = path.points.size();
     const bool reverse = !path.closed && start != 0;
     const std::size_t count = path.closed ? n : n - 1;
+    Point2 before_end = head;
     for (std::size_t k = 1; k <= count; ++k) {
         std::size_t index = path.closed ? (start + k) % n : (reverse ? n - 1 - k : k);
         const Point2& to = path.points[index];
@@ -73,8 +116,10 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
         extrude.volume_mm3 =
             extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, path.flow);
         steps.push_back(extrude);
+        before_end = head;
         head = to;
     }
+    appendPathWipe(path, start, params, before_end, head, steps);
 }
 
 }  // namespace

@@ -20,6 +20,8 @@ struct TravelParams {
     coord_um retraction_min_travel_um = 1500;
     coord_um layer_thickness_um = 200;
     const CombBoundary* comb = nullptr;  ///< travels that stay inside it are not retracted
+    coord_um wall_0_wipe_um = 0;         ///< wall_0_wipe_dist: travel on along an outer wall loop's start
+    coord_um infill_wipe_um = 0;         ///< infill_wipe_dist: travel on past the end of an infill line
 };
 
 /// Appends the steps for `paths` (one group, printed together) to `steps`, starting from and

@@ -35,6 +35,10 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
     p.layer_thickness_um = thickness;
+    if (s.has("wall_0_wipe_dist") && !(s.has("magic_spiralize") && s.boolean("magic_spiralize")))
+        p.wall_0_wipe_um = s.lengthMicrons("wall_0_wipe_dist");
+    if (s.has("infill_wipe_dist"))
+        p.infill_wipe_um = s.lengthMicrons("infill_wipe_dist");
     return p;
 }
 

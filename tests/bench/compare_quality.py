@@ -26,7 +26,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python"))
 import helpers  # noqa: E402
 import print_quality as pq  # noqa: E402
 import side_by_side as sbs  # noqa: E402
-from test_compare_cura import CASES  # noqa: E402
+from test_compare_cura import CASES as TEST_CASES  # noqa: E402
+
+# The test suite's cases plus two the bench alone measures (issue 19): an organic scan and a real part.
+CASES = dict(TEST_CASES, bunny69k=("bunny69k", {}), rear_case=("rear_case", {}))
 
 COLOURS = {"free": (225, 225, 225), "inside": (40, 90, 200), "band": (245, 160, 0), "outside": (220, 30, 30),
            "other": (40, 170, 60), "background": (255, 255, 255)}

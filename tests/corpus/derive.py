@@ -98,6 +98,7 @@ def recipes(raw):
         "dragon20k": (["cgal/ChineseDragon-10kv.off"], lambda: load(raw / "cgal/ChineseDragon-10kv.off")),
         "bunny69k": (["stl-models/bunny.bin.stl"], lambda: scaled(raw / "stl-models/bunny.bin.stl", 500)),
         "knot2": (["cgal/knot2.off"], lambda: knot_parts(raw)),
+        "rear_case": (["numpy-stl/rear_case.stl"], lambda: load(raw / "numpy-stl/rear_case.stl")),
     }
 
 

@@ -68,15 +68,17 @@ fetch_stl_models() { # npm stl-models 0.12.0 (MIT): the bunny and the broken/ pa
 }
 
 fetch_numpy_stl() { # PyPI numpy-stl 3.1.2 sdist (its tests/ folder holds the STL files)
-  local want=(HalfDonut.stl triamid.stl)
+  local want=(HalfDonut.stl triamid.stl rear_case.stl)
   have_all "$RAW/numpy-stl" "${want[@]}" && return 0
   mkdir -p "$TMP/pip" "$RAW/numpy-stl" || return 1
   "$PY" -m pip download -q --disable-pip-version-check --no-deps --no-binary :all: \
     -d "$TMP/pip" numpy-stl==3.1.2 >/dev/null 2>&1 || return 1
   tar -xzf "$TMP/pip/numpy_stl-3.1.2.tar.gz" -C "$TMP/pip" \
-    numpy_stl-3.1.2/tests/stl_binary/HalfDonut.stl numpy_stl-3.1.2/tests/stl_tests/triamid.stl || return 1
+    numpy_stl-3.1.2/tests/stl_binary/HalfDonut.stl numpy_stl-3.1.2/tests/stl_tests/triamid.stl \
+    numpy_stl-3.1.2/tests/stl_binary/rear_case.stl || return 1
   cp "$TMP/pip/numpy_stl-3.1.2/tests/stl_binary/HalfDonut.stl" \
-     "$TMP/pip/numpy_stl-3.1.2/tests/stl_tests/triamid.stl" "$RAW/numpy-stl/" || return 1
+     "$TMP/pip/numpy_stl-3.1.2/tests/stl_tests/triamid.stl" \
+     "$TMP/pip/numpy_stl-3.1.2/tests/stl_binary/rear_case.stl" "$RAW/numpy-stl/" || return 1
   echo "fetch.sh: PyPI numpy-stl==3.1.2 sdist -> raw/numpy-stl: ${want[*]}"
 }
 

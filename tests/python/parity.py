@@ -15,8 +15,10 @@ What is compared
 Verdicts (verdict()): compared on G-code signatures (signature()), not on bytes:
   cura-unchanged      CuraEngine's G-code does not change: nothing to match (reported, not asserted).
   honoured            MixEngine's G-code changes too, and in the same direction wherever CuraEngine's
-                      changed clearly: filament, extruded and travel length, retractions, layer count,
-                      mean extrusion speed; the G-code commands and ;TYPE: features CuraEngine adds or drops;
+                      changed clearly: filament, extruded length, layer count; travel length and
+                      retractions for travel settings, mean extrusion speed for speed and cooling
+                      settings (elsewhere they follow path order more than the setting); the G-code
+                      commands and ;TYPE: features CuraEngine adds or drops;
                       the temperature commands (M104/M109/M140/M190/M141/M191 with their values) it adds.
   not honoured: ...   otherwise, with the first reason.
 
@@ -118,10 +120,11 @@ def is_listed(listed, key, value):
 # ---------------------------------------------------------------------------------------------------------
 # Definitions: type, options, limits and `enabled` formula of every fdmprinter / fdmextruder setting.
 
-def _flatten(settings, out):
+def _flatten(settings, out, category=None):
     for key, node in settings.items():
+        node = dict(node, category=category or key)
         out[key] = node
-        _flatten(node.get("children", {}), out)
+        _flatten(node.get("children", {}), out, category or key)
 
 
 def definitions():
@@ -171,6 +174,10 @@ def _typed(text):
         return float(text)
     except ValueError:
         return text
+
+
+def _categories():
+    return {key: node["category"] for key, node in definitions().items()}
 
 
 def is_enabled(node, values):
@@ -335,12 +342,19 @@ def _clear(delta, base, metric):
     return abs(delta) >= absolute and abs(delta) >= rel * abs(base)
 
 
-def verdict(cura_base, cura_flip, mix_base, mix_flip):
+# Figures whose direction depends on path order as much as on the setting are compared only for the
+# settings that are about them: travel for the travel category, speed for speed and cooling.
+CATEGORY_METRICS = {"travel_len": ("travel",), "retractions": ("travel",), "mean_speed": ("speed", "cooling")}
+
+
+def verdict(cura_base, cura_flip, mix_base, mix_flip, category=None):
     if cura_flip["digest"] == cura_base["digest"]:
         return "cura-unchanged"
     if mix_flip["digest"] == mix_base["digest"]:
         return "not honoured: MixEngine's G-code does not change"
     for metric in THRESHOLDS:
+        if metric in CATEGORY_METRICS and category is not None and category not in CATEGORY_METRICS[metric]:
+            continue
         dc = cura_flip["figures"][metric] - cura_base["figures"][metric]
         dm = mix_flip["figures"][metric] - mix_base["figures"][metric]
         if _clear(dc, cura_base["figures"][metric], metric) and dc * dm <= 0:
@@ -359,6 +373,9 @@ def verdict(cura_base, cura_flip, mix_base, mix_flip):
 
 # ---------------------------------------------------------------------------------------------------------
 # Running one flip.
+
+CATEGORIES = _categories()
+SETTING_TYPES = {key: node.get("type") for key, node in definitions().items()}
 
 def _cache_path(kind, args):
     stat = os.stat(helpers.CURA_BIN)
@@ -416,18 +433,20 @@ def judge(context, key, value):
         mb, mf = mix_signature(context), mix_signature(flipped)
     except RuntimeError as err:  # mixengine settings refused the value
         return f"error: {str(err)[-200:]}"
-    for name, sig in (("CuraEngine", cf), ("MixEngine", mf), ("CuraEngine base", cb), ("MixEngine base", mb)):
+    if "error" in cf:  # CuraEngine itself cannot print it (e.g. an arithmetic exception): nothing to match
+        return f"cura-failed: {cf['error'].strip().splitlines()[-1:] if cf['error'] else ''}"
+    for name, sig in (("CuraEngine base", cb), ("MixEngine", mf), ("MixEngine base", mb)):
         if "error" in sig:
             return f"error: {name} failed: {sig['error'].strip().splitlines()[-1:] if sig['error'] else ''}"
-    return verdict(cb, cf, mb, mf)
+    return verdict(cb, cf, mb, mf, CATEGORIES.get(key))
 
 
-def all_flips():
-    """[(key, value, context)] for every flippable fdmprinter / fdmextruder setting."""
+def all_flips(keys=None):
+    """[(key, value, context)] for every flippable fdmprinter / fdmextruder setting (or those in KEYS)."""
     defs = definitions()
     out = []
     for key, node in defs.items():
-        if node.get("type") in SKIP_TYPES or key in SKIP_KEYS:
+        if node.get("type") in SKIP_TYPES or key in SKIP_KEYS or (keys is not None and key not in keys):
             continue
         found = context_for(node, sbs.resolve)
         if found is None:
@@ -441,10 +460,10 @@ def all_flips():
     return out
 
 
-def run_all(workers=2, progress=None):
-    """{"key=value": verdict} for every flip, judged on WORKERS threads (each runs the engines' processes)."""
+def run_all(workers=2, progress=None, keys=None):
+    """{"key=value": {key, value, context, verdict}} for every flip (of KEYS), judged on WORKERS threads."""
     from concurrent.futures import ThreadPoolExecutor
-    todo = all_flips()
+    todo = all_flips(keys)
     contexts = [dict(c) for c in {tuple(sorted(c.items())) for _, _, c in todo}]
     with ThreadPoolExecutor(max_workers=workers) as pool:  # each context's base once, before the flips
         list(pool.map(cura_signature, contexts))
@@ -479,8 +498,38 @@ def explain(key, value):
     return "\n".join(lines)
 
 
+def list_from(results):
+    """not_honoured.json's "settings" rebuilt from a whole sweep: keys still not honoured keep their reason,
+    new ones get the verdict's; a key is listed whole when every judged value fails, else by value."""
+    old = json.loads(NOT_HONOURED.read_text())["settings"]
+    by_key = {}
+    for outcome in results.values():
+        if outcome["verdict"].startswith(("cura-unchanged", "cura-failed")):
+            continue
+        by_key.setdefault(outcome["key"], []).append(outcome)
+    listed = {}
+    for key in sorted(by_key):
+        failing = [o for o in by_key[key] if o["verdict"] != "honoured"]
+        if not failing:
+            continue
+        previous = old.get(key)
+        why = previous if isinstance(previous, str) else (previous or {}).get("why")
+        why = why or failing[0]["verdict"].replace("not honoured: ", "")
+        if len(failing) == len(by_key[key]) and SETTING_TYPES.get(key) != "enum":
+            listed[key] = why
+        else:
+            listed[key] = {"values": [o["value"] for o in failing], "why": why}
+    return listed
+
+
 if __name__ == "__main__":
     import sys
+    if len(sys.argv) > 2 and sys.argv[1] == "--write-list":
+        document = json.loads(NOT_HONOURED.read_text())
+        document["settings"] = list_from(json.loads(Path(sys.argv[2]).read_text()))
+        NOT_HONOURED.write_text(json.dumps(document, indent=2) + "\n")
+        print(f"{NOT_HONOURED}: {len(document['settings'])} settings")
+        sys.exit(0)
     if len(sys.argv) > 2 and sys.argv[1] == "--explain":
         for flip in sys.argv[2:]:
             print(explain(*flip.split("=", 1)))

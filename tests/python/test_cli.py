@@ -123,3 +123,19 @@ def test_malformed_facets_are_handled(engine, corpus, tmp_path, name):
     else:
         assert proc.returncode == 0, f"rc {proc.returncode}: {proc.stderr[-1000:]}"
         assert 0 <= helpers.gcode_layer_count(out) <= helpers.expected_layer_count(helpers.stl_z_max(model))
+
+
+def test_not_honoured_settings_are_named_once_each(engine, corpus, tmp_path):
+    """Issue 19, no silent ignores: a listed setting (settings/mixengine/not_honoured.json) given a value that
+    MixEngine does not act on yet gives one warning line; an honoured value of the same key gives none."""
+    cube = corpus("cube20")
+    out = tmp_path / "x.gcode"
+    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-s", "adhesion_type=raft", "-l", cube, "-o", out)
+    assert proc.returncode == 0, proc.stderr
+    lines = [line for line in proc.stderr.splitlines() if "has no effect in MixEngine yet" in line]
+    assert len(lines) == 1, proc.stderr
+    assert lines[0].startswith("[warning] setting 'adhesion_type' has no effect in MixEngine yet (value raft: ")
+    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-s", "adhesion_type=brim", "-l", cube, "-o", out)
+    assert proc.returncode == 0 and "has no effect in MixEngine yet" not in proc.stderr, proc.stderr
+    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-l", cube, "-o", out)
+    assert proc.returncode == 0 and "has no effect in MixEngine yet" not in proc.stderr, proc.stderr

@@ -205,3 +205,14 @@ def test_connect_without_a_frontend_fails_promptly_naming_the_address(engine):
     assert proc.returncode == 1
     assert f"cannot connect to Cura at 127.0.0.1:{port}" in proc.stderr.strip().splitlines()[-1]
     assert "ignoring unknown option '-j'" in proc.stderr
+
+
+def test_a_setting_mixengine_does_not_honour_is_named_in_the_engine_log(engine, cube, tmp_path):
+    """Issue 19, no silent ignores over the socket: Cura writes the engine's stderr into cura.log, so the
+    warning for a listed setting (settings/mixengine/not_honoured.json) reaches the user there."""
+    global_settings, extruders = resolved_settings("creality_ender3", "adhesion_type=raft")
+    r = slice_over_socket(engine, tmp_path, global_settings, extruders, [one_object(cube)])
+    assert r["exit_code"] == 0, r["stderr"]
+    warnings = [line for line in r["stderr"].splitlines() if "has no effect in MixEngine yet" in line]
+    assert any(line.startswith("[warning] setting 'adhesion_type' has no effect in MixEngine yet (value raft")
+               for line in warnings), r["stderr"]
