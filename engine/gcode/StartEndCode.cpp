@@ -41,7 +41,9 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
             appendLine(out, "M190 S" + formatDecimal(bed, 1));
         }
     }
-    if (global.boolean("material_print_temp_prepend")) {
+    const bool nozzle_control =
+        !extruder0.has("machine_nozzle_temp_enabled") || extruder0.boolean("machine_nozzle_temp_enabled");
+    if (global.boolean("material_print_temp_prepend") && nozzle_control) {
         const double nozzle = initialNozzleTemperature(extruder0);
         appendLine(out, "M104 S" + formatDecimal(nozzle, 1));
         if (global.boolean("material_print_temp_wait")) {

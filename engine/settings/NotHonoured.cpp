@@ -52,16 +52,14 @@ std::optional<std::string> offending(const NotHonouredEntry& entry, StackEvaluat
     const std::optional<formula::Value> value = given.value(scope, entry.key);
     if (!value)
         return std::nullopt;
-    const std::string text = formula::toPythonStr(*value);
-    if (!entry.values.empty()) {
-        const bool listed = std::any_of(entry.values.begin(), entry.values.end(),
-                                        [&](const std::string& v) { return sameText(v, text); });
-        return listed ? std::optional<std::string>(text) : std::nullopt;
-    }
     const std::optional<formula::Value> reference = stock.value(scope, entry.key);
     if (reference && formula::pythonEquals(*value, *reference))
-        return std::nullopt;
-    return text;
+        return std::nullopt;  // the definitions' own value: nothing the user asked for is ignored
+    const std::string text = formula::toPythonStr(*value);
+    const bool listed =
+        entry.values.empty() || std::any_of(entry.values.begin(), entry.values.end(),
+                                            [&](const std::string& v) { return sameText(v, text); });
+    return listed ? std::optional<std::string>(text) : std::nullopt;
 }
 
 }  // namespace

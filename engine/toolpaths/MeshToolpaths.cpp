@@ -5,6 +5,7 @@
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/InfillPatterns.h"
+#include "toolpaths/OutlineOffsets.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/Seam.h"
 #include "toolpaths/Skin.h"
@@ -54,11 +55,13 @@ SkinReferences skinReferences(const Settings& s) {
             skinReference(length("bottom_skin_preshrink"), walls, w0, wx)};
 }
 
-WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs) {
+WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
     WallParams p;
     p.top_reference = refs.top.wall;
     p.bottom_reference = refs.bottom.wall;
     p.wall_count = countOf(s, "wall_line_count");
+    if (layer % 2 == 1 && s.has("alternate_extra_perimeter") && s.boolean("alternate_extra_perimeter"))
+        ++p.wall_count;  // one wall more on every other layer
     p.outer_width_um = styles.wall_0.width_um;
     p.inner_width_um = styles.wall_x.width_um;
     p.outer_inset_um = s.has("wall_0_inset") ? s.lengthMicrons("wall_0_inset") : 0;
@@ -122,6 +125,14 @@ std::vector<ExtrusionPath> infillPaths(const Paths& area, const Settings& s, int
     return generateInfill(overlap != 0 ? offsetMiter(area, overlap) : area, p);
 }
 
+/// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/OutlineOffsets.h).
+Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
+    auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
+    const coord_um xy = length(layer == 0 ? "xy_offset_layer_0" : "xy_offset");
+    const coord_um hole = length("hole_xy_offset");
+    return xy == 0 && hole == 0 ? outlines : offsetOutlines(outlines, xy, hole);
+}
+
 }  // namespace
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
@@ -133,8 +144,8 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
-        WallResult walls =
-            generateWalls(layers[i].outlines, wallParams(settings, meshStyles(settings, layer), refs));
+        WallResult walls = generateWalls(adjustedOutlines(layers[i].outlines, settings, layer),
+                                         wallParams(settings, meshStyles(settings, layer), refs, layer));
         placeSeams(walls.walls, seam, layer);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? result[i].outer_walls : result[i].inner_walls)

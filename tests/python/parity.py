@@ -498,10 +498,39 @@ def explain(key, value):
     return "\n".join(lines)
 
 
+# Reasons for whole families of settings (a key's first matching prefix); other keys get their verdict.
+FAMILY_REASONS = [
+    (("raft_", "layer_0_z_overlap"), "rafts are not built yet (a raft is printed as a skirt)"),
+    (("bridge_",), "bridge settings are not built yet"),
+    (("ironing_",), "ironing is not built yet"),
+    (("coasting_",), "coasting is not built yet"),
+    (("magic_fuzzy_skin_",), "fuzzy skin is not built yet"),
+    (("mold_",), "molds are not built yet"),
+    (("draft_shield_",), "draft shields are not built yet"),
+    (("wireframe_",), "wire printing is not built"),
+    (("support_tree_",), "tree support is not built yet (normal support is printed)"),
+    (("support_conical_",), "conical support is not built yet"),
+    (("clean_between_layers", "wipe_", "max_extrusion_before_wipe"), "the wipe script between layers is not built yet"),
+    (("adaptive_layer_height_",), "adaptive layer heights are not built yet"),
+    (("conical_overhang_",), "'make overhang printable' is not built yet"),
+    (("magic_spiralize", "smooth_spiralized_contours"), "spiralize (vase mode) is not built yet"),
+]
+
+
+def _reason(key, verdict_text):
+    for prefixes, reason in FAMILY_REASONS:
+        if key.startswith(prefixes):
+            return reason
+    detail = verdict_text.replace("not honoured: ", "")
+    if detail == "MixEngine's G-code does not change":
+        return "does not change MixEngine's print yet"
+    detail = re.sub(r" CuraEngine [-+][^,]*, MixEngine [-+]\S*", " moves the other way or not at all", detail)
+    return f"changes the print unlike CuraEngine ({detail})"
+
+
 def list_from(results):
-    """not_honoured.json's "settings" rebuilt from a whole sweep: keys still not honoured keep their reason,
-    new ones get the verdict's; a key is listed whole when every judged value fails, else by value."""
-    old = json.loads(NOT_HONOURED.read_text())["settings"]
+    """not_honoured.json's "settings" rebuilt from a whole sweep, with the reasons above; a key is listed
+    whole when every judged value fails, else by value."""
     by_key = {}
     for outcome in results.values():
         if outcome["verdict"].startswith(("cura-unchanged", "cura-failed")):
@@ -512,9 +541,7 @@ def list_from(results):
         failing = [o for o in by_key[key] if o["verdict"] != "honoured"]
         if not failing:
             continue
-        previous = old.get(key)
-        why = previous if isinstance(previous, str) else (previous or {}).get("why")
-        why = why or failing[0]["verdict"].replace("not honoured: ", "")
+        why = _reason(key, failing[0]["verdict"])
         if len(failing) == len(by_key[key]) and SETTING_TYPES.get(key) != "enum":
             listed[key] = why
         else:
