@@ -123,3 +123,39 @@ def test_malformed_facets_are_handled(engine, corpus, tmp_path, name):
     else:
         assert proc.returncode == 0, f"rc {proc.returncode}: {proc.stderr[-1000:]}"
         assert 0 <= helpers.gcode_layer_count(out) <= helpers.expected_layer_count(helpers.stl_z_max(model))
+
+
+HELP_COMMANDS = {  # command -> words its usage must show (its own options, nothing of the others)
+    "slice": ["mixengine slice", "-j <file|id>", "--preview", "--next"],
+    "layers": ["mixengine layers", "layers.json"],
+    "settings": ["mixengine settings", "--json"],
+    "orient": ["mixengine orient", "--offset", "--report"],
+    "connect": ["mixengine connect", "<host>[:<port>]"],
+    "demo": ["mixengine demo", "[<dir>]"],
+}
+
+
+@pytest.mark.parametrize("command", sorted(HELP_COMMANDS))
+@pytest.mark.parametrize("flag", ["--help", "-h"])
+def test_command_help_prints_its_usage_and_exits_0(engine, tmp_path, command, flag):
+    # run in an empty folder: --help must not slice, connect or write anything (demo used to create ./--help)
+    proc = helpers.run([engine, command, flag], cwd=tmp_path, timeout=30)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stderr == ""
+    usage = proc.stdout
+    assert usage.startswith("usage:\n")
+    for word in HELP_COMMANDS[command]:
+        assert word in usage, (command, word)
+    for other in set(HELP_COMMANDS) - {command}:
+        assert f"mixengine {other} " not in usage and f"mixengine {other}\n" not in usage, (command, other)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_help_after_other_options_and_help_command_forms(engine, tmp_path):
+    late = helpers.run([engine, "slice", "-j", "creality_ender3", "-s", "layer_height=0.2", "--help"], cwd=tmp_path)
+    named = helpers.run([engine, "help", "slice"], cwd=tmp_path)
+    assert late.returncode == named.returncode == 0
+    assert late.stdout == named.stdout and "mixengine slice" in late.stdout
+    assert list(tmp_path.iterdir()) == []
+    unknown = helpers.mixengine("help", "frobnicate")
+    assert_one_line_error(unknown, "frobnicate")
