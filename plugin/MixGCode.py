@@ -7,7 +7,8 @@ the channels, adding up to 1) and its amount (filament units of the E axis: mm, 
 volumetric flavours). Each dialect of mixing.def.json carries the mix its own way:
 
   eb_axes      E and B words on every move; M82/M83, G90/G91 and G92 act on both
-  klipper_b    E as usual, B a Klipper manual_stepper: always absolute, never reset by G92
+  klipper_b    E as usual, B a Klipper manual_stepper: follows G90/G91 only (not M82/M83), never
+               reset by G92; MANUAL_STEPPER ... SET_POSITION= sets it
   rrf_colon    "E a:b[:c...]" words, relative
   marlin_m163  "M163 S<i> P<w>" ... "M164": the mix of the following moves, E the total
   marlin_m165  "M165 A B C D H I" (DIRECT_MIXING_IN_G1): the mix of the following moves, E the total
@@ -84,8 +85,8 @@ class _Reader:
         self.result = GCodeMixes(channels)
         self.channels = channels
         self.xy = [0.0, 0.0]
-        self.axes_relative = False  # G91
-        self.e_relative = False  # M83
+        self.axes_relative = False  # G91 (X, Y, Z, and E: relative when G91 or M83, as Klipper and the
+        self.extrude_relative = False  # M83   firmware models of tests/python/mixing_gcode.py read it)
         self.e = 0.0
         self.b = 0.0
         self.state_mix = [1.0] + [0.0] * (channels - 1)  # mix-command dialects: the mix in force
@@ -96,14 +97,10 @@ class _Reader:
     def command(self, code, words, line):
         if code in ("G0", "G1"):
             self.move(words)
-        elif code == "G90":
-            self.axes_relative, self.e_relative = False, False
-        elif code == "G91":
-            self.axes_relative, self.e_relative = True, True
-        elif code == "M82":
-            self.e_relative = False
-        elif code == "M83":
-            self.e_relative = True
+        elif code in ("G90", "G91"):
+            self.axes_relative = code == "G91"
+        elif code in ("M82", "M83"):
+            self.extrude_relative = code == "M83"
         elif code == "G92":
             self.setPosition(words)
         elif code in ("M163", "M164", "M165", "M567"):
@@ -143,9 +140,11 @@ class _Reader:
         """Per-channel forward amounts of the move (None: the state's mix with total E)."""
         if self.dialect == "rrf_colon" and ":" in words.get("E", ""):
             return [_float(p) for p in words["E"].split(":")]
-        d_e, self.e = self.axisDelta(words, "E", self.e, self.e_relative)
+        e_relative = self.axes_relative or self.extrude_relative
+        d_e, self.e = self.axisDelta(words, "E", self.e, e_relative)
         if self.dialect in ("eb_axes", "klipper_b"):
-            b_relative = self.e_relative if self.dialect == "eb_axes" else False
+            # E/B: M82/M83 switch both; Klipper's manual_stepper B follows G90/G91 only
+            b_relative = e_relative if self.dialect == "eb_axes" else self.axes_relative
             d_b, self.b = self.axisDelta(words, "B", self.b, b_relative)
             return [d_e, d_b]
         return [d_e * s for s in self.state_mix]
