@@ -20,6 +20,7 @@ import time
 import numpy
 from PyQt5.QtCore import QObject, pyqtProperty, pyqtSignal
 
+from UM.Backend.Backend import BackendState
 from UM.Logger import Logger
 
 from cura import LayerDataBuilder
@@ -78,6 +79,7 @@ class MixPreview:
         self.legend = MixLegend()
         self._legend_item = None
         self._mix_active = False
+        self._channels = []
         self.last = {"state": "no layer view built yet"}
 
     # ---- installation ------------------------------------------------------------------------
@@ -100,6 +102,7 @@ class MixPreview:
         controller = self._app.getController()
         controller.activeStageChanged.connect(self._updateLegend)
         controller.activeViewChanged.connect(self._updateLegend)
+        self._app.getBackend().backendStateChange.connect(self._onBackendState)
 
     def createLegend(self, qml_path):
         """The overlay in the main window (after initializationFinished)."""
@@ -191,6 +194,10 @@ class MixPreview:
         self._channels = channels
         self._updateLegend()
 
+    def _onBackendState(self, state):
+        if state == BackendState.Processing:  # a new slice: the old layer view and its legend go
+            self._setMixActive(False, [])
+
     def _onPreferenceChanged(self, name):
         if name == LAYER_VIEW_TYPE:
             self._updateLegend()
@@ -203,4 +210,4 @@ class MixPreview:
         in_preview = (stage is not None and stage.getPluginId() == "PreviewStage" and view is not None
                       and view.getPluginId() == "SimulationView")
         shown = bool(self._mix_active and in_preview and str(scheme) == str(MATERIAL_COLOR))
-        self.legend.set(getattr(self, "_channels", []), shown, "Filament mix")
+        self.legend.set(self._channels, shown, "Filament mix")

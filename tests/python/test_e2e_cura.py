@@ -260,6 +260,18 @@ def test_legend_lists_the_channels_in_the_material_color_screenshot(gradient):
     assert channels == [{"name": "A", "color": CHANNEL_A}, {"name": "B", "color": CHANNEL_B}]
 
 
+def test_cura_print_information_shows_the_time_by_feature(gradient, report):
+    """Issue 17, part 2: Cura's print information gets the breakdown, adding up to the print time."""
+    times, total = gradient["status"]["print_times_per_feature"], gradient["status"]["print_time_s"]
+    for feature in ("Outer Wall", "Inner Walls", "Skin", "Infill", "Skirt", "Travel"):
+        assert times[feature] > 0, (feature, times)
+    assert times["Other"] == 0 and times["Support"] == 0 and times["Prime Tower"] == 0
+    assert abs(sum(times.values()) - total) <= len(times)  # each Duration is rounded to whole seconds
+    header_s = int(re.search(r"^;TIME:(\d+)$", gradient["chunks"][0], re.M).group(1))
+    assert abs(total - header_s) <= 1
+    report("Cura print information (s): " + ", ".join(f"{k} {v}" for k, v in times.items() if v))
+
+
 def test_backend_location_given_back_on_shutdown(gradient):
     assert gradient["summary"]["cfg_backend_location"] == gradient["previous"]
     assert "[MixEngine] shutdown (plugin disabled): backend/location back to " + gradient["previous"] in gradient["log"]

@@ -309,6 +309,12 @@ class HarnessExtension(Extension):
         QTimer.singleShot(int(shot.get("delay_ms", 2500)), grab)
 
     def _close(self):
+        try:  # what Cura's print information shows: the time per feature (from PrintTimeMaterialEstimates)
+            info = self._app.getPrintInformation()
+            self._status["print_times_per_feature"] = {k: int(v) for k, v in info.getFeaturePrintTimes().items()}
+            self._status["print_time_s"] = int(info.currentPrintTime)
+        except Exception as e:
+            self._error("print information: %r" % e)
         if self._job.get("plugin_status"):
             plugin = HarnessSteps.pluginObject(self._job["plugin_status"])
             self._status["plugin_status_end"] = plugin.status() if hasattr(plugin, "status") else None
