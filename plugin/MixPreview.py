@@ -92,7 +92,7 @@ class MixPreview:
             layer_data = original(self, material_color_map, line_type_brightness)
             job = _callerJob()
             if job is not None:
-                preview.recolour(self, layer_data, job.getBuildPlate(), line_type_brightness)
+                preview.recolour(self, layer_data, job.getBuildPlate())
             return layer_data
 
         builder._mixengine_original_build = original
@@ -134,7 +134,7 @@ class MixPreview:
             "diameter_mm": float(extruder.getProperty("material_diameter", "value") or 1.75),
         }
 
-    def recolour(self, builder, layer_data, build_plate, brightness):
+    def recolour(self, builder, layer_data, build_plate):
         t0 = time.time()
         try:
             settings = self._settings()
