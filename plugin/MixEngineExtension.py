@@ -5,17 +5,23 @@ Timeline in Cura 4.13:
                                containerLoadComplete hooked, shutdown hooked
   loadAllMetadata / machines   every machine definition gets MixEngine's categories (SettingsInjector)
   initializationFinished       cura.cfg has been read: backend/location -> mixengine (engine respawned),
-                               MixEngine's settings made visible once
+                               MixEngine's settings made visible once; the layer view learns the mix
+                               (MixPreview: LayerDataBuilder.build wrapped, legend overlay created); the
+                               settings MixEngine does not act on are watched (SettingsNotice)
   shutdown                     backend/location given back before the preferences are saved
 """
+import os
+
 from UM.Extension import Extension
 from UM.Logger import Logger
 from UM.Message import Message
 from UM.PluginRegistry import PluginRegistry
 
-from . import BackendLocation, PluginPaths
+from . import BackendLocation, NotHonoured, PluginPaths, SettingFragments
+from .MixPreview import MixPreview
 from .OrientAction import OrientAction
 from .SettingsInjector import SettingsInjector
+from .SettingsNotice import SettingsNotice
 
 PLUGIN_ID = "MixEngine"
 VISIBLE = "general/visible_settings"
@@ -40,6 +46,8 @@ class MixEngineExtension(Extension):
         else:
             Logger.log("e", "[MixEngine] no settings folder next to the plugin: no MixEngine settings")
         self.orient = OrientAction(app, lambda: self._findEngine(mixengine_only=True))
+        self.preview = MixPreview(app, defaultChannelColours(settings_dir))
+        self.notice = SettingsNotice(app, NotHonoured.load(settings_dir), self._slicesWithMixEngine)
         self.setMenuName("MixEngine")
         self.addMenuItem(ORIENT_ITEM, self.orient.run)
         app.initializationFinished.connect(self._onInitializationFinished)
@@ -51,7 +59,14 @@ class MixEngineExtension(Extension):
                 "settings_dir": self._settings_dir,
                 "backend_active": bool(self._backend and self._backend.active),
                 "injected": list(self._injector.injected) if self._injector else [],
-                "keys": self._injector.allKeys() if self._injector else []}
+                "keys": self._injector.allKeys() if self._injector else [],
+                "preview": dict(self.preview.last),
+                "legend": {"shown": self.preview.legend.shown, "channels": self.preview.legend.channels},
+                "not_honoured": [list(r) for r in self.notice.rows], "not_honoured_message": self.notice.text()}
+
+    def _slicesWithMixEngine(self):
+        return bool(self._backend and self._backend.active and self.engine_path
+                    and os.path.basename(self.engine_path).startswith(PluginPaths.ENGINE_NAME))
 
     def _findEngine(self, mixengine_only=False):
         preference = self._app.getPreferences().getValue(BackendLocation.ENGINE_PATH)
@@ -60,6 +75,11 @@ class MixEngineExtension(Extension):
     # ---- start-up ----------------------------------------------------------------------------
     def _onInitializationFinished(self):
         self._showSettings()
+        try:
+            self.preview.install()
+            self.preview.createLegend(os.path.join(os.path.dirname(os.path.abspath(__file__)), "qml", "MixLegend.qml"))
+        except Exception:
+            Logger.logException("e", "[MixEngine] the layer view will not show the mix")
         self.engine_path, self.engine_how = self._findEngine()
         if self.engine_path is None:
             Logger.log("e", "[MixEngine] %s; Cura keeps its engine", self.engine_how)
@@ -70,6 +90,7 @@ class MixEngineExtension(Extension):
                                                         respawn=self._respawn,
                                                         log=lambda t: Logger.log("i", "[MixEngine] %s", t))
         self._backend.activate()
+        self.notice.connect()
 
     def _respawn(self):
         """Replace the engine Cura spawned at start-up with the old location (private backend API)."""
@@ -110,3 +131,14 @@ class MixEngineExtension(Extension):
         except Exception:
             Logger.logException("w", "[MixEngine] saving the restored backend/location failed")
 
+
+def defaultChannelColours(settings_dir):
+    """The default of mixing_channel_colors in the mixing fragment ("" when absent)."""
+    path = os.path.join(settings_dir or "", "mixengine", "mixing.def.json")
+    if not os.path.isfile(path):
+        return ""
+    for key, category in SettingFragments.categories(SettingFragments.loadFragment(path)):
+        found = SettingFragments.findSetting(key, category, "mixing_channel_colors")
+        if found is not None:
+            return found.get("default_value", "")
+    return ""

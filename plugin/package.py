@@ -7,6 +7,7 @@ The package is a zip file as Cura's Marketplace and drag-and-drop installer expe
     package.json                              package_id MixEngine, package_type plugin, sdk_version 7.9.0
     files/plugins/MixEngine/plugin.json       the plugin (api 7, supported_sdk_versions ["7.9.0"])
     files/plugins/MixEngine/*.py, README.md
+    files/plugins/MixEngine/qml/*.qml         the mix legend over the Preview
     files/plugins/MixEngine/settings/...      a copy of the repository's settings/ folder (setting
                                               fragments, printer and extruder definitions)
     files/plugins/MixEngine/mixengine         the engine binary (debug symbols stripped), unless --no-engine
@@ -54,7 +55,10 @@ def pluginSources():
     """(archive name, path) of the plugin's own files."""
     names = sorted(n for n in os.listdir(HERE) if n.endswith(".py") and n not in NOT_SHIPPED)
     names += [n for n in PLUGIN_FILES if os.path.isfile(os.path.join(HERE, n))]
-    return [(n, os.path.join(HERE, n)) for n in names]
+    qml = os.path.join(HERE, "qml")
+    if os.path.isdir(qml):
+        names += ["qml/" + n for n in sorted(os.listdir(qml)) if n.endswith(".qml")]
+    return [(n, os.path.join(HERE, *n.split("/"))) for n in names]
 
 
 def settingsSources(settings_dir):

@@ -1,10 +1,33 @@
 #include "communication/Cli.h"
 
+#include <algorithm>
+
 #include "common/Error.h"
 #include "communication/Commands.h"
 #include "communication/HelpText.h"
 
 namespace mixengine {
+namespace {
+
+bool asksForHelp(const Words& words) {
+    return std::any_of(words.begin(), words.end(),
+                       [](const std::string& w) { return w == "--help" || w == "-h"; });
+}
+
+int runHelp(const Words& words, std::ostream& out) {
+    if (words.empty()) {
+        out << helpText();
+        return 0;
+    }
+    const std::optional<std::string> usage = commandHelp(words.front());
+    if (!usage)
+        throw InputError("help: unknown command '" + words.front() +
+                         "' (commands: help, slice, connect, layers, settings, demo, orient)");
+    out << *usage;
+    return 0;
+}
+
+}  // namespace
 
 int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
     Words words(argv + 1, argv + argc);
@@ -14,8 +37,11 @@ int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
     }
     const std::string command = words.front();
     words.erase(words.begin());
-    if (command == "help" || command == "--help" || command == "-h") {
-        out << helpText();
+    if (command == "help" || command == "--help" || command == "-h")
+        return runHelp(words, out);
+    // `<command> --help` anywhere on the line: the command's usage, nothing run, nothing written
+    if (const std::optional<std::string> usage = commandHelp(command); usage && asksForHelp(words)) {
+        out << *usage;
         return 0;
     }
     if (command == "slice")

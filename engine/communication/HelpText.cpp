@@ -1,15 +1,21 @@
 #include "communication/HelpText.h"
 
+#include <array>
+#include <utility>
+
 namespace mixengine {
+namespace {
 
-std::string_view helpText() {
-    return R"(MixEngine — a CuraEngine 4.13 compatible slicer for mixing-chamber and dual-nozzle printers.
+constexpr std::string_view kIntro =
+    "MixEngine — a CuraEngine 4.13 compatible slicer for mixing-chamber and dual-nozzle "
+    "printers.\n\nusage:\n";
 
-usage:
-mixengine help
-	Show this help message.
+constexpr std::string_view kHelp = R"(mixengine help [<command>]
+	Show this help message, or the usage of one command (as `mixengine <command> --help`).
+)";
 
-mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<value>] [-g] [-e<N>] [-l <model>] [--next] [-o <output.gcode>]
+constexpr std::string_view kSlice =
+    R"(mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<value>] [-g] [-e<N>] [-l <model>] [--next] [-o <output.gcode>]
   -v            Increase the verbose level (log messages to stderr; -vv for debug).
   -p            Log progress information.
   -m<threads>   Number of threads (default: all cores).
@@ -36,25 +42,43 @@ mixengine slice [-v] [-p] [-m<threads>] [-j <definition.def.json>] [-s <key>=<va
                 ("AA 0.4,BB 0.4"); an unknown name lists the available ones.
                 Without these the definitions alone apply (as CuraEngine's command line does),
                 but their `value` formulas are always evaluated, so derived settings follow.
+  --help, -h    Show this usage.
 
-mixengine connect <host>[:<port>] [-v] [-m<threads>]
+	Settings are appended to the last supplied object:
+	mixengine slice [general settings]
+		-g [current group settings]
+		-e0 [extruder train 0 settings]
+		-l obj_inheriting_from_last_extruder_train.stl [object settings]
+		--next [next group settings]
+		... etc.
+)";
+
+constexpr std::string_view kConnect = R"(mixengine connect <host>[:<port>] [-v] [-m<threads>]
 	Cura's engine mode: connect to Cura's socket (Arcus protocol, port 49674 by default), wait
 	for one Slice message, slice it with the settings Cura sends, stream back the G-code layer by
 	layer, the layer preview, the header and the print time / material estimates, then exit 0.
 	Cura starts it as `mixengine connect 127.0.0.1:<port> ""`; other flags are ignored with a
 	warning, as CuraEngine does. SIGTERM (Cura cancelling a slice) ends it at once.
+)";
 
-mixengine layers <slice arguments> -o <dir>
+constexpr std::string_view kLayers = R"(mixengine layers <slice arguments> -o <dir>
 	Slice only, and write <dir>/layers.json (outlines in mm, area per layer) and one SVG per
 	layer (<dir>/layer_00000.svg ...), in the model's own frame, to look at the slices.
+	Takes the options of `mixengine slice` (-j, -s, -e<N>, -l, --profiles, ...).
+)";
 
-mixengine settings [-j <definition>] [--profiles ...] [-s key=value] [-e<N>] [--json]
-	Print the resolved global and per-extruder setting values.
+constexpr std::string_view kSettings =
+    R"(mixengine settings [-j <definition>] [--profiles ...] [-s key=value] [-e<N>] [--json]
+	Print the resolved global and per-extruder setting values (--json: as one JSON document).
+)";
 
-mixengine demo [<dir>]
-	Generate a 20 mm cube in <dir> (default: out), slice it, print where the G-code went.
+constexpr std::string_view kDemo = R"(mixengine demo [<dir>]
+	Generate a 20 mm cube in <dir> (default: out), slice it with a colour gradient (filament A up
+	to 20 % of the height, B from 80 %), print where the G-code and its preview picture went.
+)";
 
-mixengine orient <partA> <partB> [--offset X,Y] [-j <definition>] [-s key=value] [--method sphere|grid]
+constexpr std::string_view kOrient =
+    R"(mixengine orient <partA> <partB> [--offset X,Y] [-j <definition>] [-s key=value] [--method sphere|grid]
                  [--measure own_part|all_material] [--objective flat_face|low_height|low_overhang]
                  [--resolution N] [--verify N] [--grid-step DEG] [-m<threads>]
                  [--report out.json] [--plot out.png] [--write DIR]
@@ -63,17 +87,38 @@ mixengine orient <partA> <partB> [--offset X,Y] [-j <definition>] [-s key=value]
 	(--offset, or machine_nozzle_offset_x/y of -j's extruder trains). Prints latitude, longitude,
 	spin about d, the matrix, V before/after (exact, CGAL) and the time. One part: nothing to
 	optimise (exit 0). In `slice`, -s dual_orientation_optimize=true runs the same pass.
-
-Settings are appended to the last supplied object:
-mixengine slice [general settings]
-	-g [current group settings]
-	-e0 [extruder train 0 settings]
-	-l obj_inheriting_from_last_extruder_train.stl [object settings]
-	--next [next group settings]
-	... etc.
-
-Exit codes: 0 success, 1 bad input (one line on stderr names the file, key or value), 2 internal error.
 )";
+
+constexpr std::string_view kExitCodes =
+    "Exit codes: 0 success, 1 bad input (one line on stderr names the file, key or value), 2 internal "
+    "error.\n";
+
+constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kCommands{{{"help", kHelp},
+                                                                                  {"slice", kSlice},
+                                                                                  {"connect", kConnect},
+                                                                                  {"layers", kLayers},
+                                                                                  {"settings", kSettings},
+                                                                                  {"demo", kDemo},
+                                                                                  {"orient", kOrient}}};
+
+}  // namespace
+
+std::string helpText() {
+    std::string text(kIntro);
+    for (const auto& [name, usage] : kCommands) {
+        text += usage;
+        text += '\n';
+    }
+    text += kExitCodes;
+    return text;
+}
+
+std::optional<std::string> commandHelp(std::string_view command) {
+    for (const auto& [name, usage] : kCommands) {
+        if (name == command)
+            return "usage:\n" + std::string(usage) + '\n' + std::string(kExitCodes);
+    }
+    return std::nullopt;
 }
 
 }  // namespace mixengine

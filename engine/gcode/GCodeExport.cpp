@@ -14,10 +14,11 @@ GCodeExport::GCodeExport(const ExportParams& params)
       time_(params.kinematics),
       motion_(params.motion_flavor) {}
 
-void GCodeExport::timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s) {
+void GCodeExport::timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s,
+                           TimeFeature feature) {
     time_.addMove(
         {micronsToMm(to.X - position_.X), micronsToMm(to.Y - position_.Y), micronsToMm(z - z_), e_mm},
-        speed_mm_s);
+        speed_mm_s, feature);
 }
 
 std::string GCodeExport::xyWords(const Point2& to) const {
@@ -86,14 +87,14 @@ void GCodeExport::travel(const Point2& to, double speed_mm_s) {
     if (to == position_)
         return;
     line("G0" + feedrateWord(speed_mm_s) + xyWords(to));
-    timeMove(to, z_, 0, speed_mm_s);
+    timeMove(to, z_, 0, speed_mm_s, moveFeature());
     position_ = to;
 }
 
 void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
     if (z == z_)
         return;
-    timeMove(position_, z, 0, speed_mm_s);
+    timeMove(position_, z, 0, speed_mm_s, moveFeature());
     line("G0" + feedrateWord(speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z)));
     z_ = z;
 }
@@ -106,7 +107,7 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
     const std::string words = dialect_->extrude(e, mix_, before);
     out_ += before;
     line("G1" + feedrateWord(speed_mm_s) + xyWords(to) + " " + words);
-    timeMove(to, z_, e, speed_mm_s);
+    timeMove(to, z_, e, speed_mm_s, extrusion_feature_);
     position_ = to;
 }
 
@@ -120,7 +121,8 @@ void GCodeExport::retract() {
         const std::string words = dialect_->retract(retractionOnAxis(), before);
         out_ += before;
         line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + words);
-        timeMove(position_, z_, -params_.retraction_amount_mm, params_.retraction_speed_mm_s);
+        timeMove(position_, z_, -params_.retraction_amount_mm, params_.retraction_speed_mm_s,
+                 TimeFeature::Retraction);
     }
     retracted_ = true;
     if (params_.retraction_hop_um > 0)
@@ -139,7 +141,8 @@ void GCodeExport::unretract() {
         const std::string words = dialect_->prime(retractionOnAxis(), before);
         out_ += before;
         line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + words);
-        timeMove(position_, z_, params_.retraction_amount_mm, params_.prime_speed_mm_s);
+        timeMove(position_, z_, params_.retraction_amount_mm, params_.prime_speed_mm_s,
+                 TimeFeature::Retraction);
     }
     retracted_ = false;
 }

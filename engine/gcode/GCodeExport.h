@@ -60,10 +60,14 @@ class GCodeExport {
     void selectExtruder(const ToolChange& change);
     /// Plans buffered moves to a stop (at layer ends) so the time read next is final.
     void flushTime() { time_.flush(); }
+    /// What the following extrusions print, for the time per feature (travel, retractions and
+    /// primes are booked by the writer itself: Travel, or Retraction while retracted).
+    void setTimeFeature(TimeFeature feature) { extrusion_feature_ = feature; }
 
     const std::string& text() const { return out_; }
     std::string takeText() { return std::move(out_); }
     double elapsedSeconds() const { return time_.totalSeconds(); }
+    FeatureSeconds secondsByFeature() const { return time_.secondsByFeature(); }
     double filamentUsedMm() const { return dialect_->totalExtruded(); }  ///< length, or mm³ when volumetric
     /// Per mixing channel (one entry in single mode), length or mm³ when volumetric.
     std::vector<double> filamentPerChannel() const { return dialect_->channelTotals(); }
@@ -77,7 +81,8 @@ class GCodeExport {
     std::string feedrateWord(double speed_mm_s);
     double volumeToAxisMm(double volume_mm3) const;
     double retractionOnAxis() const;  ///< the retraction in the axis unit (mm, or mm³ when volumetric)
-    void timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s);
+    void timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s, TimeFeature feature);
+    TimeFeature moveFeature() const { return retracted_ ? TimeFeature::Retraction : TimeFeature::Travel; }
     std::string xyWords(const Point2& to) const;  ///< " X.. Y..", relative to the active nozzle
     void noteFilamentOfActiveExtruder();
 
@@ -89,6 +94,7 @@ class GCodeExport {
     coord_um z_ = 0;
     double feedrate_mm_s_ = -1;
     TimeEstimate time_;
+    TimeFeature extrusion_feature_ = TimeFeature::None;
     int extruder_ = 0;
     Point2 offset_{0, 0};
     std::vector<double> filament_by_extruder_;

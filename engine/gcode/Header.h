@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "gcode/TimeEstimate.h"
 #include "geometry/Point.h"
 
 namespace mixengine {
@@ -27,6 +28,7 @@ struct ExtruderHeader {
 struct PrintSummary {
     Flavor flavor = Flavor::Marlin;
     double print_time_s = 0;
+    FeatureSeconds time_by_feature_s{};         ///< print_time_s split by feature (CuraEngine's buckets)
     std::vector<double> filament_per_extruder;  ///< mm of filament (mm³ when volumetric)
     double layer_height_mm = 0.1;
     Point3 min{}, max{};  ///< bounds of the extruded moves, microns

@@ -43,6 +43,29 @@ void changeExtruder(int extruder, const PlanWriterParams& params, GCodeExport& g
     }
 }
 
+/// CuraEngine 4.13's time bucket of a feature (support infill is PrintFeatureType::Support there).
+TimeFeature timeFeature(Feature feature) {
+    switch (feature) {
+        case Feature::WallOuter:
+            return TimeFeature::OuterWall;
+        case Feature::WallInner:
+            return TimeFeature::InnerWall;
+        case Feature::Skin:
+            return TimeFeature::Skin;
+        case Feature::Fill:
+            return TimeFeature::Infill;
+        case Feature::Support:
+            return TimeFeature::Support;
+        case Feature::SupportInterface:
+            return TimeFeature::SupportInterface;
+        case Feature::Skirt:
+            return TimeFeature::SkirtBrim;
+        case Feature::PrimeTower:
+            return TimeFeature::PrimeTower;
+    }
+    return TimeFeature::None;
+}
+
 void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterParams& params,
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
@@ -61,6 +84,7 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             break;
         case PlanStep::Kind::SetFeature:
             gcode.comment("TYPE:" + std::string(featureMarker(step.feature)));
+            gcode.setTimeFeature(timeFeature(step.feature));
             break;
         case PlanStep::Kind::SetMesh:
             gcode.comment("MESH:" + (step.mesh_index < 0

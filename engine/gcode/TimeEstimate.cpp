@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace mixengine {
 
@@ -24,13 +25,14 @@ double trapezoidSeconds(double distance, double entry, double nominal, double ex
     return (peak - entry) / accel + (peak - exit) / accel;
 }
 
-void TimeEstimate::addMove(const std::array<double, 4>& delta, double feedrate) {
+void TimeEstimate::addMove(const std::array<double, 4>& delta, double feedrate, TimeFeature feature) {
     const double xyz = std::sqrt(delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2]);
     const double distance = xyz > 0 ? xyz : std::fabs(delta[3]);
     if (distance <= 0 || feedrate <= 0)
         return;
     Block block;
     block.distance_mm = distance;
+    block.feature = feature;
     double nominal = std::max(feedrate, k_.minimum_feedrate_mm_s);
     double accel = k_.acceleration_mm_s2;
     for (int axis = 0; axis < 4; ++axis) {
@@ -66,7 +68,7 @@ double TimeEstimate::junctionSpeed(const Block& previous, const Block& next) con
     return v;
 }
 
-double TimeEstimate::plannedSeconds(std::vector<Block>& blocks) const {
+void TimeEstimate::plan(std::vector<Block>& blocks, FeatureSeconds& into) const {
     // Backward pass: each block must be able to decelerate to the next block's entry speed.
     double next_entry = 0;  // at rest after the last block
     for (std::size_t i = blocks.size(); i-- > 0;) {
@@ -77,7 +79,6 @@ double TimeEstimate::plannedSeconds(std::vector<Block>& blocks) const {
         next_entry = b.entry_mm_s;
     }
     // Forward pass: each block's exit is limited by what it can accelerate to.
-    double seconds = 0;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         Block& b = blocks[i];
         double exit = i + 1 < blocks.size() ? blocks[i + 1].entry_mm_s : 0;
@@ -86,24 +87,31 @@ double TimeEstimate::plannedSeconds(std::vector<Block>& blocks) const {
         exit = std::min(exit, reachable);
         if (i + 1 < blocks.size())
             blocks[i + 1].entry_mm_s = exit;
-        seconds += trapezoidSeconds(b.distance_mm, b.entry_mm_s, b.nominal_mm_s, exit, b.acceleration_mm_s2);
+        into[static_cast<std::size_t>(b.feature)] +=
+            trapezoidSeconds(b.distance_mm, b.entry_mm_s, b.nominal_mm_s, exit, b.acceleration_mm_s2);
     }
-    return seconds;
 }
 
 void TimeEstimate::addDelay(double seconds) {
     flush();
-    done_s_ += std::max(seconds, 0.0);
+    done_s_[static_cast<std::size_t>(TimeFeature::None)] += std::max(seconds, 0.0);
 }
 
 void TimeEstimate::flush() {
-    done_s_ += plannedSeconds(blocks_);
+    plan(blocks_, done_s_);
     blocks_.clear();
 }
 
-double TimeEstimate::totalSeconds() const {
+FeatureSeconds TimeEstimate::secondsByFeature() const {
+    FeatureSeconds seconds = done_s_;
     std::vector<Block> copy = blocks_;
-    return done_s_ + plannedSeconds(copy);
+    plan(copy, seconds);
+    return seconds;
+}
+
+double TimeEstimate::totalSeconds() const {
+    const FeatureSeconds seconds = secondsByFeature();
+    return std::accumulate(seconds.begin(), seconds.end(), 0.0);
 }
 
 }  // namespace mixengine

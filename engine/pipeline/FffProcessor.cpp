@@ -138,6 +138,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     const bool relative = relativeExtrusion(global);
     output.summary.flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
     output.summary.print_time_s = gcode.elapsedSeconds();
+    output.summary.time_by_feature_s = gcode.secondsByFeature();
     output.summary.filament_per_extruder = gcode.filamentPerExtruder();
     output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
     describeExtruders(scene, exportParams(scene).volumetric, output.summary);

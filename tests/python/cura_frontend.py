@@ -11,10 +11,10 @@ Run it with /usr/bin/python3 (the Arcus binding is built for Debian's Python):
 Job: {"engine": path, "global": {key: text}, "extruders": {"0": {key: text}},
       "limit_to_extruder": [[key, n]], "groups": [{"settings": {}, "objects":
       [{"name": str, "stl": path (binary STL), "settings": {key: text}}]}],
-      "timeout": s, "send_slice": true, "terminate_after_s": null}
+      "timeout": s, "send_slice": true, "terminate_after_s": null, "raw_layers": false}
 Result: {"gcode_list": [prefix, chunk, ...] (as Cura holds it), "counts": {type: n},
          "progress": [...], "layers": [{id, height, thickness, segments: [{extruder, types}]}],
-         "estimates": {...}, "exit_code": n, "stderr": text, "states": [...], "errors": [...]}
+         "estimates": {time_* fields, "materials"}, "exit_code": n, "stderr": text, "states": [...], "errors": [...]}
 Standard library + Arcus only.
 """
 import json
@@ -99,7 +99,9 @@ def build_slice(sock, job):
     return msg
 
 
-def segment_summary(layer):
+def segment_summary(layer, raw=False):
+    """Per path segment: extruder, the line types present, counts; raw: also every line type and point
+    (x, y) in mm, as Cura's ProcessSlicedLayersJob reads them."""
     segments = []
     for i in range(layer.repeatedMessageCount("path_segment")):
         seg = layer.getRepeatedMessage("path_segment", i)
@@ -108,10 +110,17 @@ def segment_summary(layer):
         segments.append({"extruder": seg.extruder, "types": sorted(set(types)), "lines": len(types),
                          "points": len(points) // 2,
                          "widths": len(seg.line_width) // 4, "feedrates": len(seg.line_feedrate) // 4})
+        if raw:
+            segments[-1].update(line_types=list(types), xy=[list(points[k:k + 2]) for k in range(0, len(points), 2)])
     return segments
 
 
-def record(message, result):
+TIME_FIELDS = ("time_none", "time_inset_0", "time_inset_x", "time_skin", "time_support", "time_skirt",
+               "time_infill", "time_support_infill", "time_travel", "time_retract", "time_support_interface",
+               "time_prime_tower")
+
+
+def record(message, result, raw=False):
     name = message.getTypeName()
     result["counts"][name] = result["counts"].get(name, 0) + 1
     if name == "cura.proto.GCodeLayer":
@@ -122,9 +131,9 @@ def record(message, result):
         result["progress"].append(message.amount)
     elif name == "cura.proto.LayerOptimized":
         result["layers"].append({"id": message.id, "height": message.height, "thickness": message.thickness,
-                                 "segments": segment_summary(message)})
+                                 "segments": segment_summary(message, raw)})
     elif name == "cura.proto.PrintTimeMaterialEstimates":
-        est = {f: getattr(message, f) for f in ("time_none", "time_inset_0", "time_infill", "time_travel")}
+        est = {f: getattr(message, f) for f in TIME_FIELDS}
         est["materials"] = [message.getRepeatedMessage("materialEstimates", i).material_amount
                             for i in range(message.repeatedMessageCount("materialEstimates"))]
         result["estimates"] = est
@@ -157,7 +166,7 @@ def run(job):
     while time.monotonic() < deadline:
         message = listener.take(sock)
         if message is not None:
-            record(message, result)
+            record(message, result, job.get("raw_layers", False))
             finished = finished or message.getTypeName() == "cura.proto.SlicingFinished"
             continue
         if terminate_at is not None and time.monotonic() >= terminate_at:
@@ -173,7 +182,7 @@ def run(job):
         message = listener.take(sock)
         if message is None:
             break
-        record(message, result)
+        record(message, result, job.get("raw_layers", False))
     try:
         result["exit_code"] = engine.wait(timeout=max(1.0, deadline - time.monotonic()))
     except subprocess.TimeoutExpired:

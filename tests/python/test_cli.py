@@ -139,3 +139,39 @@ def test_not_honoured_settings_are_named_once_each(engine, corpus, tmp_path):
     assert proc.returncode == 0 and "has no effect in MixEngine yet" not in proc.stderr, proc.stderr
     proc = helpers.mixengine("slice", "-j", "creality_ender3", "-l", cube, "-o", out)
     assert proc.returncode == 0 and "has no effect in MixEngine yet" not in proc.stderr, proc.stderr
+
+
+HELP_COMMANDS = {  # command -> words its usage must show (its own options, nothing of the others)
+    "slice": ["mixengine slice", "-j <file|id>", "--preview", "--next"],
+    "layers": ["mixengine layers", "layers.json"],
+    "settings": ["mixengine settings", "--json"],
+    "orient": ["mixengine orient", "--offset", "--report"],
+    "connect": ["mixengine connect", "<host>[:<port>]"],
+    "demo": ["mixengine demo", "[<dir>]"],
+}
+
+
+@pytest.mark.parametrize("command", sorted(HELP_COMMANDS))
+@pytest.mark.parametrize("flag", ["--help", "-h"])
+def test_command_help_prints_its_usage_and_exits_0(engine, tmp_path, command, flag):
+    # run in an empty folder: --help must not slice, connect or write anything (demo used to create ./--help)
+    proc = helpers.run([engine, command, flag], cwd=tmp_path, timeout=30)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stderr == ""
+    usage = proc.stdout
+    assert usage.startswith("usage:\n")
+    for word in HELP_COMMANDS[command]:
+        assert word in usage, (command, word)
+    for other in set(HELP_COMMANDS) - {command}:
+        assert f"mixengine {other} " not in usage and f"mixengine {other}\n" not in usage, (command, other)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_help_after_other_options_and_help_command_forms(engine, tmp_path):
+    late = helpers.run([engine, "slice", "-j", "creality_ender3", "-s", "layer_height=0.2", "--help"], cwd=tmp_path)
+    named = helpers.run([engine, "help", "slice"], cwd=tmp_path)
+    assert late.returncode == named.returncode == 0
+    assert late.stdout == named.stdout and "mixengine slice" in late.stdout
+    assert list(tmp_path.iterdir()) == []
+    unknown = helpers.mixengine("help", "frobnicate")
+    assert_one_line_error(unknown, "frobnicate")

@@ -230,6 +230,8 @@ def test_package_layout(package):
     assert info["package_version"] == version == plugin["version"]
     assert plugin["api"] == 7 and plugin["supported_sdk_versions"] == ["7.9.0"]
     for name in ("__init__.py", "MixEngineExtension.py", "SettingsInjector.py", "OrientAction.py",
+                 "MixPreview.py", "MixGCode.py", "MixColours.py", "LayerRecolour.py", "qml/MixLegend.qml",
+                 "NotHonoured.py", "SettingsNotice.py", "settings/mixengine/not_honoured.json",
                  "settings/mixengine/mixing.def.json", "settings/mixengine/orientation.def.json",
                  "settings/definitions/mixengine_makerpi_m2030x.def.json",
                  "settings/extruders/mixengine_makerpi_m2030x_extruder_0.def.json"):

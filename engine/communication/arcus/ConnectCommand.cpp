@@ -87,7 +87,7 @@ void sliceAndReply(const cura::proto::Slice& slice, int threads, ArcusSession& s
 int runConnectCommand(const Words& words, std::ostream& out, std::ostream& err) {
     const ConnectArgs args = parseConnectArguments(words);
     if (args.help) {
-        out << helpText();
+        out << commandHelp("connect").value_or("");
         return 0;
     }
     Log log(err, args.verbosity);

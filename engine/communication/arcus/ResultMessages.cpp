@@ -5,6 +5,27 @@
 #include "Cura.pb.h"
 
 namespace mixengine {
+namespace {
+
+void setFeatureTimes(const FeatureSeconds& s, cura::proto::PrintTimeMaterialEstimates& message) {
+    const auto at = [&s](TimeFeature feature) {
+        return static_cast<float>(s[static_cast<std::size_t>(feature)]);
+    };
+    message.set_time_none(at(TimeFeature::None));
+    message.set_time_inset_0(at(TimeFeature::OuterWall));
+    message.set_time_inset_x(at(TimeFeature::InnerWall));
+    message.set_time_skin(at(TimeFeature::Skin));
+    message.set_time_support(at(TimeFeature::Support));
+    message.set_time_skirt(at(TimeFeature::SkirtBrim));
+    message.set_time_infill(at(TimeFeature::Infill));
+    message.set_time_support_infill(at(TimeFeature::SupportInfill));
+    message.set_time_travel(at(TimeFeature::Travel));
+    message.set_time_retract(at(TimeFeature::Retraction));
+    message.set_time_support_interface(at(TimeFeature::SupportInterface));
+    message.set_time_prime_tower(at(TimeFeature::PrimeTower));
+}
+
+}  // namespace
 
 Arcus::MessagePtr progressMessage(double amount) {
     auto message = std::make_shared<cura::proto::Progress>();
@@ -31,7 +52,7 @@ Arcus::MessagePtr slicingFinishedMessage() {
 Arcus::MessagePtr estimatesMessage(const PrintSummary& summary,
                                    const std::vector<double>& filament_diameters_mm, bool volumetric) {
     auto message = std::make_shared<cura::proto::PrintTimeMaterialEstimates>();
-    message->set_time_none(static_cast<float>(summary.print_time_s));
+    setFeatureTimes(summary.time_by_feature_s, *message);
     for (std::size_t i = 0; i < filament_diameters_mm.size(); ++i) {
         const double amount =
             i < summary.filament_per_extruder.size() ? summary.filament_per_extruder[i] : 0.0;

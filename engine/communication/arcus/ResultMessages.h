@@ -18,8 +18,8 @@ Arcus::MessagePtr gcodePrefixMessage(const std::string& header);
 Arcus::MessagePtr slicingFinishedMessage();
 
 /// `summary.filament_per_extruder` is filament length in mm (volume in mm³ when `volumetric`);
-/// `filament_diameters_mm` has one entry per train. The print time is reported as one total
-/// (Cura sums the per-feature fields).
+/// `filament_diameters_mm` has one entry per train. The print time goes into the 12 time_* fields
+/// by feature, as CuraEngine books it (summary.time_by_feature_s); Cura shows their sum as the total.
 Arcus::MessagePtr estimatesMessage(const PrintSummary& summary,
                                    const std::vector<double>& filament_diameters_mm, bool volumetric);
 

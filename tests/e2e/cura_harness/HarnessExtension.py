@@ -274,11 +274,50 @@ class HarnessExtension(Extension):
 
     def _screenshotAndClose(self):
         if self._job.get("screenshot"):
-            try:
-                QGuiApplication.primaryScreen().grabWindow(0).save(self._job["screenshot"])
-                self._event("screenshot_saved")
-            except Exception as e:
-                self._error("screenshot failed: %r" % e)
+            self._grab(self._job["screenshot"], "screenshot_saved")
+        pending = list(self._job.get("screenshots") or [])
+        if pending:
+            self._nextScreenshot(pending)
+            return
+        self._close()
+
+    def _grab(self, path, event):
+        try:
+            QGuiApplication.primaryScreen().grabWindow(0).save(path)
+            self._event(event)
+        except Exception as e:
+            self._error("screenshot failed: %r" % e)
+
+    def _nextScreenshot(self, pending):
+        """job["screenshots"]: [{"path", "layer_view_type", "layer"}] one after another: the Preview's colour
+        scheme (0 Material Color, 1 Line Type, ...) and the layer slider (null: the top) are set first,
+        the screen is grabbed 2.5 s later (delay_ms)."""
+        if not pending:
+            self._close()
+            return
+        shot = pending.pop(0)
+        if "layer_view_type" in shot:
+            self._app.getPreferences().setValue("layerview/layer_view_type", int(shot["layer_view_type"]))
+        view = self._app.getController().getActiveView()
+        if "layer" in shot and hasattr(view, "setLayer"):  # the layer slider's upper handle
+            view.setLayer(int(shot["layer"]) if shot["layer"] is not None else view.getMaxLayers())
+
+        def grab():
+            self._grab(shot["path"], "screenshot_%s" % os.path.basename(shot["path"]))
+            self._nextScreenshot(pending)
+
+        QTimer.singleShot(int(shot.get("delay_ms", 2500)), grab)
+
+    def _close(self):
+        try:  # what Cura's print information shows: the time per feature (from PrintTimeMaterialEstimates)
+            info = self._app.getPrintInformation()
+            self._status["print_times_per_feature"] = {k: int(v) for k, v in info.getFeaturePrintTimes().items()}
+            self._status["print_time_s"] = int(info.currentPrintTime)
+        except Exception as e:
+            self._error("print information: %r" % e)
+        if self._job.get("plugin_status"):
+            plugin = HarnessSteps.pluginObject(self._job["plugin_status"])
+            self._status["plugin_status_end"] = plugin.status() if hasattr(plugin, "status") else None
         self._status["visible_messages"] = [m.getText() for m in self._app.getVisibleMessages()]
         if self._job.get("status"):
             self._writeJson(self._job["status"], self._status)

@@ -157,7 +157,31 @@ TEST(ResultMessages, MaterialIsSentInCubicMillimetresPerExtruder) {
     ASSERT_EQ(estimates.materialestimates_size(), 2);
     EXPECT_NEAR(estimates.materialestimates(0).material_amount(), 1000.0 * 3.14159265 * 0.875 * 0.875, 0.01);
     EXPECT_EQ(estimates.materialestimates(1).material_amount(), 0.0F);
-    EXPECT_FLOAT_EQ(estimates.time_none(), 100.0F);
+}
+
+TEST(ResultMessages, PrintTimeGoesIntoTheFeatureFieldsAsCuraEngineBooksIt) {
+    PrintSummary summary;
+    summary.print_time_s = 78;
+    for (std::size_t i = 0; i < kTimeFeatureCount; ++i)
+        summary.time_by_feature_s[i] = static_cast<double>(i + 1);  // 1 + 2 + ... + 12 = 78
+    const auto message = estimatesMessage(summary, {1.75}, false);
+    const auto& e = dynamic_cast<const cura::proto::PrintTimeMaterialEstimates&>(*message);
+    EXPECT_FLOAT_EQ(e.time_none(), 1.0F);
+    EXPECT_FLOAT_EQ(e.time_inset_0(), 2.0F);
+    EXPECT_FLOAT_EQ(e.time_inset_x(), 3.0F);
+    EXPECT_FLOAT_EQ(e.time_skin(), 4.0F);
+    EXPECT_FLOAT_EQ(e.time_support(), 5.0F);
+    EXPECT_FLOAT_EQ(e.time_skirt(), 6.0F);
+    EXPECT_FLOAT_EQ(e.time_infill(), 7.0F);
+    EXPECT_FLOAT_EQ(e.time_support_infill(), 8.0F);
+    EXPECT_FLOAT_EQ(e.time_travel(), 9.0F);
+    EXPECT_FLOAT_EQ(e.time_retract(), 10.0F);
+    EXPECT_FLOAT_EQ(e.time_support_interface(), 11.0F);
+    EXPECT_FLOAT_EQ(e.time_prime_tower(), 12.0F);
+    const float sum = e.time_none() + e.time_inset_0() + e.time_inset_x() + e.time_skin() + e.time_support() +
+                      e.time_skirt() + e.time_infill() + e.time_support_infill() + e.time_travel() +
+                      e.time_retract() + e.time_support_interface() + e.time_prime_tower();
+    EXPECT_FLOAT_EQ(sum, static_cast<float>(summary.print_time_s));
 }
 
 }  // namespace

@@ -151,6 +151,31 @@ TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
     EXPECT_EQ(g.text(), "");
 }
 
+// Each move's time goes to what it prints (CuraEngine's PrintFeatureType buckets): extrusions to the
+// feature set last, travel to Travel, retractions, primes and travel while retracted to Retraction.
+TEST(GCodeExport, TimeIsBookedByFeature) {
+    ExportParams p = marlin175();
+    p.kinematics.acceleration_mm_s2 = 1e12;
+    p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
+    p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;
+    GCodeExport g(p);
+    g.travel({30'000, 40'000}, 50);  // 1 s of travel
+    g.setTimeFeature(TimeFeature::OuterWall);
+    g.extrude({30'000, 0}, 1.0, 20);  // 2 s of outer wall
+    g.retract();                      // 0.26 s
+    g.travel({0, 0}, 30);             // 1 s, retracted
+    g.setTimeFeature(TimeFeature::Infill);
+    g.extrude({0, 10'000}, 0.5, 10);  // prime 0.26 s, then 1 s of infill
+    const FeatureSeconds s = g.secondsByFeature();
+    const auto at = [&s](TimeFeature f) { return s[static_cast<std::size_t>(f)]; };
+    EXPECT_NEAR(at(TimeFeature::Travel), 1.0, 1e-6);
+    EXPECT_NEAR(at(TimeFeature::OuterWall), 2.0, 1e-6);
+    EXPECT_NEAR(at(TimeFeature::Retraction), 0.26 + 1.0 + 0.26, 1e-6);
+    EXPECT_NEAR(at(TimeFeature::Infill), 1.0, 1e-6);
+    EXPECT_NEAR(at(TimeFeature::None), 0.0, 1e-12);
+    EXPECT_NEAR(g.elapsedSeconds(), 5.52, 1e-6);
+}
+
 // CuraEngine 4.13 writes the fan as `PrecisionedDouble{1, percent * 255 / 100}`: 50 % → "M106 S127.5"
 // (checked with /usr/bin/CuraEngine, cool_fan_speed_min=50). BUG (engine/gcode/GCodeExport.cpp,
 // setFan(): `std::lround(ratio * 255)`) writes "M106 S128".

@@ -69,5 +69,33 @@ TEST(TimeEstimate, FlushAndDelayAdd) {
     EXPECT_NEAR(t.totalSeconds(), 5.5, 1e-6);
 }
 
+TEST(TimeEstimate, EachMoveIsBookedToItsFeatureAndTheFeaturesAddUpToTheTotal) {
+    // Two moves at rest junctions (E-only retraction between them): each is its own trapezoid.
+    Kinematics k = kinematics(1000, 20);
+    TimeEstimate t(k);
+    t.addMove({100, 0, 0, 0}, 100, TimeFeature::OuterWall);
+    t.addMove({0, 0, 0, -5}, 25, TimeFeature::Retraction);
+    t.addMove({0, 30, 0, 0}, 150, TimeFeature::Travel);
+    t.addDelay(2.5);
+    const FeatureSeconds s = t.secondsByFeature();
+    EXPECT_GT(s[static_cast<std::size_t>(TimeFeature::OuterWall)], 1.0);    // 100 mm at ≤ 100 mm/s
+    EXPECT_GT(s[static_cast<std::size_t>(TimeFeature::Retraction)], 0.2);   // 5 mm at ≤ 25 mm/s
+    EXPECT_GT(s[static_cast<std::size_t>(TimeFeature::Travel)], 0.2);       // 30 mm at ≤ 150 mm/s
+    EXPECT_DOUBLE_EQ(s[static_cast<std::size_t>(TimeFeature::None)], 2.5);  // the delay
+    EXPECT_DOUBLE_EQ(s[static_cast<std::size_t>(TimeFeature::Infill)], 0.0);
+    double sum = 0;
+    for (double seconds : s)
+        sum += seconds;
+    EXPECT_NEAR(sum, t.totalSeconds(), 1e-12);
+    // The same moves without tags: the same total, all of it None.
+    TimeEstimate untagged(k);
+    untagged.addMove({100, 0, 0, 0}, 100);
+    untagged.addMove({0, 0, 0, -5}, 25);
+    untagged.addMove({0, 30, 0, 0}, 150);
+    untagged.addDelay(2.5);
+    EXPECT_NEAR(untagged.totalSeconds(), t.totalSeconds(), 1e-12);
+    EXPECT_NEAR(untagged.secondsByFeature()[0], t.totalSeconds(), 1e-12);
+}
+
 }  // namespace
 }  // namespace mixengine
