@@ -50,6 +50,15 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     return planPrint(heights, toolpaths, group.settings, scene.machine.extruders, comb_areas, state);
 }
 
+MixingGroup mixingInput(const SceneGroup& group) {
+    MixingGroup input{&group.settings, {}};
+    for (const SceneMesh& m : group.meshes) {
+        const AABB3 box = m.mesh.bounds();
+        input.meshes.push_back({&m.settings, box.min.z, box.max.z});
+    }
+    return input;
+}
+
 /// "a.stl", "a.stl, b.stl", or "a.stl, b.stl and 3 more meshes" for messages.
 std::string meshNames(const Scene& scene) {
     std::vector<std::string> names;
@@ -112,7 +121,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         SlicedGroup sliced = sliceGroup(group, threads, log);
         log.progress("toolpaths", 0.3);
         PrintPlan plan = planGroup(scene, group, sliced, threads, state, log);
-        assignMixes(plan, group, log);
+        assignMixes(plan, mixingInput(group), log);
         if (on_plan)
             on_plan(plan);
         for (PlannedLayer& layer : plan.layers)
