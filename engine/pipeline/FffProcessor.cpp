@@ -5,7 +5,6 @@
 #include "gcode/StartEndCode.h"
 #include "mixing/MixingPass.h"
 #include "mixing/MixingSettings.h"
-#include "pipeline/EmptyLayers.h"
 #include "pipeline/OutputParams.h"
 #include "planning/PrintPlanner.h"
 #include "slicing/OutlineCleanup.h"
@@ -32,22 +31,12 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
         input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m]});
     }
-    GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
+    const GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
     for (const std::string& warning : toolpaths.warnings)
         log.warning(warning);
-    std::vector<Paths> comb_areas(sliced.heights.size());
-    for (const auto& mesh_layers : sliced.meshes) {
-        for (std::size_t i = 0; i < mesh_layers.size(); ++i)
-            comb_areas[i].insert(comb_areas[i].end(), mesh_layers[i].outlines.begin(),
-                                 mesh_layers[i].outlines.end());
-    }
-    std::vector<LayerZ> heights = sliced.heights;
-    const std::size_t empty = leadingEmptyLayers(toolpaths, sliced.meshes);
-    if (empty > 0) {
-        log.info("removing " + std::to_string(empty) + " empty layer(s) at the bottom of the print");
-        dropLeadingLayers(empty, toolpaths, heights, comb_areas);
-    }
-    return planPrint(heights, toolpaths, group.settings, scene.machine.extruders, comb_areas, state);
+    for (const std::string& note : toolpaths.notes)
+        log.info(note);
+    return planPrint(toolpaths, group.settings, scene.machine.extruders, state);
 }
 
 MixingGroup mixingInput(const SceneGroup& group) {
