@@ -95,7 +95,8 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
 
 GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan) {
     const Settings& global = scene.machine.global;
-    GCodeExport gcode(exportParams(scene));
+    const ExportParams export_params = exportParams(scene);
+    GCodeExport gcode(export_params);
     const PlanWriterParams writer = writerParams(scene);
     PlannerState state;
 
@@ -106,9 +107,9 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     for (const SceneGroup& group : scene.groups) {
         if (group.meshes.empty())
             continue;
-        log.progress("slicing", 0.0);
+        log.progress(ProgressStage::Slicing, 0.0);
         SlicedGroup sliced = sliceGroup(group, threads, log);
-        log.progress("toolpaths", 0.3);
+        log.progress(ProgressStage::Toolpaths, 0.3);
         PrintPlan plan = planGroup(scene, group, sliced, threads, state, log);
         assignMixes(plan, mixingInput(group), log);
         if (on_plan)
@@ -116,7 +117,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         for (PlannedLayer& layer : plan.layers)
             layer.index += layer_offset;
         layer_offset += static_cast<int>(plan.layers.size());
-        log.progress("gcode", 0.8);
+        log.progress(ProgressStage::GCode, 0.8);
         WrittenLayers written = writePlan(plan, writer, gcode);
         output.summary.min = {std::min(output.summary.min.x, written.min.x),
                               std::min(output.summary.min.y, written.min.y),
@@ -138,7 +139,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     output.summary.print_time_s = gcode.elapsedSeconds();
     output.summary.filament_per_extruder = gcode.filamentPerExtruder();
     output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
-    describeExtruders(scene, exportParams(scene).volumetric, output.summary);
+    describeExtruders(scene, export_params.volumetric, output.summary);
     output.summary.layer_height_mm = global.millimetres("layer_height");
     output.summary.engine_version = MIXENGINE_VERSION;
     output.header = makeHeader(output.summary);
@@ -147,7 +148,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         output.start += "G92 E0\n";
     output.start += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
     output.suffix = endCode(global, relative) + ";End of Gcode\n";
-    log.progress("done", 1.0);
+    log.progress(ProgressStage::Done, 1.0);
     return output;
 }
 
