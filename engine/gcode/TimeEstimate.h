@@ -26,7 +26,8 @@ class TimeEstimate {
   public:
     explicit TimeEstimate(const Kinematics& kinematics) : k_(kinematics) {}
 
-    /// A straight move by `delta` (X, Y, Z, E in mm) at the requested feedrate.
+    /// A straight move by `delta` (X, Y, Z in mm, E in mm of filament — also for volumetric
+    /// flavors, whose E words count mm³) at the requested feedrate.
     void addMove(const std::array<double, 4>& delta_mm, double feedrate_mm_s);
     /// The acceleration for the following moves (M204), limited as the firmware limits it.
     void setAcceleration(double acceleration_mm_s2) { k_.acceleration_mm_s2 = acceleration_mm_s2; }
