@@ -11,14 +11,15 @@ void Log::write(std::string_view prefix, std::string_view message) {
     out_ << prefix << message << '\n';
 }
 
-void Log::progress(std::string_view stage, double fraction) {
+void Log::progress(ProgressStage stage, double fraction) {
     if (!progress_ && !sink_)
         return;
     std::lock_guard lock(mutex_);
     if (sink_)
         sink_(stage, fraction);
     if (progress_)
-        out_ << "Progress: " << stage << ' ' << static_cast<int>(std::lround(fraction * 100.0)) << "%\n";
+        out_ << "Progress: " << progressStageName(stage) << ' '
+             << static_cast<int>(std::lround(fraction * 100.0)) << "%\n";
 }
 
 }  // namespace mixengine

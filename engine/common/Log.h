@@ -7,6 +7,8 @@
 #include <string_view>
 #include <utility>
 
+#include "common/ProgressStage.h"
+
 namespace mixengine {
 
 class Log {
@@ -22,12 +24,13 @@ class Log {
         if (verbosity_ >= 2)
             write("[debug] ", message);
     }
-    /// Progress of a long stage, 0..1; printed only when progress reporting is on (-p).
-    void progress(std::string_view stage, double fraction);
+    /// Progress of a stage, 0..1; printed ("Progress: slicing 42%") only when progress reporting
+    /// is on (-p).
+    void progress(ProgressStage stage, double fraction);
 
     /// Also hands every progress report to `sink` (e.g. Cura's socket), whether or not -p is on.
     /// The sink is called under the log's lock, so it sees one report at a time.
-    using ProgressSink = std::function<void(std::string_view stage, double fraction)>;
+    using ProgressSink = std::function<void(ProgressStage stage, double fraction)>;
     void setProgressSink(ProgressSink sink) { sink_ = std::move(sink); }
 
     void setVerbosity(int verbosity) { verbosity_ = verbosity; }

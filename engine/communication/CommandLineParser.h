@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "communication/SliceRequest.h"
+#include "pipeline/SliceRequest.h"
 
 namespace mixengine {
 

@@ -1,12 +1,10 @@
 // `mixengine layers <slice arguments> -o DIR`: slice only and write what a person or a script
 // wants to look at — DIR/layers.json and one SVG per layer (DIR/layer_00000.svg, ...).
 //
-// layers.json: {"meshes": [...], "layers": [{"index", "print_z_mm", "slice_z_mm", "area_mm2",
-//   "outlines": [[[x_mm, y_mm], ...], ...], "open_polylines": n}, ...]}, in the model's own frame
-// (machine_center_is_zero is forced on, so nothing is moved to the plate centre).
+// layers.json: slicing/SliceDump.h layersToJson, the meshes' outlines united per layer, in the
+// model's own frame (machine_center_is_zero is forced on, so nothing is moved to the plate centre).
 #include <cstdio>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 
 #include "common/Error.h"
 #include "common/Log.h"
@@ -38,24 +36,6 @@ std::vector<SlicedLayer> mergeMeshes(const SlicedGroup& sliced) {
     return merged;
 }
 
-nlohmann::json layerJson(const SlicedLayer& layer, std::size_t index) {
-    nlohmann::json outlines = nlohmann::json::array();
-    double area_um2 = 0;
-    for (const Path& path : layer.outlines) {
-        area_um2 += ClipperLib::Area(path);
-        nlohmann::json points = nlohmann::json::array();
-        for (const Point2& p : path)
-            points.push_back({micronsToMm(p.X), micronsToMm(p.Y)});
-        outlines.push_back(std::move(points));
-    }
-    return {{"index", index},
-            {"print_z_mm", micronsToMm(layer.print_z)},
-            {"slice_z_mm", micronsToMm(layer.slice_z)},
-            {"area_mm2", area_um2 / 1.0e6},
-            {"outlines", std::move(outlines)},
-            {"open_polylines", layer.open_polylines.size()}};
-}
-
 }  // namespace
 
 int runLayersCommand(const Words& args, std::ostream& out, std::ostream& err) {
@@ -73,20 +53,17 @@ int runLayersCommand(const Words& args, std::ostream& out, std::ostream& err) {
 
     const std::filesystem::path dir = request.output;
     std::filesystem::create_directories(dir);
-    nlohmann::json doc;
-    doc["meshes"] = nlohmann::json::array();
+    std::vector<std::string> mesh_names;
     for (const SceneMesh& mesh : group.meshes)
-        doc["meshes"].push_back(mesh.mesh.name);
-    doc["layers"] = nlohmann::json::array();
+        mesh_names.push_back(mesh.mesh.name);
     for (std::size_t i = 0; i < layers.size(); ++i) {
-        doc["layers"].push_back(layerJson(layers[i], i));
         char name[32];
         std::snprintf(name, sizeof name, "layer_%05zu.svg", i);
         SvgOptions svg;
         svg.caption = "layer " + std::to_string(i);
         writeFileAtomically(dir / name, layerToSvg(layers[i], svg));
     }
-    writeFileAtomically(dir / "layers.json", doc.dump());
+    writeFileAtomically(dir / "layers.json", layersToJson(layers, mesh_names));
     out << layers.size() << " layers written to " << std::filesystem::absolute(dir).string() << '\n';
     return 0;
 }

@@ -6,14 +6,16 @@
 // retraction — small enough that a 32-bit float in the firmware keeps 1e-4 mm resolution (seed 004).
 // Relative mode (M83): words carry the per-move delta. Both give the same total filament.
 //
-// Words are written with 5 decimals; a "unit" is that resolution (1e-5 mm, or mm³ when volumetric).
+// Amounts are in the axis unit: mm of filament, or mm³ of material when the flavor is volumetric
+// (RepRap (Volumetric), UltiGCode). Words are written with 5 decimals; a "unit" is that resolution,
+// 1e-5 of the axis unit.
 // moveUnits() is the integer view used by the mixing dialects (gcode/MixDialect.h): how far the
 // written value moves, which is exactly what a firmware sees between two words.
 #include <string>
 
 namespace mixengine {
 
-inline constexpr double kUnitsPerMm = 1e5;  ///< written resolution of extrusion words
+inline constexpr double kUnitsPerAxisUnit = 1e5;  ///< written resolution of extrusion words
 
 /// "12.34567" for 1234567 units (no letter).
 std::string formatUnits(long long units);
@@ -25,29 +27,30 @@ class ExtrusionAxis {
     char letter() const { return letter_; }
     bool relative() const { return relative_; }
 
-    /// Moves the axis by `delta_mm` and returns the word to write, e.g. "E12.34567".
-    std::string move(double delta_mm);
-    /// Moves the axis by `delta_mm` like move() but returns, instead of a word, how many units
+    /// Moves the axis by `delta` (axis unit) and returns the word to write, e.g. "E12.34567".
+    std::string move(double delta);
+    /// Moves the axis by `delta` like move() but returns, instead of a word, how many units
     /// the written value moves (absolute: new written position − old; relative: the delta word).
-    long long moveUnits(double delta_mm);
+    long long moveUnits(double delta);
     /// Absolute mode: sets the position to 0 and returns "G92 E0"; relative mode: returns "".
     std::string reset();
     /// True when an absolute position is non-zero (a reset is worthwhile).
-    bool resetNeeded() const { return !relative_ && position_mm_ != 0.0; }
+    bool resetNeeded() const { return !relative_ && position_ != 0.0; }
 
-    double position() const { return position_mm_; }
-    double totalExtrudedMm() const { return total_mm_; }  ///< forward motion only, retractions excluded
+    double position() const { return position_; }    ///< axis unit
+    double totalExtruded() const { return total_; }  ///< axis unit; forward motion only, retractions excluded
 
   private:
-    void account(double delta_mm);  ///< filament bookkeeping: retractions and their primes cancel
+    void account(double delta);  ///< filament bookkeeping: retractions and their primes cancel
 
+    // Amounts in the axis unit.
     char letter_;
     bool relative_;
-    double position_mm_ = 0;       ///< firmware's idea of the position (absolute mode)
-    double written_mm_ = 0;        ///< rounded value last written, so rounding never accumulates
+    double position_ = 0;          ///< firmware's idea of the position (absolute mode)
+    double written_ = 0;           ///< rounded value last written, so rounding never accumulates
     long long written_units_ = 0;  ///< moveUnits(): the rounded position last accounted for
-    double total_mm_ = 0;
-    double retracted_mm_ = 0;  ///< outstanding retraction, re-primed moves are not new filament
+    double total_ = 0;
+    double retracted_ = 0;  ///< outstanding retraction, re-primed moves are not new filament
 };
 
 }  // namespace mixengine

@@ -14,10 +14,10 @@ GCodeExport::GCodeExport(const ExportParams& params)
       time_(params.kinematics),
       motion_(params.motion_flavor) {}
 
-void GCodeExport::timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s,
+void GCodeExport::timeMove(const Point2& to, coord_um z, double filament_mm, double speed_mm_s,
                            TimeFeature feature) {
     time_.addMove(
-        {micronsToMm(to.X - position_.X), micronsToMm(to.Y - position_.Y), micronsToMm(z - z_), e_mm},
+        {micronsToMm(to.X - position_.X), micronsToMm(to.Y - position_.Y), micronsToMm(z - z_), filament_mm},
         speed_mm_s, feature);
 }
 
@@ -76,11 +76,13 @@ double GCodeExport::retractionOnAxis() const {
     return params_.retraction_amount_mm * std::numbers::pi * radius * radius;
 }
 
-double GCodeExport::volumeToAxisMm(double volume_mm3) const {
-    if (params_.volumetric)
-        return volume_mm3;
+double GCodeExport::filamentMm(double volume_mm3) const {
     const double radius = params_.filament_diameter_mm / 2.0;
     return volume_mm3 / (std::numbers::pi * radius * radius);
+}
+
+double GCodeExport::volumeOnAxis(double volume_mm3) const {
+    return params_.volumetric ? volume_mm3 : filamentMm(volume_mm3);
 }
 
 void GCodeExport::travel(const Point2& to, double speed_mm_s) {
@@ -102,12 +104,12 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {
     if (retracted_)
         unretract();
-    const double e = volumeToAxisMm(volume_mm3);
+    const double e = volumeOnAxis(volume_mm3);
     std::string before;
     const std::string words = dialect_->extrude(e, mix_, before);
     out_ += before;
     line("G1" + feedrateWord(speed_mm_s) + xyWords(to) + " " + words);
-    timeMove(to, z_, e, speed_mm_s, extrusion_feature_);
+    timeMove(to, z_, filamentMm(volume_mm3), speed_mm_s, extrusion_feature_);
     position_ = to;
 }
 

@@ -19,7 +19,7 @@ namespace mixengine {
 
 struct ExportParams {
     double filament_diameter_mm = 2.85;
-    bool volumetric = false;          ///< E in mm³ (RepRap (Volumetric))
+    bool volumetric = false;          ///< E in mm³ of material (RepRap (Volumetric), UltiGCode)
     bool relative_extrusion = false;  ///< M83
     double retraction_amount_mm = 6.5;
     double retraction_speed_mm_s = 25;
@@ -68,7 +68,8 @@ class GCodeExport {
     std::string takeText() { return std::move(out_); }
     double elapsedSeconds() const { return time_.totalSeconds(); }
     FeatureSeconds secondsByFeature() const { return time_.secondsByFeature(); }
-    double filamentUsedMm() const { return dialect_->totalExtruded(); }  ///< length, or mm³ when volumetric
+    /// Forward extrusion so far in the axis unit: mm of filament, or mm³ when volumetric.
+    double totalExtruded() const { return dialect_->totalExtruded(); }
     /// Per mixing channel (one entry in single mode), length or mm³ when volumetric.
     std::vector<double> filamentPerChannel() const { return dialect_->channelTotals(); }
     /// Filament per extruder (index = extruder_nr), length or mm³ when volumetric.
@@ -79,9 +80,13 @@ class GCodeExport {
 
   private:
     std::string feedrateWord(double speed_mm_s);
-    double volumeToAxisMm(double volume_mm3) const;
-    double retractionOnAxis() const;  ///< the retraction in the axis unit (mm, or mm³ when volumetric)
-    void timeMove(const Point2& to, coord_um z, double e_mm, double speed_mm_s, TimeFeature feature);
+    double filamentMm(double volume_mm3) const;  ///< length of the active filament holding the volume
+    double volumeOnAxis(
+        double volume_mm3) const;     ///< the volume in the axis unit (mm, or mm³ when volumetric)
+    double retractionOnAxis() const;  ///< the retraction in the axis unit
+    /// Adds a move to the time estimate, whose E axis is always mm of filament (as CuraEngine's
+    /// estimate and the firmware's E limits: machine_max_feedrate_e, _jerk_e, _acceleration_e).
+    void timeMove(const Point2& to, coord_um z, double filament_mm, double speed_mm_s, TimeFeature feature);
     TimeFeature moveFeature() const { return retracted_ ? TimeFeature::Retraction : TimeFeature::Travel; }
     std::string xyWords(const Point2& to) const;  ///< " X.. Y..", relative to the active nozzle
     void noteFilamentOfActiveExtruder();

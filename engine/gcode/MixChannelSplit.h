@@ -8,7 +8,7 @@
 // mesh, one layer) add up to their exact shares within a unit.
 #include <array>
 
-#include "mixing/MixVector.h"
+#include "planning/MixVector.h"
 
 namespace mixengine {
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "mixing/MixVector.h"
 #include "mixing/MixingOutput.h"
+#include "planning/MixVector.h"
 
 namespace mixengine {
 

@@ -109,7 +109,7 @@ std::string MixSplitAxes::reset() {
 std::vector<double> MixSplitAxes::channelTotals() const {
     std::vector<double> totals;
     for (int c = 0; c < mixing_.channels; ++c)
-        totals.push_back(static_cast<double>(forward_[static_cast<std::size_t>(c)]) / kUnitsPerMm);
+        totals.push_back(static_cast<double>(forward_[static_cast<std::size_t>(c)]) / kUnitsPerAxisUnit);
     return totals;
 }
 

@@ -35,7 +35,7 @@ class MixSplitAxes : public MixDialect {
     std::string retract(double amount, std::string& before) override;
     std::string prime(double amount, std::string& before) override;
     std::string reset() override;
-    double totalExtruded() const override { return total_.totalExtrudedMm(); }
+    double totalExtruded() const override { return total_.totalExtruded(); }
     std::vector<double> channelTotals() const override;
 
   private:

@@ -1,6 +1,7 @@
 #pragma once
 // Compact number formatting for G-code: fixed decimals, trailing zeros and a trailing point
 // removed, never "-0". XYZ use 3 decimals, E uses 5 (as CuraEngine and PrusaSlicer do).
+// Extrusion values are in the axis unit: mm of filament, or mm³ of material when volumetric.
 #include <string>
 
 namespace mixengine {
@@ -9,8 +10,8 @@ std::string formatDecimal(double value, int decimals);
 inline std::string formatCoordMm(double mm) {
     return formatDecimal(mm, 3);
 }
-inline std::string formatExtrusionMm(double mm) {
-    return formatDecimal(mm, 5);
+inline std::string formatExtrusion(double amount) {
+    return formatDecimal(amount, 5);
 }
 /// Feedrate in mm/min from mm/s, at most one decimal ("F1500", "F1687.5").
 std::string formatFeedrate(double mm_per_s);

@@ -50,7 +50,8 @@ class TimeEstimate {
   public:
     explicit TimeEstimate(const Kinematics& kinematics) : k_(kinematics) {}
 
-    /// A straight move by `delta` (X, Y, Z, E in mm) at the requested feedrate, booked to `feature`.
+    /// A straight move by `delta` (X, Y, Z in mm, E in mm of filament — also for volumetric
+    /// flavors, whose E words count mm³) at the requested feedrate, booked to `feature`.
     void addMove(const std::array<double, 4>& delta_mm, double feedrate_mm_s,
                  TimeFeature feature = TimeFeature::None);
     /// The acceleration for the following moves (M204), limited as the firmware limits it.

@@ -5,7 +5,6 @@
 
 #include "mixing/ChamberDelay.h"
 #include "mixing/MixSchedule.h"
-#include "pipeline/Scene.h"
 
 namespace mixengine {
 namespace {
@@ -37,18 +36,16 @@ class MixTable {
     std::map<MixVector, int, MixLess> index_;
 };
 
-std::vector<ScopeSchedule> meshSchedules(const SceneGroup& group, const MixingOutput& output) {
+std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingOutput& output) {
     std::vector<ScopeSchedule> schedules;
-    for (const SceneMesh& m : group.meshes) {
-        const AABB3 box = m.mesh.bounds();
-        schedules.push_back({parseMeshMixing(m.settings, output), box.min.z, box.max.z});
-    }
+    for (const MixingMesh& m : group.meshes)
+        schedules.push_back({parseMeshMixing(*m.settings, output), m.bottom_um, m.top_um});
     return schedules;
 }
 
-ScopeSchedule groupSchedule(const SceneGroup& group, const MixingOutput& output,
+ScopeSchedule groupSchedule(const MixingGroup& group, const MixingOutput& output,
                             const std::vector<ScopeSchedule>& meshes) {
-    ScopeSchedule all{parseMeshMixing(group.settings, output), 0, 0};
+    ScopeSchedule all{parseMeshMixing(*group.settings, output), 0, 0};
     if (!meshes.empty()) {
         all.bottom_um = meshes.front().bottom_um;
         all.top_um = meshes.front().top_um;
@@ -73,14 +70,14 @@ void warnAboutDialect(const MixingOutput& output, const Settings& global, Log& l
 
 }  // namespace
 
-void assignMixes(PrintPlan& plan, const SceneGroup& group, Log& log) {
-    const MixingOutput output = parseMixingOutput(group.settings);
+void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
+    const MixingOutput output = parseMixingOutput(*group.settings);
     if (!output.enabled())
         return;
     const std::vector<ScopeSchedule> meshes = meshSchedules(group, output);
     const ScopeSchedule nonmesh = groupSchedule(group, output, meshes);
-    const double chamber_mm3 = parseChamberVolumeMm3(group.settings);
-    warnAboutDialect(output, group.settings, log);
+    const double chamber_mm3 = parseChamberVolumeMm3(*group.settings);
+    warnAboutDialect(output, *group.settings, log);
 
     MixTable table(plan.mixes);
     std::vector<int> target;

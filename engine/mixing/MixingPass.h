@@ -6,13 +6,29 @@
 // all meshes together. The chamber-delay shift (mixing/ChamberDelay.h) is applied last.
 // In single mode (the default) the plan is left untouched: no mixes, every step's mix stays -1.
 // Bad mixing settings throw InputError (mixing/MixingSettings.h) before anything is written.
+#include <vector>
+
 #include "common/Log.h"
+#include "geometry/Point.h"
 #include "planning/LayerPlan.h"
+#include "settings/Settings.h"
 
 namespace mixengine {
 
-struct SceneGroup;
+/// A mesh as the mixing stage sees it: its resolved settings and the heights it spans as placed on
+/// the plate (microns, the same frame as PlannedLayer::z).
+struct MixingMesh {
+    const Settings* settings = nullptr;
+    coord_um bottom_um = 0;
+    coord_um top_um = 0;
+};
 
-void assignMixes(PrintPlan& plan, const SceneGroup& group, Log& log);
+/// What the mixing stage needs of a mesh group. The pointed-to settings outlive the call.
+struct MixingGroup {
+    const Settings* settings = nullptr;  ///< the group's: non-mesh extrusions, dialect, chamber volume
+    std::vector<MixingMesh> meshes;      ///< index = PlanStep::mesh_index of the plan's SetMesh steps
+};
+
+void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log);
 
 }  // namespace mixengine

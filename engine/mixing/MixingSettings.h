@@ -17,8 +17,8 @@
 #include <string_view>
 #include <vector>
 
-#include "mixing/MixVector.h"
 #include "mixing/MixingOutput.h"
+#include "planning/MixVector.h"
 #include "settings/Settings.h"
 
 namespace mixengine {

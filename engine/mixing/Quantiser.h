@@ -4,7 +4,7 @@
 // only when the quantised mix changes, so the resolution also decides how often that happens.
 #include <array>
 
-#include "mixing/MixVector.h"
+#include "planning/MixVector.h"
 
 namespace mixengine {
 

@@ -5,7 +5,6 @@
 #include "gcode/StartEndCode.h"
 #include "mixing/MixingPass.h"
 #include "mixing/MixingSettings.h"
-#include "pipeline/EmptyLayers.h"
 #include "pipeline/OutputParams.h"
 #include "planning/PrintPlanner.h"
 #include "slicing/OutlineCleanup.h"
@@ -32,22 +31,21 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
         input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m]});
     }
-    GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
+    const GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
     for (const std::string& warning : toolpaths.warnings)
         log.warning(warning);
-    std::vector<Paths> comb_areas(sliced.heights.size());
-    for (const auto& mesh_layers : sliced.meshes) {
-        for (std::size_t i = 0; i < mesh_layers.size(); ++i)
-            comb_areas[i].insert(comb_areas[i].end(), mesh_layers[i].outlines.begin(),
-                                 mesh_layers[i].outlines.end());
+    for (const std::string& note : toolpaths.notes)
+        log.info(note);
+    return planPrint(toolpaths, group.settings, scene.machine.extruders, state);
+}
+
+MixingGroup mixingInput(const SceneGroup& group) {
+    MixingGroup input{&group.settings, {}};
+    for (const SceneMesh& m : group.meshes) {
+        const AABB3 box = m.mesh.bounds();
+        input.meshes.push_back({&m.settings, box.min.z, box.max.z});
     }
-    std::vector<LayerZ> heights = sliced.heights;
-    const std::size_t empty = leadingEmptyLayers(toolpaths, sliced.meshes);
-    if (empty > 0) {
-        log.info("removing " + std::to_string(empty) + " empty layer(s) at the bottom of the print");
-        dropLeadingLayers(empty, toolpaths, heights, comb_areas);
-    }
-    return planPrint(heights, toolpaths, group.settings, scene.machine.extruders, comb_areas, state);
+    return input;
 }
 
 /// "a.stl", "a.stl, b.stl", or "a.stl, b.stl and 3 more meshes" for messages.
@@ -97,7 +95,8 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
 
 GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan) {
     const Settings& global = scene.machine.global;
-    GCodeExport gcode(exportParams(scene));
+    const ExportParams export_params = exportParams(scene);
+    GCodeExport gcode(export_params);
     const PlanWriterParams writer = writerParams(scene);
     PlannerState state;
 
@@ -108,17 +107,17 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     for (const SceneGroup& group : scene.groups) {
         if (group.meshes.empty())
             continue;
-        log.progress("slicing", 0.0);
+        log.progress(ProgressStage::Slicing, 0.0);
         SlicedGroup sliced = sliceGroup(group, threads, log);
-        log.progress("toolpaths", 0.3);
+        log.progress(ProgressStage::Toolpaths, 0.3);
         PrintPlan plan = planGroup(scene, group, sliced, threads, state, log);
-        assignMixes(plan, group, log);
+        assignMixes(plan, mixingInput(group), log);
         if (on_plan)
             on_plan(plan);
         for (PlannedLayer& layer : plan.layers)
             layer.index += layer_offset;
         layer_offset += static_cast<int>(plan.layers.size());
-        log.progress("gcode", 0.8);
+        log.progress(ProgressStage::GCode, 0.8);
         WrittenLayers written = writePlan(plan, writer, gcode);
         output.summary.min = {std::min(output.summary.min.x, written.min.x),
                               std::min(output.summary.min.y, written.min.y),
@@ -141,7 +140,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     output.summary.time_by_feature_s = gcode.secondsByFeature();
     output.summary.filament_per_extruder = gcode.filamentPerExtruder();
     output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
-    describeExtruders(scene, exportParams(scene).volumetric, output.summary);
+    describeExtruders(scene, export_params.volumetric, output.summary);
     output.summary.layer_height_mm = global.millimetres("layer_height");
     output.summary.engine_version = MIXENGINE_VERSION;
     output.header = makeHeader(output.summary);
@@ -150,7 +149,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         output.start += "G92 E0\n";
     output.start += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
-    log.progress("done", 1.0);
+    log.progress(ProgressStage::Done, 1.0);
     return output;
 }
 

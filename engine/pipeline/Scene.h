@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "common/Log.h"
-#include "communication/SliceRequest.h"
 #include "mesh/Mesh.h"
+#include "pipeline/SliceRequest.h"
 #include "settings/DefinitionSet.h"
 #include "settings/Resolver.h"
 

@@ -25,6 +25,15 @@ bool onSegment(const Point2& p, const Point2& a, const Point2& b) {
            std::min(a.Y, b.Y) <= p.Y && p.Y <= std::max(a.Y, b.Y);
 }
 
+/// The sign of (X − x), X being where the line through a and b (a.Y ≠ b.Y) meets the height y:
+/// X = a.X + (y − a.Y)(b.X − a.X)/(b.Y − a.Y), compared without dividing.
+int crossingXComparedTo(const Point2& a, const Point2& b, coord_um y, coord_um x) {
+    const Wide dy = Wide(b.Y) - Wide(a.Y);
+    const Wide scaled = (Wide(a.X) - Wide(x)) * dy + (Wide(y) - Wide(a.Y)) * (Wide(b.X) - Wide(a.X));
+    const int sign = scaled > 0 ? 1 : (scaled < 0 ? -1 : 0);
+    return dy > 0 ? sign : -sign;
+}
+
 }  // namespace
 
 CombBoundary::CombBoundary(const Paths& area) : loops_(area) {
@@ -85,13 +94,14 @@ bool CombBoundary::inside(const Point2& p) const {
             // Half-open rule on Y so a vertex on the ray counts once.
             if ((edge.a.Y > p.Y) == (edge.b.Y > p.Y))
                 continue;
-            const double x = double(edge.a.X) + double(p.Y - edge.a.Y) * double(edge.b.X - edge.a.X) /
-                                                    double(edge.b.Y - edge.a.Y);
-            if (x < double(p.X))
-                continue;
+            if (crossingXComparedTo(edge.a, edge.b, p.Y, p.X) < 0)
+                continue;  // the edge meets the ray's line left of p
             // Count the crossing only in the cell that holds it (edges span several cells).
-            const bool first_cell = c == column(p.X);
-            if ((x >= double(cell_left) || first_cell) && (x < double(cell_right) || c == columns_ - 1))
+            const bool from_left =
+                c == column(p.X) || crossingXComparedTo(edge.a, edge.b, p.Y, cell_left) >= 0;
+            const bool to_right =
+                c == columns_ - 1 || crossingXComparedTo(edge.a, edge.b, p.Y, cell_right) < 0;
+            if (from_left && to_right)
                 odd = !odd;
         }
     }

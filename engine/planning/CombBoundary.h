@@ -4,7 +4,11 @@
 // for areas with many thousands of edges: the edges are bucketed in a uniform grid, a point is
 // inside when a ray to +X crosses the boundary an odd number of times (counted cell by cell, each
 // crossing in the cell that contains it), and the segment must cross no edge.
-// Exact integer geometry; points on the boundary count as inside, touching is not crossing.
+// The tests (inside, straightInside, which edges a travel crosses) are exact: integer coordinates,
+// products in 128 bits, no division. Points on the boundary count as inside, touching is not
+// crossing. route() constructs the points where a travel crosses a loop: those are interpolated in
+// double precision and rounded to the nearest micron, the crossings are ordered along the travel in
+// double precision and the shorter way around a loop is chosen by double-precision lengths.
 #include <optional>
 #include <vector>
 
@@ -20,7 +24,8 @@ class CombBoundary {
 
     bool empty() const { return edges_.empty(); }
     bool inside(const Point2& p) const;
-    /// Both end points and the midpoint inside, and the segment crosses no boundary edge.
+    /// Both end points and the midpoint (rounded towards a) inside, and the segment crosses no
+    /// boundary edge.
     bool straightInside(const Point2& a, const Point2& b) const;
     /// A travel from a to b that stays inside: the straight line where it can, else around each
     /// boundary loop it would cross, along the loop's shorter side, then shortened where a

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "geometry/Point.h"
-#include "mixing/MixVector.h"
+#include "planning/MixVector.h"
 #include "toolpaths/ExtrusionPath.h"
 
 namespace mixengine {

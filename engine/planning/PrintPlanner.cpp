@@ -140,9 +140,21 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
     return order;
 }
 
-PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& toolpaths,
-                    const Settings& global, const std::vector<Settings>& extruders,
-                    const std::vector<Paths>& comb_areas, PlannerState& state) {
+Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
+    Paths area;
+    const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        if (mesh.sliced && sliced_layer < mesh.sliced->size()) {
+            const Paths& outlines = (*mesh.sliced)[sliced_layer].outlines;
+            area.insert(area.end(), outlines.begin(), outlines.end());
+        }
+    }
+    return area;
+}
+
+PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
+                    const std::vector<Settings>& extruders, PlannerState& state) {
+    const std::vector<LayerZ>& heights = toolpaths.heights;
     PrintPlan plan;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         plan.mesh_names.push_back(mesh.name);
@@ -155,7 +167,7 @@ PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& to
     const MotionSources motion = motionSources(global, std::move(mesh_settings), extruders);
     for (std::size_t i = 0; i < heights.size(); ++i) {
         const Point2 layer_start = state.head;
-        const CombBoundary comb = i < comb_areas.size() ? CombBoundary(comb_areas[i]) : CombBoundary();
+        const CombBoundary comb(combArea(toolpaths, i));
         const int layer_extruder = state.extruder;
         PlannedLayer planned;
         planned.index = static_cast<int>(i);

@@ -3,11 +3,12 @@
 // extruders print one after the other, the one already active first (fewest tool changes); each
 // extruder prints its prime tower and ooze shield, the skirt/brim (layer 0), its support, then
 // every mesh in order — inner walls, outer walls, skin, infill — with travel, retraction and the fan.
+// Travel combs inside the layer's comb area: the sliced outlines of every mesh of the group on that
+// layer (MeshToolpaths::sliced), even-odd (planning/CombBoundary.h).
 #include <vector>
 
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
-#include "slicing/LayerHeights.h"
 #include "toolpaths/GroupToolpaths.h"
 
 namespace mixengine {
@@ -17,11 +18,14 @@ struct PlannerState {
     int extruder = 0;  ///< the active extruder (carried from group to group)
 };
 
-/// `comb_areas[layer]`: where travel may go without retraction (the layer's outlines); empty or
-/// retraction_combing "off" → every long travel retracts.
-PrintPlan planPrint(const std::vector<LayerZ>& heights, const GroupToolpaths& toolpaths,
-                    const Settings& global, const std::vector<Settings>& extruders,
-                    const std::vector<Paths>& comb_areas, PlannerState& state);
+/// One PlannedLayer per toolpaths.heights entry. retraction_combing "off" (or a layer without
+/// outlines) → every long travel retracts.
+PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
+                    const std::vector<Settings>& extruders, PlannerState& state);
+
+/// Where travel on `layer` of `toolpaths` may go without retraction: the outlines of every mesh's
+/// sliced layer toolpaths.first_sliced_layer + layer, one after the other (microns).
+Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer);
 
 /// The extruders used on `layer`, in print order: `active` first if used, then ascending.
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active);

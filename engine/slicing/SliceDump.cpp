@@ -10,15 +10,22 @@
 namespace mixengine {
 namespace {
 
-nlohmann::json pathsToJson(const Paths& paths) {
-    nlohmann::json out = nlohmann::json::array();
-    for (const Path& path : paths) {
+nlohmann::json layerToJson(const SlicedLayer& layer, std::size_t index) {
+    nlohmann::json outlines = nlohmann::json::array();
+    double area_um2 = 0;
+    for (const Path& path : layer.outlines) {
+        area_um2 += ClipperLib::Area(path);
         nlohmann::json points = nlohmann::json::array();
         for (const Point2& p : path)
-            points.push_back({p.X, p.Y});
-        out.push_back(std::move(points));
+            points.push_back({micronsToMm(p.X), micronsToMm(p.Y)});
+        outlines.push_back(std::move(points));
     }
-    return out;
+    return {{"index", index},
+            {"print_z_mm", micronsToMm(layer.print_z)},
+            {"slice_z_mm", micronsToMm(layer.slice_z)},
+            {"area_mm2", area_um2 / 1.0e6},
+            {"outlines", std::move(outlines)},
+            {"open_polylines", layer.open_polylines.size()}};
 }
 
 struct BoundsUm {
@@ -113,20 +120,13 @@ std::string escapeXml(const std::string& text) {
 
 }  // namespace
 
-std::string writeLayersJson(const std::vector<SlicedLayer>& layers) {
-    nlohmann::json root;
-    root["units"] = "um";
-    root["layer_count"] = layers.size();
-    nlohmann::json list = nlohmann::json::array();
-    for (std::size_t i = 0; i < layers.size(); ++i) {
-        list.push_back({{"index", i},
-                        {"print_z", layers[i].print_z},
-                        {"slice_z", layers[i].slice_z},
-                        {"outlines", pathsToJson(layers[i].outlines)},
-                        {"open_polylines", pathsToJson(layers[i].open_polylines)}});
-    }
-    root["layers"] = std::move(list);
-    return root.dump();
+std::string layersToJson(const std::vector<SlicedLayer>& layers, const std::vector<std::string>& mesh_names) {
+    nlohmann::json doc;
+    doc["meshes"] = mesh_names;
+    doc["layers"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < layers.size(); ++i)
+        doc["layers"].push_back(layerToJson(layers[i], i));
+    return doc.dump();
 }
 
 std::string layerToSvg(const SlicedLayer& layer, const SvgOptions& options) {

@@ -1,11 +1,12 @@
 #pragma once
-// Plain-data views of sliced layers for people and scripts (the CLI writes them to files).
+// Plain-data views of sliced layers for people and scripts (`mixengine layers` writes them to files).
 //
-// writeLayersJson — every layer with its heights and paths, coordinates in integer microns:
-//   {"units": "um", "layer_count": N,
-//    "layers": [{"index": 0, "print_z": 200, "slice_z": 100,
-//                "outlines": [[[x, y], …], …],        // outer CCW, holes CW (as SlicedLayer)
-//                "open_polylines": [[[x, y], …], …]}, …]}
+// layersToJson — the meshes' names and every layer with its heights, area and outlines, in mm:
+//   {"meshes": ["cube20.stl", …],
+//    "layers": [{"index": 0, "print_z_mm": 0.2, "slice_z_mm": 0.1, "area_mm2": 400.0,
+//                "outlines": [[[x_mm, y_mm], …], …],   // outer CCW, holes CW (as SlicedLayer)
+//                "open_polylines": 2}, …]}                // how many open pieces were left out
+// area_mm2 is the signed area of the outlines (holes count negative). Keys are written sorted.
 // layerToSvg — one layer as a standalone SVG document in millimetres (y up as in the printer):
 //   outlines filled with fill-rule evenodd so holes show, open polylines stroked in red, a scale
 //   bar of a round length in mm and a caption with the heights. An empty layer gives a 10 mm frame.
@@ -16,7 +17,7 @@
 
 namespace mixengine {
 
-std::string writeLayersJson(const std::vector<SlicedLayer>& layers);
+std::string layersToJson(const std::vector<SlicedLayer>& layers, const std::vector<std::string>& mesh_names);
 
 struct SvgOptions {
     double pixels_per_mm = 10.0;  ///< size of the drawing in the SVG's width/height attributes

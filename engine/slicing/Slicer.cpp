@@ -75,7 +75,7 @@ class ProgressReporter {
         std::lock_guard lock(mutex_);
         ++done_;
         if (done_ % step_ == 0 || done_ == total_)
-            log_.progress("slicing", static_cast<double>(done_) / total_);
+            log_.progress(ProgressStage::Slicing, static_cast<double>(done_) / total_);
     }
 
   private:

@@ -4,6 +4,7 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/Adhesion.h"
+#include "toolpaths/EmptyLayers.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/PrimeTower.h"
 #include "toolpaths/Support.h"
@@ -51,14 +52,26 @@ Paths pointsOf(const std::vector<ExtrusionPath>& paths) {
     return points;
 }
 
+/// Drops the empty layers at the bottom (toolpaths/EmptyLayers.h) and says so in the notes.
+void dropEmptyBottomLayers(const ToolpathInput& input, GroupToolpaths& result) {
+    const std::size_t empty = leadingEmptyLayers(result, input);
+    if (empty == 0)
+        return;
+    result.notes.push_back("removing " + std::to_string(empty) +
+                           " empty layer(s) at the bottom of the print");
+    dropLeadingLayers(empty, result);
+}
+
 }  // namespace
 
 GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     GroupToolpaths result;
+    result.heights = input.heights;
     for (const ToolpathMeshInput& mesh : input.meshes) {
         MeshToolpaths paths;
         paths.settings = mesh.settings;
         paths.name = mesh.name;
+        paths.sliced = mesh.layers;
         paths.layers = generateMeshToolpaths(*mesh.layers, *mesh.settings, threads);
         result.meshes.push_back(std::move(paths));
     }
@@ -86,6 +99,7 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         result.adhesion = std::move(skirt.paths);
         result.warnings = std::move(skirt.warnings);
     }
+    dropEmptyBottomLayers(input, result);
     return result;
 }
 

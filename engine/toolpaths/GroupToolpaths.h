@@ -10,7 +10,9 @@
 // Order of work: each mesh (toolpaths/MeshToolpaths.h), then the support around all meshes
 // (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
 // (toolpaths/PrimeTower.h), and last the skirt or brim around everything on layer 0
-// (toolpaths/Adhesion.h). `threads` is used inside every step; the result does not depend on it.
+// (toolpaths/Adhesion.h); last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
+// so layer 0 of the result is the first layer that prints. `threads` is used inside every step;
+// the result does not depend on it.
 #include <string>
 #include <vector>
 
@@ -38,9 +40,16 @@ struct MeshToolpaths {
     const Settings* settings = nullptr;
     std::string name;
     std::vector<MeshLayerGroups> layers;  ///< index = layer
+    /// The mesh's sliced layers (the input's); sliced layer first_sliced_layer + i is layer i.
+    const std::vector<SlicedLayer>* sliced = nullptr;
 };
 
 struct GroupToolpaths {
+    /// [layer] the heights to print at: the input's, less one entry from the top per empty bottom
+    /// layer dropped (the print starts at the first layer's height, as CuraEngine).
+    std::vector<LayerZ> heights;
+    /// The sliced layer printed as layer 0: the number of empty bottom layers dropped.
+    std::size_t first_sliced_layer = 0;
     std::vector<MeshToolpaths> meshes;
     std::vector<std::vector<ExtrusionPath>> support;  ///< [layer]; support and its interface
     std::vector<ExtrusionPath> adhesion;              ///< skirt or brim, printed first on layer 0
@@ -51,6 +60,8 @@ struct GroupToolpaths {
     /// Settings the stage could not honour (e.g. adhesion_type raft printed as a skirt), one line
     /// each, for the caller to log.
     std::vector<std::string> warnings;
+    /// Information for the caller to log (the empty bottom layers removed), one line each.
+    std::vector<std::string> notes;
 };
 
 GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads);

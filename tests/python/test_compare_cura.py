@@ -28,7 +28,7 @@ MODELS = list(CASES)
 # Known gaps, stated and strict (an unexpected pass fails, so they are removed when fixed):
 KNOWN_GAPS = {
     ("layers", "knot2"): "CuraEngine drops the first layer, whose cut is two loops of 0.7 mm² above "
-                         "minimum_polygon_circumference; MixEngine keeps it (pipeline/EmptyLayers.h)",
+                         "minimum_polygon_circumference; MixEngine keeps it (toolpaths/EmptyLayers.h)",
 }
 
 

@@ -12,30 +12,33 @@
 #include "communication/arcus/ResultMessages.h"
 #include "communication/arcus/SliceMessage.h"
 #include "pipeline/FffProcessor.h"
-#include "pipeline/OutputParams.h"
 
 namespace mixengine {
 namespace {
 
 using namespace std::chrono_literals;
 
-/// The pipeline's stage reports → one monotonic 0..1 amount for Cura's progress bar.
-double overallProgress(std::string_view stage, double fraction) {
-    if (stage == "slicing")
-        return 0.3 * fraction;
-    if (stage == "toolpaths")
-        return 0.3;
-    if (stage == "gcode")
-        return 0.8;
-    if (stage == "done")
-        return 1.0;
+/// The pipeline's stage reports → one monotonic 0..1 amount for Cura's progress bar. As CuraEngine's
+/// stages fill it: Slicing is its slicing, Toolpaths its parts, inset/skin and support, GCode its
+/// export, Done its finish.
+double overallProgress(ProgressStage stage, double fraction) {
+    switch (stage) {
+        case ProgressStage::Slicing:
+            return 0.3 * fraction;
+        case ProgressStage::Toolpaths:
+            return 0.3;
+        case ProgressStage::GCode:
+            return 0.8;
+        case ProgressStage::Done:
+            return 1.0;
+    }
     return 0.0;
 }
 
 class ProgressReporter {
   public:
     explicit ProgressReporter(ArcusSession& session) : session_(session) {}
-    void operator()(std::string_view stage, double fraction) {
+    void operator()(ProgressStage stage, double fraction) {
         const double amount = std::max(sent_, overallProgress(stage, fraction));
         if (amount - sent_ < 0.001 && !(amount == 1.0 && sent_ < 1.0))
             return;
@@ -47,13 +50,6 @@ class ProgressReporter {
     ArcusSession& session_;
     double sent_ = -1.0;
 };
-
-std::vector<double> filamentDiameters(const Scene& scene) {
-    std::vector<double> diameters;
-    for (const Settings& extruder : scene.machine.extruders)
-        diameters.push_back(extruder.millimetres("material_diameter"));
-    return diameters;
-}
 
 void sliceAndReply(const cura::proto::Slice& slice, int threads, ArcusSession& session, Log& log) {
     SliceRequest request = requestFromSlice(slice);
@@ -76,7 +72,7 @@ void sliceAndReply(const cura::proto::Slice& slice, int threads, ArcusSession& s
         session.send(layer);
     session.send(gcodePrefixMessage(gcode.header));
     session.send(gcodeLayerMessage(gcode.suffix));
-    session.send(estimatesMessage(gcode.summary, filamentDiameters(scene), exportParams(scene).volumetric));
+    session.send(estimatesMessage(gcode.summary));
     session.send(slicingFinishedMessage());
     log.setProgressSink({});
     log.info("sliced " + std::to_string(gcode.layer_chunks.size()) + " layers for Cura");

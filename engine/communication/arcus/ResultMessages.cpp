@@ -1,7 +1,5 @@
 #include "communication/arcus/ResultMessages.h"
 
-#include <numbers>
-
 #include "Cura.pb.h"
 
 namespace mixengine {
@@ -49,18 +47,13 @@ Arcus::MessagePtr slicingFinishedMessage() {
     return std::make_shared<cura::proto::SlicingFinished>();
 }
 
-Arcus::MessagePtr estimatesMessage(const PrintSummary& summary,
-                                   const std::vector<double>& filament_diameters_mm, bool volumetric) {
+Arcus::MessagePtr estimatesMessage(const PrintSummary& summary) {
     auto message = std::make_shared<cura::proto::PrintTimeMaterialEstimates>();
     setFeatureTimes(summary.time_by_feature_s, *message);
-    for (std::size_t i = 0; i < filament_diameters_mm.size(); ++i) {
-        const double amount =
-            i < summary.filament_per_extruder.size() ? summary.filament_per_extruder[i] : 0.0;
-        const double radius_mm = filament_diameters_mm[i] / 2.0;
-        const double volume_mm3 = volumetric ? amount : amount * std::numbers::pi * radius_mm * radius_mm;
+    for (std::size_t i = 0; i < summary.extruders.size(); ++i) {
         cura::proto::MaterialEstimates* estimate = message->add_materialestimates();
         estimate->set_id(static_cast<std::int64_t>(i));
-        estimate->set_material_amount(static_cast<float>(volume_mm3));
+        estimate->set_material_amount(static_cast<float>(summary.extruders[i].volume_used_mm3));
     }
     return message;
 }

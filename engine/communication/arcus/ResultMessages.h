@@ -17,10 +17,9 @@ Arcus::MessagePtr gcodeLayerMessage(const std::string& gcode);
 Arcus::MessagePtr gcodePrefixMessage(const std::string& header);
 Arcus::MessagePtr slicingFinishedMessage();
 
-/// `summary.filament_per_extruder` is filament length in mm (volume in mm³ when `volumetric`);
-/// `filament_diameters_mm` has one entry per train. The print time goes into the 12 time_* fields
-/// by feature, as CuraEngine books it (summary.time_by_feature_s); Cura shows their sum as the total.
-Arcus::MessagePtr estimatesMessage(const PrintSummary& summary,
-                                   const std::vector<double>& filament_diameters_mm, bool volumetric);
+/// One material estimate per extruder train: summary.extruders[i].volume_used_mm3 (filled by the
+/// pipeline for every train, used or not). The print time goes into the 12 time_* fields by feature,
+/// as CuraEngine books it (summary.time_by_feature_s); Cura shows their sum as the total.
+Arcus::MessagePtr estimatesMessage(const PrintSummary& summary);
 
 }  // namespace mixengine

@@ -1,5 +1,5 @@
 #pragma once
-// Cura's Slice message → the SliceRequest every slice starts from (communication/SliceRequest.h).
+// Cura's Slice message → the SliceRequest every slice starts from (pipeline/SliceRequest.h).
 //
 // What Cura sends (shared/reference/cura-integration.md §4) and where it goes:
 //   global_settings      → request.user.global (every key, already evaluated by Cura)
@@ -10,7 +10,7 @@
 //                          origin at the plate centre), per-object settings (always extruder_nr)
 // Settings arrive token-expanded and with the frontend's own keys, so the request is marked
 // settings_from_frontend. Throws InputError naming the object or setting that is malformed.
-#include "communication/SliceRequest.h"
+#include "pipeline/SliceRequest.h"
 
 namespace cura::proto {
 class Slice;

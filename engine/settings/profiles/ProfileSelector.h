@@ -46,10 +46,10 @@
 #include <filesystem>
 #include <vector>
 
-#include "communication/SliceRequest.h"
 #include "settings/DefinitionSet.h"
 #include "settings/ProfileStack.h"
 #include "settings/profiles/ProfileResources.h"
+#include "settings/profiles/ProfileSelection.h"
 
 namespace mixengine {
 

@@ -151,11 +151,14 @@ TEST(PreviewLayers, LinesAreTypedSizedAndSplitByExtruder) {
 TEST(ResultMessages, MaterialIsSentInCubicMillimetresPerExtruder) {
     PrintSummary summary;
     summary.print_time_s = 100;
-    summary.filament_per_extruder = {1000.0};  // mm of 1.75 mm filament
-    const auto message = estimatesMessage(summary, {1.75, 2.85}, false);
+    summary.extruders.resize(2);
+    summary.extruders[0].volume_used_mm3 = 2405.28;
+    summary.extruders[1].volume_used_mm3 = 0.0;  // an unused train still gets its entry
+    const auto message = estimatesMessage(summary);
     const auto& estimates = dynamic_cast<const cura::proto::PrintTimeMaterialEstimates&>(*message);
     ASSERT_EQ(estimates.materialestimates_size(), 2);
-    EXPECT_NEAR(estimates.materialestimates(0).material_amount(), 1000.0 * 3.14159265 * 0.875 * 0.875, 0.01);
+    EXPECT_FLOAT_EQ(estimates.materialestimates(0).material_amount(), 2405.28F);
+    EXPECT_EQ(estimates.materialestimates(1).id(), 1);
     EXPECT_EQ(estimates.materialestimates(1).material_amount(), 0.0F);
 }
 
@@ -164,7 +167,7 @@ TEST(ResultMessages, PrintTimeGoesIntoTheFeatureFieldsAsCuraEngineBooksIt) {
     summary.print_time_s = 78;
     for (std::size_t i = 0; i < kTimeFeatureCount; ++i)
         summary.time_by_feature_s[i] = static_cast<double>(i + 1);  // 1 + 2 + ... + 12 = 78
-    const auto message = estimatesMessage(summary, {1.75}, false);
+    const auto message = estimatesMessage(summary);
     const auto& e = dynamic_cast<const cura::proto::PrintTimeMaterialEstimates&>(*message);
     EXPECT_FLOAT_EQ(e.time_none(), 1.0F);
     EXPECT_FLOAT_EQ(e.time_inset_0(), 2.0F);

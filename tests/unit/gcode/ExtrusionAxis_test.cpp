@@ -27,13 +27,13 @@ TEST(ExtrusionAxis, AbsoluteWordsCarryThePosition) {
     EXPECT_EQ(axis.move(6.5), "E1.5");
     EXPECT_EQ(axis.move(0.25), "E1.75");
     EXPECT_EQ(axis.position(), 1.75);
-    EXPECT_EQ(axis.totalExtrudedMm(), 1.75);
+    EXPECT_EQ(axis.totalExtruded(), 1.75);
     EXPECT_TRUE(axis.resetNeeded());
     EXPECT_EQ(axis.reset(), "G92 E0");
     EXPECT_EQ(axis.position(), 0.0);
     EXPECT_FALSE(axis.resetNeeded());
     EXPECT_EQ(axis.move(0.1), "E0.1");
-    EXPECT_DOUBLE_EQ(axis.totalExtrudedMm(), 1.85);
+    EXPECT_DOUBLE_EQ(axis.totalExtruded(), 1.85);
 }
 
 TEST(ExtrusionAxis, RelativeWordsCarryTheDelta) {
@@ -44,7 +44,7 @@ TEST(ExtrusionAxis, RelativeWordsCarryTheDelta) {
     EXPECT_EQ(axis.move(-6.5), "E-6.5");
     EXPECT_EQ(axis.move(6.5), "E6.5");
     EXPECT_EQ(axis.move(0.25), "E0.25");
-    EXPECT_EQ(axis.totalExtrudedMm(), 1.75);
+    EXPECT_EQ(axis.totalExtruded(), 1.75);
     EXPECT_FALSE(axis.resetNeeded());
     EXPECT_EQ(axis.reset(), "");
     EXPECT_EQ(axis.move(0.1), "E0.1");
@@ -63,7 +63,7 @@ TEST(ExtrusionAxis, RelativeWordsSumToTheAbsoluteFinalValue) {
         relative_sum += wordUnits(relative.move(delta));
     }
     EXPECT_EQ(relative_sum, wordUnits(last_absolute)) << last_absolute;
-    EXPECT_DOUBLE_EQ(absolute.totalExtrudedMm(), relative.totalExtrudedMm());
+    EXPECT_DOUBLE_EQ(absolute.totalExtruded(), relative.totalExtruded());
 }
 
 TEST(ExtrusionAxis, TotalExcludesRetractionsAndPrimes) {
@@ -71,13 +71,13 @@ TEST(ExtrusionAxis, TotalExcludesRetractionsAndPrimes) {
     axis.move(5.0);
     axis.move(-2.0);  // retract
     axis.move(1.0);   // partial prime: no new filament
-    EXPECT_EQ(axis.totalExtrudedMm(), 5.0);
+    EXPECT_EQ(axis.totalExtruded(), 5.0);
     axis.move(3.0);  // 1 mm prime + 2 mm new
-    EXPECT_EQ(axis.totalExtrudedMm(), 7.0);
+    EXPECT_EQ(axis.totalExtruded(), 7.0);
     axis.move(-1.0);
     axis.move(-1.0);
     axis.move(2.0);
-    EXPECT_EQ(axis.totalExtrudedMm(), 7.0);
+    EXPECT_EQ(axis.totalExtruded(), 7.0);
     EXPECT_EQ(axis.position(), 7.0);
 }
 

@@ -50,7 +50,7 @@ TEST(GCodeExport, AbsoluteSequence) {
               ";TYPE:FILL\n"
               "G92 E0\n"
               "M84\n");
-    EXPECT_NEAR(g.filamentUsedMm(), 3.0 / (std::numbers::pi * 0.875 * 0.875), 1e-12);
+    EXPECT_NEAR(g.totalExtruded(), 3.0 / (std::numbers::pi * 0.875 * 0.875), 1e-12);
     EXPECT_EQ(g.z(), 300);
     EXPECT_FALSE(g.retracted());
 }
@@ -80,7 +80,7 @@ TEST(GCodeExport, VolumetricExtrusionInCubicMillimetres) {
     g.extrude({10'000, 0}, 1.5, 30);
     g.extrude({20'000, 0}, 0.25, 30);
     EXPECT_EQ(g.text(), "G1 F1800 X10 Y0 E1.5\nG1 X20 Y0 E1.75\n");
-    EXPECT_EQ(g.filamentUsedMm(), 1.75);
+    EXPECT_EQ(g.totalExtruded(), 1.75);
 }
 
 // BUG (engine/gcode/GCodeExport.cpp, retract()/unretract(): `axis_.move(-params_.retraction_amount_mm)`):
@@ -174,6 +174,24 @@ TEST(GCodeExport, TimeIsBookedByFeature) {
     EXPECT_NEAR(at(TimeFeature::Infill), 1.0, 1e-6);
     EXPECT_NEAR(at(TimeFeature::None), 0.0, 1e-12);
     EXPECT_NEAR(g.elapsedSeconds(), 5.52, 1e-6);
+}
+
+// The estimate's E axis is mm of filament in every flavor, as CuraEngine's (it converts E to mm
+// before planning) and as the firmware's E limits are meant: a volumetric print of the same moves
+// takes the same time. Here the E feedrate limit bites only if E were counted in mm³ (1 mm³ over
+// 40 mm at 20 mm/s: 0.21 mm/s of 1.75 mm filament, 0.5 mm³/s).
+TEST(GCodeExport, VolumetricTimeEstimateCountsMillimetresOfFilament) {
+    for (const bool volumetric : {false, true}) {
+        ExportParams p = marlin175();
+        p.volumetric = volumetric;
+        p.kinematics.acceleration_mm_s2 = 1e12;
+        p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
+        p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;
+        p.kinematics.max_feedrate_mm_s[3] = 0.3;
+        GCodeExport g(p);
+        g.extrude({40'000, 0}, 1.0, 20);  // 40 mm at 20 mm/s: 2 s
+        EXPECT_NEAR(g.elapsedSeconds(), 2.0, 1e-6) << (volumetric ? "volumetric" : "mm");
+    }
 }
 
 // CuraEngine 4.13 writes the fan as `PrecisionedDouble{1, percent * 255 / 100}`: 50 % → "M106 S127.5"

@@ -24,14 +24,14 @@ TEST(NumberFormat, CoordinatesThreeDecimals) {
 }
 
 TEST(NumberFormat, ExtrusionFiveDecimals) {
-    EXPECT_EQ(formatExtrusionMm(0.000004), "0");
-    EXPECT_EQ(formatExtrusionMm(-0.000004), "0");
-    EXPECT_EQ(formatExtrusionMm(1.234567), "1.23457");
-    EXPECT_EQ(formatExtrusionMm(0.03799), "0.03799");
-    EXPECT_EQ(formatExtrusionMm(354.926), "354.926");
-    EXPECT_EQ(formatExtrusionMm(-6.5), "-6.5");
-    EXPECT_EQ(formatExtrusionMm(15.0), "15");
-    EXPECT_EQ(formatExtrusionMm(0.000006), "0.00001");
+    EXPECT_EQ(formatExtrusion(0.000004), "0");
+    EXPECT_EQ(formatExtrusion(-0.000004), "0");
+    EXPECT_EQ(formatExtrusion(1.234567), "1.23457");
+    EXPECT_EQ(formatExtrusion(0.03799), "0.03799");
+    EXPECT_EQ(formatExtrusion(354.926), "354.926");
+    EXPECT_EQ(formatExtrusion(-6.5), "-6.5");
+    EXPECT_EQ(formatExtrusion(15.0), "15");
+    EXPECT_EQ(formatExtrusion(0.000006), "0.00001");
 }
 
 TEST(NumberFormat, FeedrateInMmPerMinute) {

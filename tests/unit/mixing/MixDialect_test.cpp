@@ -176,7 +176,7 @@ TEST(MixingDialect, AxisUnitsAreWhatTheFirmwareSeesBetweenWords) {
     EXPECT_EQ(absolute.moveUnits(0.000004), 0);  // E0
     EXPECT_EQ(relative.moveUnits(0.123456), 12346);
     EXPECT_EQ(relative.moveUnits(0.123456), 12345);
-    EXPECT_DOUBLE_EQ(relative.totalExtrudedMm(), 0.246912);
+    EXPECT_DOUBLE_EQ(relative.totalExtruded(), 0.246912);
     EXPECT_EQ(formatUnits(-12345), "-0.12345");
 }
 

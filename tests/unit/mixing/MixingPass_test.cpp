@@ -5,20 +5,31 @@
 
 #include <gtest/gtest.h>
 
+#include <list>
 #include <sstream>
 
 #include "common/Error.h"
-#include "pipeline/Scene.h"
 
 namespace mixengine {
 namespace {
 
-SceneMesh meshOfHeight(coord_um bottom_um, coord_um top_um, SettingValues values) {
-    SceneMesh m;
-    m.mesh.vertices = {{0, 0, bottom_um}, {1000, 1000, top_um}};
-    m.settings = Settings("mesh", std::move(values));
-    return m;
-}
+/// A MixingGroup with the settings it points at.
+class TestGroup {
+  public:
+    explicit TestGroup(SettingValues values) : group_settings_("global", std::move(values)) {
+        group_.settings = &group_settings_;
+    }
+    void addMesh(coord_um bottom_um, coord_um top_um, SettingValues values) {
+        mesh_settings_.emplace_back("mesh", std::move(values));
+        group_.meshes.push_back({&mesh_settings_.back(), bottom_um, top_um});
+    }
+    const MixingGroup& group() const { return group_; }
+
+  private:
+    Settings group_settings_;
+    std::list<Settings> mesh_settings_;  // stable addresses
+    MixingGroup group_;
+};
 
 PlanStep extrusion(double volume_mm3) {
     PlanStep s;
@@ -58,13 +69,12 @@ double shareB(const PrintPlan& plan, int layer, int step) {
 }
 
 TEST(MixingPass, SingleModeLeavesThePlanAlone) {
-    SceneGroup group;
-    group.settings = Settings("global", {});
-    group.meshes.push_back(meshOfHeight(0, 20000, {}));
+    TestGroup group(SettingValues{});
+    group.addMesh(0, 20000, {});
     PrintPlan plan = tenLayers(1);
     std::ostringstream err;
     Log log(err);
-    assignMixes(plan, group, log);
+    assignMixes(plan, group.group(), log);
     EXPECT_TRUE(plan.mixes.empty());
     for (const PlannedLayer& l : plan.layers)
         for (const PlanStep& s : l.steps)
@@ -72,23 +82,22 @@ TEST(MixingPass, SingleModeLeavesThePlanAlone) {
 }
 
 TEST(MixingPass, EachMeshFollowsItsOwnHeightAndSettings) {
-    SceneGroup group;
-    group.settings = Settings("global", {{"mixing_mode", "gradient"}});
+    TestGroup group(SettingValues{{"mixing_mode", "gradient"}});
     // Mesh 0: 0..20 mm, the seed's 20/80. Mesh 1: 0..10 mm, whole height. Mesh 2: 10 mm in mm units
     // from its bottom at 4 mm.
-    group.meshes.push_back(meshOfHeight(
+    group.addMesh(
         0, 20000,
-        {{"mixing_mode", "gradient"}, {"mixing_gradient_start", "20"}, {"mixing_gradient_end", "80"}}));
-    group.meshes.push_back(meshOfHeight(0, 10000, {{"mixing_mode", "gradient"}}));
-    group.meshes.push_back(meshOfHeight(4000, 14000,
-                                        {{"mixing_mode", "gradient"},
-                                         {"mixing_gradient_unit", "mm"},
-                                         {"mixing_gradient_start", "2"},
-                                         {"mixing_gradient_end", "6"}}));
+        {{"mixing_mode", "gradient"}, {"mixing_gradient_start", "20"}, {"mixing_gradient_end", "80"}});
+    group.addMesh(0, 10000, {{"mixing_mode", "gradient"}});
+    group.addMesh(4000, 14000,
+                  {{"mixing_mode", "gradient"},
+                   {"mixing_gradient_unit", "mm"},
+                   {"mixing_gradient_start", "2"},
+                   {"mixing_gradient_end", "6"}});
     PrintPlan plan = tenLayers(3);
     std::ostringstream err;
     Log log(err);
-    assignMixes(plan, group, log);
+    assignMixes(plan, group.group(), log);
     // Layer 4 (z = 10 mm): mesh 0 at 50 % → (50 − 20) / 60; mesh 1 at 100 %; mesh 2 at 6 mm above
     // its bottom → its end; non-mesh over 0..20 mm at 50 % with the group's 0..100 → 0.5.
     EXPECT_DOUBLE_EQ(shareB(plan, 4, 0), 0.5);
@@ -109,14 +118,13 @@ TEST(MixingPass, EachMeshFollowsItsOwnHeightAndSettings) {
 }
 
 TEST(MixingPass, DualModeFixedRatioPerMesh) {
-    SceneGroup group;
-    group.settings = Settings("global", {{"mixing_mode", "dual"}});
-    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "0.3:0.7"}}));
-    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "1:0"}}));
+    TestGroup group(SettingValues{{"mixing_mode", "dual"}});
+    group.addMesh(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "0.3:0.7"}});
+    group.addMesh(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "1:0"}});
     PrintPlan plan = tenLayers(2);
     std::ostringstream err;
     Log log(err);
-    assignMixes(plan, group, log);
+    assignMixes(plan, group.group(), log);
     for (int layer = 0; layer < 10; ++layer) {
         EXPECT_DOUBLE_EQ(shareB(plan, layer, 0), 0.5);  // non-mesh: the group's default 0.5:0.5
         EXPECT_DOUBLE_EQ(shareB(plan, layer, 2), 0.7);
@@ -126,13 +134,12 @@ TEST(MixingPass, DualModeFixedRatioPerMesh) {
 }
 
 TEST(MixingPass, ChamberDelayCommandsTheNextLayersMixEarlier) {
-    SceneGroup group;
-    group.settings = Settings("global", {{"mixing_mode", "gradient"}, {"mixing_chamber_volume", "1.5"}});
-    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "gradient"}}));
+    TestGroup group(SettingValues{{"mixing_mode", "gradient"}, {"mixing_chamber_volume", "1.5"}});
+    group.addMesh(0, 20000, {{"mixing_mode", "gradient"}});
     PrintPlan plan = tenLayers(1);  // two 1 mm³ extrusions per layer
     std::ostringstream err;
     Log log(err);
-    assignMixes(plan, group, log);
+    assignMixes(plan, group.group(), log);
     // Extrusion k (midpoint k + 0.5) commands the target at k + 2.0: one layer ahead.
     for (int layer = 0; layer < 9; ++layer) {
         EXPECT_DOUBLE_EQ(shareB(plan, layer, 0), 0.1 * (layer + 2)) << layer;
@@ -142,13 +149,12 @@ TEST(MixingPass, ChamberDelayCommandsTheNextLayersMixEarlier) {
 }
 
 TEST(MixingPass, BadSettingsThrowBeforeAnythingIsWritten) {
-    SceneGroup group;
-    group.settings = Settings("global", {{"mixing_mode", "dual"}});
-    group.meshes.push_back(meshOfHeight(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "0.5:0.6"}}));
+    TestGroup group(SettingValues{{"mixing_mode", "dual"}});
+    group.addMesh(0, 20000, {{"mixing_mode", "dual"}, {"mixing_ratio", "0.5:0.6"}});
     PrintPlan plan = tenLayers(1);
     std::ostringstream err;
     Log log(err);
-    EXPECT_THROW(assignMixes(plan, group, log), InputError);
+    EXPECT_THROW(assignMixes(plan, group.group(), log), InputError);
 }
 
 }  // namespace

@@ -65,6 +65,16 @@ TEST(CombBoundary, NoRouteBetweenIslandsOrFromOutside) {
     EXPECT_TRUE(comb.route({1'000, 5'000}, {9'000, 5'000}).has_value());
 }
 
+TEST(CombBoundary, InsideIsExactWhereDoublesRoundTheCrossing) {
+    // A sliver whose right edge leans 1 µm over 10^12 µm, far from the origin: at y = 1 the edge
+    // lies 10^-12 µm left of p, which a double (53 bits at 10^15) rounds onto p.
+    constexpr coord_um kFar = 1'000'000'000'000'000;
+    const CombBoundary comb(Paths{{{kFar + 1, 0}, {kFar, 1'000'000'000'000}, {kFar - 1'000'000, 0}}});
+    EXPECT_FALSE(comb.inside({kFar + 1, 1}));
+    EXPECT_TRUE(comb.inside({kFar, 1}));
+    EXPECT_TRUE(comb.inside({kFar + 1, 0}));  // the corner: on the boundary
+}
+
 TEST(CombBoundary, EmptyBoundaryHasNothingInside) {
     const CombBoundary comb;
     EXPECT_TRUE(comb.empty());

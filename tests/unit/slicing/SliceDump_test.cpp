@@ -16,18 +16,25 @@ SlicedLayer sampleLayer() {
     return layer;
 }
 
-TEST(SliceDump, JsonHoldsHeightsAndPathsInMicrons) {
-    const auto json = nlohmann::json::parse(writeLayersJson({sampleLayer(), SlicedLayer{}}));
-    EXPECT_EQ(json["units"], "um");
-    EXPECT_EQ(json["layer_count"], 2);
+TEST(SliceDump, JsonHoldsMeshesHeightsAreaAndOutlinesInMillimetres) {
+    const auto json = nlohmann::json::parse(layersToJson({sampleLayer(), SlicedLayer{}}, {"a.stl", "b.stl"}));
+    EXPECT_EQ(json["meshes"], nlohmann::json::array({"a.stl", "b.stl"}));
+    ASSERT_EQ(json["layers"].size(), 2U);
     const auto& layer = json["layers"][0];
     EXPECT_EQ(layer["index"], 0);
-    EXPECT_EQ(layer["print_z"], 300);
-    EXPECT_EQ(layer["slice_z"], 250);
+    EXPECT_DOUBLE_EQ(layer["print_z_mm"].get<double>(), 0.3);
+    EXPECT_DOUBLE_EQ(layer["slice_z_mm"].get<double>(), 0.25);
+    EXPECT_DOUBLE_EQ(layer["area_mm2"].get<double>(), 400.0 - 100.0);  // the hole counts negative
     ASSERT_EQ(layer["outlines"].size(), 2U);
-    EXPECT_EQ(layer["outlines"][0][1], nlohmann::json::array({20'000, 0}));
-    EXPECT_EQ(layer["open_polylines"][0][1], nlohmann::json::array({25'000, 10'000}));
+    EXPECT_EQ(layer["outlines"][0][1], nlohmann::json::array({20.0, 0.0}));
+    EXPECT_EQ(layer["open_polylines"], 1);
+    EXPECT_EQ(json["layers"][1]["index"], 1);
     EXPECT_TRUE(json["layers"][1]["outlines"].empty());
+    EXPECT_EQ(json["layers"][1]["area_mm2"], 0.0);
+}
+
+TEST(SliceDump, JsonWithoutLayersOrMeshes) {
+    EXPECT_EQ(layersToJson({}, {}), R"({"layers":[],"meshes":[]})");
 }
 
 TEST(SliceDump, SvgFillsEvenOddShowsOpenPiecesInRedAndHasAScale) {

@@ -125,5 +125,30 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
     EXPECT_EQ(box.right, 70'000 + 1'000);
 }
 
+TEST(GroupToolpaths, EmptyBottomLayersAreDroppedAndThePrintStartsAtTheFirstHeight) {
+    ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
+    test::Stack s = test::prismStack(30);
+    test::fill(s, 3, 30, {square(50'000, 50'000, 10'000)});
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "late", &s.layers}}};
+    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    EXPECT_EQ(g.first_sliced_layer, 3U);
+    ASSERT_EQ(g.heights.size(), 27U);
+    EXPECT_EQ(g.heights.front().print_z, s.heights.front().print_z);
+    EXPECT_EQ(g.heights.back().print_z, s.heights[26].print_z);
+    EXPECT_EQ(g.meshes[0].layers.size(), 27U);
+    EXPECT_FALSE(g.meshes[0].layers[0].outer_walls.empty());
+    EXPECT_EQ(g.meshes[0].sliced, &s.layers);
+    EXPECT_EQ(g.notes, std::vector<std::string>{"removing 3 empty layer(s) at the bottom of the print"});
+}
+
+TEST(GroupToolpaths, NothingToPrintDropsEveryLayer) {
+    ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
+    test::Stack s = test::prismStack(5);
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "empty", &s.layers}}};
+    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    EXPECT_TRUE(g.heights.empty());
+    EXPECT_EQ(g.first_sliced_layer, 5U);
+}
+
 }  // namespace
 }  // namespace mixengine

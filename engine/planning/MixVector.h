@@ -2,6 +2,9 @@
 // A mix: the share of each filament channel in the material leaving a mixing nozzle. Shares are
 // fractions (0..1) that add up to 1; channel 0 is filament A (E), channel 1 filament B, and so on
 // up to five channels (CMYK + white, as seed 001 plans). Plain value type, compared exactly.
+// It lives with the plan (planning/LayerPlan.h: PrintPlan::mixes) because the plan carries the
+// mixes: the mixing stage (mixing/MixingPass.h) fills them and the G-code writer reads them, both
+// above planning in the pipeline.
 #include <array>
 #include <cstddef>
 

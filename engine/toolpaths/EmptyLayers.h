@@ -6,20 +6,22 @@
 // slicer left out open pieces of an unclosed mesh counts as non-empty (CuraEngine keeps it). Known
 // difference: CuraEngine also drops a first layer whose loops are tiny but above that circumference (knot2 at
 // 0.2 mm layers on the Ender-3).
+//
+// Part of the toolpath stage: generateGroupToolpaths (toolpaths/GroupToolpaths.h) drops them last.
 #include <cstddef>
 #include <vector>
 
-#include "slicing/LayerHeights.h"
-#include "slicing/Slicer.h"
 #include "toolpaths/GroupToolpaths.h"
 
 namespace mixengine {
 
-std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths,
-                               const std::vector<std::vector<SlicedLayer>>& meshes);
+/// The number of empty layers at the bottom of `toolpaths` made from `input` (all of them when
+/// nothing prints).
+std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths, const ToolpathInput& input);
 
-/// Removes the first `count` layers of every per-layer list; heights keep their first entries.
-void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths, std::vector<LayerZ>& heights,
-                       std::vector<Paths>& comb_areas);
+/// Removes the first `count` layers of every per-layer list of `toolpaths`; toolpaths.heights
+/// keeps its first entries (the print starts at the first layer's height) and
+/// toolpaths.first_sliced_layer grows by `count`.
+void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths);
 
 }  // namespace mixengine

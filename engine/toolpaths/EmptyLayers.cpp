@@ -1,15 +1,15 @@
-#include "pipeline/EmptyLayers.h"
+#include "toolpaths/EmptyLayers.h"
 
 #include <algorithm>
 
 namespace mixengine {
 namespace {
 
-bool layerEmpty(const GroupToolpaths& toolpaths, const std::vector<std::vector<SlicedLayer>>& meshes,
-                std::size_t i) {
+bool layerEmpty(const GroupToolpaths& toolpaths, const ToolpathInput& input, std::size_t i) {
     if (i < toolpaths.support.size() && !toolpaths.support[i].empty())
         return false;
-    return std::none_of(meshes.begin(), meshes.end(), [&](const auto& layers) {
+    return std::none_of(input.meshes.begin(), input.meshes.end(), [&](const ToolpathMeshInput& mesh) {
+        const std::vector<SlicedLayer>& layers = *mesh.layers;
         return i < layers.size() && (!layers[i].outlines.empty() || !layers[i].open_polylines.empty());
     });
 }
@@ -21,19 +21,17 @@ void dropFront(std::vector<T>& list, std::size_t count) {
 
 }  // namespace
 
-std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths,
-                               const std::vector<std::vector<SlicedLayer>>& meshes) {
+std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths, const ToolpathInput& input) {
     std::size_t layers = 0;
-    for (const auto& mesh : meshes)
-        layers = std::max(layers, mesh.size());
+    for (const ToolpathMeshInput& mesh : input.meshes)
+        layers = std::max(layers, mesh.layers->size());
     std::size_t count = 0;
-    while (count < layers && layerEmpty(toolpaths, meshes, count))
+    while (count < layers && layerEmpty(toolpaths, input, count))
         ++count;
     return count;  // all of them when nothing prints (a flat or floating facet): 0 layers, as CuraEngine
 }
 
-void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths, std::vector<LayerZ>& heights,
-                       std::vector<Paths>& comb_areas) {
+void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths) {
     if (count == 0)
         return;
     for (MeshToolpaths& mesh : toolpaths.meshes)
@@ -41,8 +39,8 @@ void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths, std::vector
     dropFront(toolpaths.support, count);
     dropFront(toolpaths.prime_tower, count);
     dropFront(toolpaths.ooze_shield, count);
-    dropFront(comb_areas, count);
-    heights.resize(heights.size() - std::min(count, heights.size()));
+    toolpaths.heights.resize(toolpaths.heights.size() - std::min(count, toolpaths.heights.size()));
+    toolpaths.first_sliced_layer += count;
 }
 
 }  // namespace mixengine

@@ -1,6 +1,7 @@
 #pragma once
 // What a slice is asked for, whichever way it arrives (command line or Cura's socket): plain data
-// handed to the pipeline. Setting values are text, as the user or Cura gave them.
+// handed to the pipeline (pipeline/Scene.h reads it), so the front ends in communication/ reach it
+// downwards. Setting values are text, as the user or Cura gave them.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -9,6 +10,7 @@
 #include "mesh/MeshBuilder.h"
 #include "mesh/ModelReader.h"
 #include "settings/Resolver.h"
+#include "settings/profiles/ProfileSelection.h"
 
 namespace mixengine {
 
@@ -24,14 +26,6 @@ struct MeshInput {
 struct MeshGroupInput {
     SettingValues settings;  ///< -g values
     std::vector<MeshInput> meshes;
-};
-
-/// Cura's profile containers to stack under the user's values (settings/ProfileStack.h). Empty
-/// names mean the machine's default (its metadata: preferred_variant_name, preferred_material,
-/// preferred_quality_type); `enabled` false means definitions only, as CuraEngine's CLI does.
-struct ProfileSelection {
-    bool enabled = false;
-    std::string variant, material, quality, intent;
 };
 
 struct SliceRequest {
