@@ -1,8 +1,12 @@
 // The functions of Python's math module, with its domain and range errors.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "geometry/Angles.h"
 #include "settings/formula/Builtins.h"
 #include "settings/formula/FormulaError.h"
 #include "settings/formula/Numeric.h"
@@ -40,10 +44,21 @@ Value integral(Builtin id, const Value& v, double (*rounding)(double)) {
     return truncToInt(rounding(realArg(id, v)));
 }
 
-double logarithm(Builtin id, double x) {
+/// x, unless x <= 0 (or a NaN compares so): a math domain error.
+double positive(Builtin id, double x) {
     if (x <= 0)
         domainError(id);
-    return std::log(x);
+    return x;
+}
+
+double nonNegative(Builtin id, double x) {
+    if (x < 0)
+        domainError(id);
+    return x;
+}
+
+double logarithm(Builtin id, double x) {
+    return std::log(positive(id, x));
 }
 
 double mathPow(Builtin id, double x, double y) {
@@ -80,75 +95,100 @@ double inverseTrigonometric(Builtin id, double x, double (*f)(double)) {
     return f(x);
 }
 
+/// The real arguments of a math function: x, and y when it was given a second argument.
+struct Reals {
+    double x = 0;
+    std::optional<double> y;
+};
+
+/// math.log(x) or math.log(x, base).
+Value mathLog(Builtin id, const Reals& a) {
+    const double lnx = logarithm(id, a.x);
+    if (!a.y)
+        return lnx;
+    const double lnBase = logarithm(id, *a.y);
+    if (lnBase == 0.0)
+        throw EvalProblem("math.log(): float division by zero");
+    return lnx / lnBase;
+}
+
+using RealFunction = Value (*)(Builtin id, const Reals& a);
+
+struct RealEntry {
+    Builtin id;
+    RealFunction call;
+};
+
+/// The math functions of real arguments (all but ceil, floor and trunc). A missing y reads as 0.
+constexpr std::array<RealEntry, 18> kRealFunctions = {{
+    {Builtin::MathSqrt, [](Builtin id, const Reals& a) -> Value { return std::sqrt(nonNegative(id, a.x)); }},
+    {Builtin::MathLog, mathLog},
+    {Builtin::MathLog10, [](Builtin id, const Reals& a) -> Value { return std::log10(positive(id, a.x)); }},
+    {Builtin::MathLog2, [](Builtin id, const Reals& a) -> Value { return std::log2(positive(id, a.x)); }},
+    {Builtin::MathExp,
+     [](Builtin id, const Reals& a) -> Value { return checkRange(id, std::exp(a.x), a.x); }},
+    {Builtin::MathSin,
+     [](Builtin id, const Reals& a) -> Value {
+         return trigonometric(id, a.x, [](double d) { return std::sin(d); });
+     }},
+    {Builtin::MathCos,
+     [](Builtin id, const Reals& a) -> Value {
+         return trigonometric(id, a.x, [](double d) { return std::cos(d); });
+     }},
+    {Builtin::MathTan,
+     [](Builtin id, const Reals& a) -> Value {
+         return trigonometric(id, a.x, [](double d) { return std::tan(d); });
+     }},
+    {Builtin::MathAsin,
+     [](Builtin id, const Reals& a) -> Value {
+         return inverseTrigonometric(id, a.x, [](double d) { return std::asin(d); });
+     }},
+    {Builtin::MathAcos,
+     [](Builtin id, const Reals& a) -> Value {
+         return inverseTrigonometric(id, a.x, [](double d) { return std::acos(d); });
+     }},
+    {Builtin::MathAtan, [](Builtin, const Reals& a) -> Value { return std::atan(a.x); }},
+    {Builtin::MathAtan2, [](Builtin, const Reals& a) -> Value { return std::atan2(a.x, a.y.value_or(0.0)); }},
+    {Builtin::MathRadians, [](Builtin, const Reals& a) -> Value { return a.x * kRadiansPerDegree; }},
+    {Builtin::MathDegrees, [](Builtin, const Reals& a) -> Value { return a.x * (180.0 / std::numbers::pi); }},
+    {Builtin::MathFabs, [](Builtin, const Reals& a) -> Value { return std::fabs(a.x); }},
+    {Builtin::MathPow,
+     [](Builtin id, const Reals& a) -> Value { return mathPow(id, a.x, a.y.value_or(0.0)); }},
+    {Builtin::MathIsclose, [](Builtin, const Reals& a) -> Value { return isclose(a.x, a.y.value_or(0.0)); }},
+    {Builtin::MathHypot, [](Builtin, const Reals& a) -> Value { return std::hypot(a.x, a.y.value_or(0.0)); }},
+}};
+
+/// math.ceil / floor / trunc: the rounding each applies to a float.
+struct IntegralEntry {
+    Builtin id;
+    double (*rounding)(double);
+};
+
+constexpr std::array<IntegralEntry, 3> kIntegralFunctions = {{
+    {Builtin::MathCeil, [](double d) { return std::ceil(d); }},
+    {Builtin::MathFloor, [](double d) { return std::floor(d); }},
+    {Builtin::MathTrunc, [](double d) { return std::trunc(d); }},
+}};
+
+template <class Entry, std::size_t N>
+const Entry* findEntry(const std::array<Entry, N>& table, Builtin id) {
+    const auto it = std::find_if(table.begin(), table.end(), [id](const Entry& e) { return e.id == id; });
+    return it == table.end() ? nullptr : &*it;
+}
+
 }  // namespace
 
 Value callMathBuiltin(Builtin id, const std::vector<Value>& args) {
-    switch (id) {
-        case Builtin::MathCeil:
-            return integral(id, args[0], [](double d) { return std::ceil(d); });
-        case Builtin::MathFloor:
-            return integral(id, args[0], [](double d) { return std::floor(d); });
-        case Builtin::MathTrunc:
-            return integral(id, args[0], [](double d) { return std::trunc(d); });
-        default:
-            break;
-    }
-    const double x = realArg(id, args[0]);
-    const double y = args.size() > 1 ? realArg(id, args[1]) : 0.0;
-    switch (id) {
-        case Builtin::MathSqrt:
-            if (x < 0)
-                domainError(id);
-            return std::sqrt(x);
-        case Builtin::MathLog: {
-            const double lnx = logarithm(id, x);
-            if (args.size() == 1)
-                return lnx;
-            const double lnBase = logarithm(id, y);
-            if (lnBase == 0.0)
-                throw EvalProblem("math.log(): float division by zero");
-            return lnx / lnBase;
-        }
-        case Builtin::MathLog10:
-            if (x <= 0)
-                domainError(id);
-            return std::log10(x);
-        case Builtin::MathLog2:
-            if (x <= 0)
-                domainError(id);
-            return std::log2(x);
-        case Builtin::MathExp:
-            return checkRange(id, std::exp(x), x);
-        case Builtin::MathSin:
-            return trigonometric(id, x, [](double d) { return std::sin(d); });
-        case Builtin::MathCos:
-            return trigonometric(id, x, [](double d) { return std::cos(d); });
-        case Builtin::MathTan:
-            return trigonometric(id, x, [](double d) { return std::tan(d); });
-        case Builtin::MathAsin:
-            return inverseTrigonometric(id, x, [](double d) { return std::asin(d); });
-        case Builtin::MathAcos:
-            return inverseTrigonometric(id, x, [](double d) { return std::acos(d); });
-        case Builtin::MathAtan:
-            return std::atan(x);
-        case Builtin::MathAtan2:
-            return std::atan2(x, y);
-        case Builtin::MathRadians:
-            return x * (std::numbers::pi / 180.0);
-        case Builtin::MathDegrees:
-            return x * (180.0 / std::numbers::pi);
-        case Builtin::MathFabs:
-            return std::fabs(x);
-        case Builtin::MathPow:
-            return mathPow(id, x, y);
-        case Builtin::MathIsclose:
-            return isclose(x, y);
-        case Builtin::MathHypot:
-            return std::hypot(x, y);
-        default:
-            break;
-    }
-    throw detail::EvalProblem("internal: " + std::string(builtinName(id)) + " is not a math function");
+    if (const IntegralEntry* integralEntry = findEntry(kIntegralFunctions, id))
+        return integral(id, args[0], integralEntry->rounding);
+    const RealEntry* real = findEntry(kRealFunctions, id);
+    if (!real)
+        throw detail::EvalProblem("internal: " + std::string(builtinName(id)) + " is not a math function");
+    Reals a;
+    a.x = realArg(id, args[0]);
+    if (args.size() > 1)
+        a.y = realArg(id, args[1]);
+    return real->call(id, a);
 }
 
 }  // namespace mixengine::formula
