@@ -44,21 +44,30 @@ Value integral(Builtin id, const Value& v, double (*rounding)(double)) {
     return truncToInt(rounding(realArg(id, v)));
 }
 
-/// x, unless x <= 0 (or a NaN compares so): a math domain error.
-double positive(Builtin id, double x) {
-    if (x <= 0)
-        domainError(id);
-    return x;
-}
+/// Where a one-argument math function is defined; outside, Python raises "math domain error". A
+/// NaN is inside every domain (the function then returns NaN).
+enum class Domain { Reals, Finite, NonNegative, Positive, UnitInterval };
 
-double nonNegative(Builtin id, double x) {
-    if (x < 0)
-        domainError(id);
-    return x;
+bool outside(double x, Domain domain) {
+    switch (domain) {
+        case Domain::Finite:
+            return std::isinf(x);
+        case Domain::NonNegative:
+            return x < 0;
+        case Domain::Positive:
+            return x <= 0;
+        case Domain::UnitInterval:
+            return x < -1.0 || x > 1.0;
+        case Domain::Reals:
+            break;
+    }
+    return false;
 }
 
 double logarithm(Builtin id, double x) {
-    return std::log(positive(id, x));
+    if (outside(x, Domain::Positive))
+        domainError(id);
+    return std::log(x);
 }
 
 double mathPow(Builtin id, double x, double y) {
@@ -83,18 +92,6 @@ bool isclose(double a, double b) {
     return diff <= std::fabs(kRelTol * b) || diff <= std::fabs(kRelTol * a);
 }
 
-double trigonometric(Builtin id, double x, double (*f)(double)) {
-    if (std::isinf(x))
-        domainError(id);
-    return f(x);
-}
-
-double inverseTrigonometric(Builtin id, double x, double (*f)(double)) {
-    if (x < -1.0 || x > 1.0)
-        domainError(id);
-    return f(x);
-}
-
 /// The real arguments of a math function: x, and y when it was given a second argument.
 struct Reals {
     double x = 0;
@@ -112,46 +109,40 @@ Value mathLog(Builtin id, const Reals& a) {
     return lnx / lnBase;
 }
 
-using RealFunction = Value (*)(Builtin id, const Reals& a);
-
-struct RealEntry {
+/// A math function of one real argument, defined on `domain`.
+struct UnaryEntry {
     Builtin id;
-    RealFunction call;
+    double (*call)(double x);
+    Domain domain;
 };
 
-/// The math functions of real arguments (all but ceil, floor and trunc). A missing y reads as 0.
-constexpr std::array<RealEntry, 18> kRealFunctions = {{
-    {Builtin::MathSqrt, [](Builtin id, const Reals& a) -> Value { return std::sqrt(nonNegative(id, a.x)); }},
+constexpr std::array<UnaryEntry, 12> kUnaryFunctions = {{
+    {Builtin::MathSqrt, [](double x) { return std::sqrt(x); }, Domain::NonNegative},
+    {Builtin::MathLog10, [](double x) { return std::log10(x); }, Domain::Positive},
+    {Builtin::MathLog2, [](double x) { return std::log2(x); }, Domain::Positive},
+    {Builtin::MathSin, [](double x) { return std::sin(x); }, Domain::Finite},
+    {Builtin::MathCos, [](double x) { return std::cos(x); }, Domain::Finite},
+    {Builtin::MathTan, [](double x) { return std::tan(x); }, Domain::Finite},
+    {Builtin::MathAsin, [](double x) { return std::asin(x); }, Domain::UnitInterval},
+    {Builtin::MathAcos, [](double x) { return std::acos(x); }, Domain::UnitInterval},
+    {Builtin::MathAtan, [](double x) { return std::atan(x); }, Domain::Reals},
+    {Builtin::MathRadians, [](double x) { return x * kRadiansPerDegree; }, Domain::Reals},
+    {Builtin::MathDegrees, [](double x) { return x * (180.0 / std::numbers::pi); }, Domain::Reals},
+    {Builtin::MathFabs, [](double x) { return std::fabs(x); }, Domain::Reals},
+}};
+
+/// The other math functions of real arguments: log (1 or 2 arguments), exp (range error) and the
+/// two-argument ones.
+struct RealEntry {
+    Builtin id;
+    Value (*call)(Builtin id, const Reals& a);
+};
+
+constexpr std::array<RealEntry, 6> kRealFunctions = {{
     {Builtin::MathLog, mathLog},
-    {Builtin::MathLog10, [](Builtin id, const Reals& a) -> Value { return std::log10(positive(id, a.x)); }},
-    {Builtin::MathLog2, [](Builtin id, const Reals& a) -> Value { return std::log2(positive(id, a.x)); }},
     {Builtin::MathExp,
      [](Builtin id, const Reals& a) -> Value { return checkRange(id, std::exp(a.x), a.x); }},
-    {Builtin::MathSin,
-     [](Builtin id, const Reals& a) -> Value {
-         return trigonometric(id, a.x, [](double d) { return std::sin(d); });
-     }},
-    {Builtin::MathCos,
-     [](Builtin id, const Reals& a) -> Value {
-         return trigonometric(id, a.x, [](double d) { return std::cos(d); });
-     }},
-    {Builtin::MathTan,
-     [](Builtin id, const Reals& a) -> Value {
-         return trigonometric(id, a.x, [](double d) { return std::tan(d); });
-     }},
-    {Builtin::MathAsin,
-     [](Builtin id, const Reals& a) -> Value {
-         return inverseTrigonometric(id, a.x, [](double d) { return std::asin(d); });
-     }},
-    {Builtin::MathAcos,
-     [](Builtin id, const Reals& a) -> Value {
-         return inverseTrigonometric(id, a.x, [](double d) { return std::acos(d); });
-     }},
-    {Builtin::MathAtan, [](Builtin, const Reals& a) -> Value { return std::atan(a.x); }},
     {Builtin::MathAtan2, [](Builtin, const Reals& a) -> Value { return std::atan2(a.x, a.y.value_or(0.0)); }},
-    {Builtin::MathRadians, [](Builtin, const Reals& a) -> Value { return a.x * kRadiansPerDegree; }},
-    {Builtin::MathDegrees, [](Builtin, const Reals& a) -> Value { return a.x * (180.0 / std::numbers::pi); }},
-    {Builtin::MathFabs, [](Builtin, const Reals& a) -> Value { return std::fabs(a.x); }},
     {Builtin::MathPow,
      [](Builtin id, const Reals& a) -> Value { return mathPow(id, a.x, a.y.value_or(0.0)); }},
     {Builtin::MathIsclose, [](Builtin, const Reals& a) -> Value { return isclose(a.x, a.y.value_or(0.0)); }},
@@ -181,14 +172,18 @@ const Entry* findEntry(const std::array<Entry, N>& table, Builtin id) {
 Value callMathBuiltin(Builtin id, const std::vector<Value>& args) {
     if (const IntegralEntry* integralEntry = findEntry(kIntegralFunctions, id))
         return integral(id, args[0], integralEntry->rounding);
-    const RealEntry* real = findEntry(kRealFunctions, id);
-    if (!real)
-        throw detail::EvalProblem("internal: " + std::string(builtinName(id)) + " is not a math function");
     Reals a;
     a.x = realArg(id, args[0]);
     if (args.size() > 1)
         a.y = realArg(id, args[1]);
-    return real->call(id, a);
+    if (const UnaryEntry* unary = findEntry(kUnaryFunctions, id)) {
+        if (outside(a.x, unary->domain))
+            domainError(id);
+        return unary->call(a.x);
+    }
+    if (const RealEntry* real = findEntry(kRealFunctions, id))
+        return real->call(id, a);
+    throw detail::EvalProblem("internal: " + std::string(builtinName(id)) + " is not a math function");
 }
 
 }  // namespace mixengine::formula
