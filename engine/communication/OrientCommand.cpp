@@ -4,8 +4,11 @@
 // Exactly two parts are optimised (A = the first, B = the second; files or the parts of one
 // multi-part file). One part only is not an error: the command says there is nothing to optimise
 // and exits with 0.
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string_view>
 
 #include "common/Error.h"
 #include "common/Log.h"
@@ -40,6 +43,51 @@ Vec3 parseOffset(const std::string& text) {
     return {x, y, 0};
 }
 
+/// The options passed on to applyFlags() with their value ("-m4" is also accepted as "-m 4").
+constexpr std::array<std::string_view, 7> kFlagOptions = {
+    "--method", "--measure", "--objective", "--resolution", "--verify", "--grid-step", "-m"};
+
+/// The output path an option names (--report, --plot, --write), or nullptr.
+std::filesystem::path* outputPath(OrientArgs& o, const std::string& option) {
+    if (option == "--report")
+        return &o.report;
+    if (option == "--plot")
+        return &o.plot;
+    return option == "--write" ? &o.write_dir : nullptr;
+}
+
+/// Applies an option with a value; false when `w` is not one. `value` takes the next word.
+template <class NextValue>
+bool valueOption(OrientArgs& o, const std::string& w, NextValue&& value) {
+    if (w == "--offset") {
+        o.offset_mm = parseOffset(value());
+    } else if (w == "-j") {
+        o.machine = value();
+    } else if (w == "-s") {
+        o.settings.insert(splitSettingArgument(value()));
+    } else if (std::filesystem::path* path = outputPath(o, w)) {
+        *path = value();
+    } else if (std::find(kFlagOptions.begin(), kFlagOptions.end(), w) != kFlagOptions.end()) {
+        o.flags.emplace_back(w, value());
+    } else {
+        return false;
+    }
+    return true;
+}
+
+/// Applies an option or file name without a value of its own.
+void plainWord(OrientArgs& o, const std::string& w) {
+    if (w.starts_with("-m") && w.size() > 2) {
+        o.flags.emplace_back("-m", w.substr(2));
+    } else if (w == "-v" || w == "-vv") {
+        o.verbosity += static_cast<int>(w.size()) - 1;
+    } else if (w.starts_with("-")) {
+        throw InputError("orient: unknown option '" + w + "' (see mixengine help)");
+    } else {
+        o.files.emplace_back(w);
+    }
+}
+
 OrientArgs parseArgs(const Words& args) {
     OrientArgs o;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -49,26 +97,8 @@ OrientArgs parseArgs(const Words& args) {
                 throw InputError("orient: " + w + " needs a value");
             return args[++i];
         };
-        if (w == "--offset") {
-            o.offset_mm = parseOffset(value());
-        } else if (w == "-j") {
-            o.machine = value();
-        } else if (w == "-s") {
-            o.settings.insert(splitSettingArgument(value()));
-        } else if (w == "--report" || w == "--plot" || w == "--write") {
-            (w == "--report" ? o.report : w == "--plot" ? o.plot : o.write_dir) = value();
-        } else if (w == "--method" || w == "--measure" || w == "--objective" || w == "--resolution" ||
-                   w == "--verify" || w == "--grid-step" || w == "-m") {
-            o.flags.emplace_back(w, value());
-        } else if (w.starts_with("-m") && w.size() > 2) {
-            o.flags.emplace_back("-m", w.substr(2));
-        } else if (w == "-v" || w == "-vv") {
-            o.verbosity += static_cast<int>(w.size()) - 1;
-        } else if (w.starts_with("-")) {
-            throw InputError("orient: unknown option '" + w + "' (see mixengine help)");
-        } else {
-            o.files.emplace_back(w);
-        }
+        if (!valueOption(o, w, value))
+            plainWord(o, w);
     }
     return o;
 }

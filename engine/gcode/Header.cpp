@@ -61,15 +61,16 @@ std::string filamentList(const PrintSummary& summary) {
     return text.empty() ? "0m" : text;
 }
 
-std::string boundsLines(const PrintSummary& summary) {
-    std::string h;
-    h += ";MINX:" + formatCoordMm(micronsToMm(summary.min.x)) + "\n";
-    h += ";MINY:" + formatCoordMm(micronsToMm(summary.min.y)) + "\n";
-    h += ";MINZ:" + formatCoordMm(micronsToMm(summary.min.z)) + "\n";
-    h += ";MAXX:" + formatCoordMm(micronsToMm(summary.max.x)) + "\n";
-    h += ";MAXY:" + formatCoordMm(micronsToMm(summary.max.y)) + "\n";
-    h += ";MAXZ:" + formatCoordMm(micronsToMm(summary.max.z)) + "\n";
-    return h;
+/// "<key>X:x", "<key>Y:y", "<key>Z:z" lines of a corner, in millimetres.
+std::string cornerLines(const std::string& key, const Point3& corner_um) {
+    return key + "X:" + formatCoordMm(micronsToMm(corner_um.x)) + "\n" + key +
+           "Y:" + formatCoordMm(micronsToMm(corner_um.y)) + "\n" + key +
+           "Z:" + formatCoordMm(micronsToMm(corner_um.z)) + "\n";
+}
+
+/// The six bounding-box lines, min corner first: (";MIN", ";MAX") gives ";MINX:" ... ";MAXZ:".
+std::string boundsLines(const PrintSummary& summary, const std::string& min_key, const std::string& max_key) {
+    return cornerLines(min_key, summary.min) + cornerLines(max_key, summary.max);
 }
 
 std::string seconds(double s) {
@@ -96,12 +97,7 @@ std::string griffinHeader(const PrintSummary& summary) {
     h += ";BUILD_PLATE.INITIAL_TEMPERATURE:" + formatDecimal(summary.build_plate_temperature_c, 1) + "\n";
     h += ";PRINT.TIME:" + seconds(summary.print_time_s) + "\n";
     h += ";PRINT.GROUPS:" + std::to_string(summary.print_groups) + "\n";
-    h += ";PRINT.SIZE.MIN.X:" + formatCoordMm(micronsToMm(summary.min.x)) + "\n";
-    h += ";PRINT.SIZE.MIN.Y:" + formatCoordMm(micronsToMm(summary.min.y)) + "\n";
-    h += ";PRINT.SIZE.MIN.Z:" + formatCoordMm(micronsToMm(summary.min.z)) + "\n";
-    h += ";PRINT.SIZE.MAX.X:" + formatCoordMm(micronsToMm(summary.max.x)) + "\n";
-    h += ";PRINT.SIZE.MAX.Y:" + formatCoordMm(micronsToMm(summary.max.y)) + "\n";
-    h += ";PRINT.SIZE.MAX.Z:" + formatCoordMm(micronsToMm(summary.max.z)) + "\n";
+    h += boundsLines(summary, ";PRINT.SIZE.MIN.", ";PRINT.SIZE.MAX.");
     h += ";END_OF_HEADER\n";
     return h;
 }
@@ -115,7 +111,7 @@ std::string ultiGCodeHeader(const PrintSummary& summary) {
     }
     const double nozzle = summary.extruders.empty() ? 0.4 : summary.extruders.front().nozzle_diameter_mm;
     h += ";NOZZLE_DIAMETER:" + formatDecimal(nozzle, 3) + "\n";
-    return h + boundsLines(summary);
+    return h + boundsLines(summary, ";MIN", ";MAX");
 }
 
 }  // namespace
@@ -131,7 +127,7 @@ std::string makeHeader(const PrintSummary& summary) {
     h += ";TIME:" + std::to_string(static_cast<long long>(summary.print_time_s)) + "\n";
     h += ";Filament used: " + filamentList(summary) + "\n";
     h += ";Layer height: " + formatDecimal(summary.layer_height_mm, 3) + "\n";
-    return h + boundsLines(summary) + generated;
+    return h + boundsLines(summary, ";MIN", ";MAX") + generated;
 }
 
 }  // namespace mixengine

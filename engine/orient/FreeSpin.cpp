@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
+
+#include "geometry/Angles.h"
 
 namespace mixengine::orient {
 namespace {
 
-constexpr double kRad = std::numbers::pi / 180.0;
 constexpr double kBedToleranceMm = 0.05;
 
 enum class Key { Contact, Height, Overhang };
@@ -96,7 +96,8 @@ SpinScore SurfaceSample::score(const Matrix3& r, double overhang_angle_deg) cons
         hi = std::max(hi, z[i]);
     }
     s.height_mm = vertices_.empty() ? 0 : hi - lo;
-    const double flat = std::cos(0.5 * kRad), steep = std::sin(overhang_angle_deg * kRad);
+    const double flat = std::cos(0.5 * kRadiansPerDegree),
+                 steep = std::sin(overhang_angle_deg * kRadiansPerDegree);
     for (std::size_t f = 0; f < faces_.size(); ++f) {
         const Vec3& n = normals_[f];
         const double nz = r.m[2][0] * n.x + r.m[2][1] * n.y + r.m[2][2] * n.z;
@@ -146,7 +147,7 @@ std::vector<double> spinsToTry(const LatLon& angles, const Vec3& d_unit,
         const Vec3 m = base.apply(n);
         if (std::abs(dot(m, d_unit)) > 1e-3)
             continue;  // this face cannot lie on the bed for this direction
-        const double spin = std::atan2(dot(d_unit, cross(m, down)), dot(m, down)) / kRad;
+        const double spin = std::atan2(dot(d_unit, cross(m, down)), dot(m, down)) / kRadiansPerDegree;
         spins.push_back(spin < 0 ? spin + 360.0 : spin);
     }
     return spins;

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
+
+#include "geometry/Angles.h"
 
 namespace mixengine::orient {
 namespace {
-
-constexpr double kRadPerDeg = std::numbers::pi / 180.0;
 
 double wrapDegrees(double a) {
     double r = std::fmod(a, 360.0);
@@ -48,7 +47,8 @@ Vec3 normalised(const Vec3& v) {
 
 Matrix3 rotationAbout(const Vec3& axis, double angle_deg) {
     const Vec3 k = normalised(axis);
-    const double c = std::cos(angle_deg * kRadPerDeg), s = std::sin(angle_deg * kRadPerDeg), t = 1 - c;
+    const double c = std::cos(angle_deg * kRadiansPerDegree), s = std::sin(angle_deg * kRadiansPerDegree),
+                 t = 1 - c;
     Matrix3 r;
     r.m[0][0] = c + k.x * k.x * t;
     r.m[0][1] = k.x * k.y * t - k.z * s;
@@ -77,7 +77,7 @@ LatLon latLonOf(const Vec3& u_in, const Vec3& d_unit) {
     const double alpha = std::atan2(d_unit.y, d_unit.x);
     const double beta = std::asin(std::clamp(u.y, -1.0, 1.0));
     const double latitude = std::hypot(u.x, u.z) < 1e-12 ? 0.0 : std::atan2(-u.z, u.x);
-    return {wrapDegrees(latitude / kRadPerDeg), wrapDegrees((alpha - beta) / kRadPerDeg)};
+    return {wrapDegrees(latitude / kRadiansPerDegree), wrapDegrees((alpha - beta) / kRadiansPerDegree)};
 }
 
 Matrix3 spunRotation(const LatLon& angles, const Vec3& d_unit, double spin_deg) {

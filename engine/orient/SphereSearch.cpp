@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
+#include "geometry/Angles.h"
 #include "orient/Rotation.h"
 
 namespace mixengine::orient {
 namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
 
 struct Sample {
     double v;
@@ -24,7 +22,7 @@ std::pair<Vec3, Vec3> tangentBasis(const Vec3& u) {
 }
 
 double angleBetweenDeg(const Vec3& a, const Vec3& b) {
-    return std::acos(std::clamp(dot(a, b), -1.0, 1.0)) / kRad;
+    return std::acos(std::clamp(dot(a, b), -1.0, 1.0)) / kRadiansPerDegree;
 }
 
 /// Shrinking pattern search on the sphere around u, from 0.5° down to 0.01°.
@@ -33,7 +31,8 @@ DirectionCandidate refine(const DirectionFunction& v, Vec3 u, double value, Sphe
         const auto [t1, t2] = tangentBasis(u);
         bool moved = false;
         for (const Vec3& dir : {t1, t1 * -1.0, t2, t2 * -1.0}) {
-            const Vec3 trial = normalised(u * std::cos(step * kRad) + dir * std::sin(step * kRad));
+            const Vec3 trial =
+                normalised(u * std::cos(step * kRadiansPerDegree) + dir * std::sin(step * kRadiansPerDegree));
             const double tv = v(trial);
             ++stats.evaluations;
             if (tv < value) {
@@ -52,7 +51,8 @@ DirectionCandidate circleMinimum(const DirectionFunction& v, const Vec3& normal,
                                  SphereSearchStats& stats) {
     const auto [e1, e2] = tangentBasis(normalised(normal));
     auto at = [&](double a_deg) {
-        return normalised(e1 * std::cos(a_deg * kRad) + e2 * std::sin(a_deg * kRad));
+        return normalised(e1 * std::cos(a_deg * kRadiansPerDegree) +
+                          e2 * std::sin(a_deg * kRadiansPerDegree));
     };
     double best_angle = 0, best = v(at(0));
     for (double a = step_deg; a < 360.0; a += step_deg) {
@@ -75,42 +75,67 @@ DirectionCandidate circleMinimum(const DirectionFunction& v, const Vec3& normal,
 }  // namespace
 
 Vec3 sphericalDirection(double polar_deg, double azimuth_deg) {
-    const double p = polar_deg * kRad, a = azimuth_deg * kRad;
+    const double p = polar_deg * kRadiansPerDegree, a = azimuth_deg * kRadiansPerDegree;
     return {std::sin(p) * std::cos(a), std::sin(p) * std::sin(a), std::cos(p)};
 }
 
-std::vector<DirectionCandidate> searchSphere(const DirectionFunction& v,
-                                             const std::vector<Vec3>& flat_normals,
-                                             const SphereSearchOptions& options, SphereSearchStats& stats) {
-    const int polar_n = static_cast<int>(std::lround(180.0 / options.grid_step_deg)) + 1;
-    const int azimuth_n = static_cast<int>(std::lround(360.0 / options.grid_step_deg));
-    std::vector<double> grid(static_cast<std::size_t>(polar_n) * azimuth_n);
-    for (int p = 0; p < polar_n; ++p) {
-        for (int a = 0; a < azimuth_n; ++a) {
-            grid[p * azimuth_n + a] =
-                v(sphericalDirection(p * options.grid_step_deg, a * options.grid_step_deg));
+namespace {
+
+/// V on the grid of polar angle × azimuth, row (polar) by row.
+struct SphereGrid {
+    int polar_n = 0;
+    int azimuth_n = 0;
+    std::vector<double> values;
+
+    double at(int p, int a) const { return values[p * azimuth_n + a]; }
+};
+
+SphereGrid sampleGrid(const DirectionFunction& v, double step_deg, SphereSearchStats& stats) {
+    SphereGrid g;
+    g.polar_n = static_cast<int>(std::lround(180.0 / step_deg)) + 1;
+    g.azimuth_n = static_cast<int>(std::lround(360.0 / step_deg));
+    g.values.resize(static_cast<std::size_t>(g.polar_n) * g.azimuth_n);
+    for (int p = 0; p < g.polar_n; ++p) {
+        for (int a = 0; a < g.azimuth_n; ++a)
+            g.values[p * g.azimuth_n + a] = v(sphericalDirection(p * step_deg, a * step_deg));
+    }
+    stats.evaluations += g.values.size();
+    return g;
+}
+
+/// No neighbour (8-neighbourhood; azimuth wraps, the poles' rows end) is lower.
+bool isLocalMinimum(const SphereGrid& g, int p, int a) {
+    const double value = g.at(p, a);
+    for (int dp = -1; dp <= 1; ++dp) {
+        const int q = p + dp;
+        if (q < 0 || q >= g.polar_n)
+            continue;
+        for (int da = -1; da <= 1; ++da) {
+            if ((dp != 0 || da != 0) && !(value <= g.at(q, (a + da + g.azimuth_n) % g.azimuth_n)))
+                return false;
         }
     }
-    stats.evaluations += grid.size();
+    return true;
+}
+
+/// The grid's local minima, lowest first (ties in grid order).
+std::vector<Sample> localMinima(const SphereGrid& g) {
     std::vector<Sample> minima;
-    for (int p = 0; p < polar_n; ++p) {
-        for (int a = 0; a < azimuth_n; ++a) {
-            const double value = grid[p * azimuth_n + a];
-            bool minimum = true;
-            for (int dp = -1; dp <= 1 && minimum; ++dp) {
-                for (int da = -1; da <= 1 && minimum; ++da) {
-                    const int q = p + dp;
-                    if (q < 0 || q >= polar_n || (dp == 0 && da == 0))
-                        continue;
-                    minimum = value <= grid[q * azimuth_n + (a + da + azimuth_n) % azimuth_n];
-                }
-            }
-            if (minimum)
-                minima.push_back({value, p, a});
+    for (int p = 0; p < g.polar_n; ++p) {
+        for (int a = 0; a < g.azimuth_n; ++a) {
+            if (isLocalMinimum(g, p, a))
+                minima.push_back({g.at(p, a), p, a});
         }
     }
     std::stable_sort(minima.begin(), minima.end(),
                      [](const Sample& x, const Sample& y) { return x.v < y.v; });
+    return minima;
+}
+
+/// The lowest minima, at most options.minima, each at least separation_deg from those kept before
+/// it (and from their opposites when V is even).
+std::vector<DirectionCandidate> separatedMinima(const std::vector<Sample>& minima,
+                                                const SphereSearchOptions& options) {
     std::vector<DirectionCandidate> kept;
     for (const Sample& s : minima) {
         if (static_cast<int>(kept.size()) >= options.minima)
@@ -123,13 +148,18 @@ std::vector<DirectionCandidate> searchSphere(const DirectionFunction& v,
         if (!near)
             kept.push_back({u, s.v, "", -1});
     }
-    std::vector<DirectionCandidate> result;
-    for (const DirectionCandidate& k : kept)
-        result.push_back(refine(v, k.u, k.v_estimate_mm3, stats));
+    return kept;
+}
+
+/// The great-circle candidate of each flat face whose circle no earlier face shares.
+void appendFlatFaceCandidates(const DirectionFunction& v, const std::vector<Vec3>& flat_normals,
+                              const SphereSearchOptions& options, SphereSearchStats& stats,
+                              std::vector<DirectionCandidate>& result) {
     for (std::size_t n = 0; n < flat_normals.size(); ++n) {
         const bool same_circle =
             std::any_of(flat_normals.begin(), flat_normals.begin() + n, [&](const Vec3& m) {
-                return std::abs(dot(m, flat_normals[n])) > std::cos(kRad);  // ±n: one great circle
+                return std::abs(dot(m, flat_normals[n])) >
+                       std::cos(kRadiansPerDegree);  // ±n: one great circle
             });
         if (same_circle)
             continue;
@@ -138,6 +168,18 @@ std::vector<DirectionCandidate> searchSphere(const DirectionFunction& v,
         c.flat_face = static_cast<int>(n);
         result.push_back(c);
     }
+}
+
+}  // namespace
+
+std::vector<DirectionCandidate> searchSphere(const DirectionFunction& v,
+                                             const std::vector<Vec3>& flat_normals,
+                                             const SphereSearchOptions& options, SphereSearchStats& stats) {
+    const SphereGrid grid = sampleGrid(v, options.grid_step_deg, stats);
+    std::vector<DirectionCandidate> result;
+    for (const DirectionCandidate& k : separatedMinima(localMinima(grid), options))
+        result.push_back(refine(v, k.u, k.v_estimate_mm3, stats));
+    appendFlatFaceCandidates(v, flat_normals, options, stats, result);
     return result;
 }
 

@@ -7,6 +7,7 @@
 
 #include "common/Error.h"
 #include "common/PngWriter.h"
+#include "geometry/Angles.h"
 
 namespace mixengine::orient {
 namespace {
@@ -142,8 +143,8 @@ std::string renderVMapPng(const VMap& map, const LatLon& chosen) {
     for (int a = 0; a < 360; ++a) {  // ring of radius 8 px, white with a black outline
         for (const auto& [radius, c] :
              {std::pair{9.0, black}, std::pair{8.0, white}, std::pair{7.0, white}}) {
-            canvas.set(cx + static_cast<int>(std::lround(radius * std::cos(a * M_PI / 180))),
-                       cy + static_cast<int>(std::lround(radius * std::sin(a * M_PI / 180))), c);
+            canvas.set(cx + static_cast<int>(std::lround(radius * std::cos(radiansFromDegrees(a)))),
+                       cy + static_cast<int>(std::lround(radius * std::sin(radiansFromDegrees(a)))), c);
         }
     }
     return encodePng(canvas.width(), canvas.height(), canvas.bytes());

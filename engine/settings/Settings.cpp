@@ -1,8 +1,7 @@
 #include "settings/Settings.h"
 
-#include <numbers>
-
 #include "common/Error.h"
+#include "geometry/Angles.h"
 #include "settings/ValueParse.h"
 
 namespace mixengine {
@@ -35,7 +34,7 @@ double Settings::ratio(std::string_view key) const {
     return parseRatio(key, text(key));
 }
 double Settings::angleRadians(std::string_view key) const {
-    return real(key) * std::numbers::pi / 180.0;
+    return radiansFromDegrees(real(key));
 }
 int Settings::extruderIndex(std::string_view key) const {
     return static_cast<int>(integer(key));

@@ -212,36 +212,57 @@ std::optional<formula::Value> StackEvaluator::resolveGlobal(std::string_view key
 }
 
 std::optional<formula::Value> StackEvaluator::resolveTrain(int scope, std::string_view key, Mode mode) {
-    Scope& s = *scopes_[static_cast<std::size_t>(scope)];
+    const Scope& s = *scopes_[static_cast<std::size_t>(scope)];
+    if (std::optional<formula::Value> own = scopeOwnValue(s, key))
+        return own;
+    if (mode == Mode::Normal) {
+        if (std::optional<formula::Value> elsewhere = valueFromElsewhere(scope, key))
+            return elsewhere;
+    }
+    if (std::optional<formula::Value> user = trainUserValue(s.extruder, key))
+        return user;
+    if (s.is_mesh && s.mesh_user.empty())
+        return resolve(extruderScope(s.extruder), key, mode);
+    return fromDefinitions(scope, key);
+}
+
+std::optional<formula::Value> StackEvaluator::scopeOwnValue(const Scope& s, std::string_view key) const {
     if (s.is_mesh) {
         if (auto it = s.mesh_user.find(key); it != s.mesh_user.end())
             return userValue(key, it->second);
     } else if (key == "extruder_nr") {
         return formula::Value(static_cast<std::int64_t>(s.extruder));  // every train knows its number
     }
+    return std::nullopt;
+}
+
+std::optional<formula::Value> StackEvaluator::valueFromElsewhere(int scope, std::string_view key) {
+    const Scope& s = *scopes_[static_cast<std::size_t>(scope)];
     const SettingDefinition* def = definitions_.find(key);
-    const SettingDefinition* own = extruderOwn(s.extruder, key);
-    if (mode == Mode::Normal && def && !own) {
-        const bool per_scope = def->settable_per_extruder || (s.is_mesh && def->settable_per_mesh);
-        if (!per_scope)
-            return resolve(kGlobal, key, Mode::Normal);
-    }
-    if (mode == Mode::Normal && def && def->limit_to_extruder) {
-        std::optional<int> target = limitTarget(scope, *def);
-        if (target && *target >= 0 && *target < extruder_count_ && (*target != s.extruder || s.is_mesh)) {
-            if (*target != s.extruder || s.mesh_user.empty())
-                return resolve(extruderScope(*target), key, Mode::NoLimit);
-        }
-    }
-    if (auto train = user_.extruders.find(s.extruder); train != user_.extruders.end()) {
+    if (!def)
+        return std::nullopt;
+    const bool per_scope = def->settable_per_extruder || (s.is_mesh && def->settable_per_mesh);
+    if (!per_scope && !extruderOwn(s.extruder, key))
+        return resolve(kGlobal, key, Mode::Normal);
+    if (!def->limit_to_extruder)
+        return std::nullopt;
+    const std::optional<int> target = limitTarget(scope, *def);
+    if (!target || *target < 0 || *target >= extruder_count_)
+        return std::nullopt;
+    // The scope's own train: only a mesh without values of its own takes that train's value here.
+    if (*target != s.extruder || (s.is_mesh && s.mesh_user.empty()))
+        return resolve(extruderScope(*target), key, Mode::NoLimit);
+    return std::nullopt;
+}
+
+std::optional<formula::Value> StackEvaluator::trainUserValue(int extruder, std::string_view key) const {
+    if (auto train = user_.extruders.find(extruder); train != user_.extruders.end()) {
         if (auto it = train->second.find(key); it != train->second.end())
             return userValue(key, it->second);
     }
     if (auto it = user_.global.find(key); it != user_.global.end())
         return userValue(key, it->second);
-    if (s.is_mesh && s.mesh_user.empty())
-        return resolve(extruderScope(s.extruder), key, mode);
-    return fromDefinitions(scope, key);
+    return std::nullopt;
 }
 
 std::optional<formula::Value> StackEvaluator::fromContainers(int scope,

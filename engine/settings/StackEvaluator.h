@@ -77,6 +77,15 @@ class StackEvaluator {
     formula::Value resolve(int scope, std::string_view key, Mode mode);
     std::optional<formula::Value> resolveGlobal(std::string_view key, Mode mode);
     std::optional<formula::Value> resolveTrain(int scope, std::string_view key, Mode mode);
+    // The rules of a train or mesh scope, in resolveTrain's order (see the top of this file); each
+    // gives nullopt when it does not apply.
+    /// A mesh's own user value; a train's extruder_nr.
+    std::optional<formula::Value> scopeOwnValue(const Scope& s, std::string_view key) const;
+    /// (Mode::Normal) the global value of a key not settable in the scope; the value of the
+    /// extruder named by limit_to_extruder, unless that is the scope's own train.
+    std::optional<formula::Value> valueFromElsewhere(int scope, std::string_view key);
+    /// -eN user values, then global user values.
+    std::optional<formula::Value> trainUserValue(int extruder, std::string_view key) const;
     std::optional<formula::Value> fromDefinitions(int scope, std::string_view key);
     std::optional<int> limitTarget(int scope, const SettingDefinition& def);
     formula::Value evaluateFormula(int scope, std::string_view key, const std::string& formula);

@@ -1,39 +1,20 @@
 #include "toolpaths/LineInfill.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
 
+#include "toolpaths/LineFrame.h"
 #include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
-namespace {
-
-Point2 rotate(const Point2& p, double cos_a, double sin_a) {
-    return {static_cast<coord_um>(std::llround(double(p.X) * cos_a - double(p.Y) * sin_a)),
-            static_cast<coord_um>(std::llround(double(p.X) * sin_a + double(p.Y) * cos_a))};
-}
-
-coord_um floorDiv(coord_um a, coord_um b) {
-    const coord_um q = a / b;
-    return (a % b != 0 && (a < 0) != (b < 0)) ? q - 1 : q;
-}
-
-}  // namespace
 
 Paths lineSegments(const Paths& area, coord_um line_distance_um, double angle_degrees, coord_um shift_um) {
     if (line_distance_um <= 0 || area.empty())
         return {};
-    const double angle = angle_degrees * std::numbers::pi / 180.0;
-    const double cos_a = std::cos(angle), sin_a = std::sin(angle);
-    // In the frame rotated by +angle the lines are vertical.
-    Paths rotated = area;
-    for (Path& path : rotated)
-        for (Point2& p : path)
-            p = rotate(p, cos_a, sin_a);
+    const LineFrame frame(angle_degrees);  // the lines are vertical in it
+    const Paths rotated = frame.into(area);
     const ClipperLib::IntRect box = boundsOf(rotated);
     const coord_um step = line_distance_um;
-    const coord_um shift = ((shift_um % step) + step) % step;
+    const coord_um shift = linePhase(shift_um, step);
     Paths scan;
     for (coord_um x = floorDiv(box.left - shift, step) * step + shift; x <= box.right; x += step) {
         if (x >= box.left)
@@ -55,9 +36,8 @@ Paths lineSegments(const Paths& area, coord_um line_distance_um, double angle_de
         if (reverse)
             std::swap(line[0], line[1]);
         reverse = !reverse;
-        for (Point2& p : line)
-            p = rotate(p, cos_a, -sin_a);
     }
+    frame.back(clipped);
     return clipped;
 }
 

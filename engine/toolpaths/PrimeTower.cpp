@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/Angles.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/Support.h"
@@ -96,7 +97,7 @@ std::vector<std::vector<ExtrusionPath>> generateOozeShield(const TowerInput& in)
     const double angle = g.angleDegrees("ooze_shield_angle");
     if (angle <= 89) {
         const coord_um slope =
-            std::llround(std::tan(angle * std::numbers::pi / 180) * double(g.lengthMicrons("layer_height")));
+            std::llround(std::tan(radiansFromDegrees(angle)) * double(g.lengthMicrons("layer_height")));
         for (std::size_t i = 1; i < shield.size(); ++i)
             shield[i] = unionOf(shield[i], offsetPolygons(shield[i - 1], -slope));
         for (std::size_t i = shield.size(); i-- > 1;)

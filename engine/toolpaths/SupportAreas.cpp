@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "common/ParallelFor.h"
+#include "geometry/Angles.h"
 #include "toolpaths/LayerWindows.h"
 #include "toolpaths/PolygonOps.h"
 
@@ -97,7 +97,7 @@ Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vec
     Overhangs result;
     result.basic.resize(layers.size());
     result.full.resize(layers.size());
-    const double slope = std::tan(std::clamp(angle_degrees, 0.0, 89.9) * std::numbers::pi / 180.0) - 0.01;
+    const double slope = std::tan(radiansFromDegrees(std::clamp(angle_degrees, 0.0, 89.9))) - 0.01;
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         if (i == 0 || layers[i].outlines.empty())
             return;

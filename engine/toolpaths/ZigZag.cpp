@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
+
+#include "toolpaths/LineFrame.h"
 
 namespace mixengine {
 namespace {
@@ -17,14 +18,6 @@ struct Crossing {
     long boundary_next = -1;  ///< kept boundary piece from this crossing to that one
     long boundary_prev = -1;
 };
-
-Point2 rotate(const Point2& p, double c, double s) {
-    return {std::llround(double(p.X) * c - double(p.Y) * s), std::llround(double(p.X) * s + double(p.Y) * c)};
-}
-
-long long floorDiv(long long a, long long b) {
-    return a / b - ((a % b != 0) && ((a < 0) != (b < 0)) ? 1 : 0);
-}
 
 /// Crossings of every polygon edge with the scanlines; a vertex exactly on a scanline counts as
 /// right of it, so every crossing is found once.
@@ -183,22 +176,16 @@ void appendEndPieces(const Paths& polys, const std::vector<Crossing>& cs, Paths&
 Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um shift_um, bool end_pieces) {
     if (d <= 0 || area.empty())
         return {};
-    const double a = angle_degrees * std::numbers::pi / 180.0;
-    const double c = std::cos(a), s = std::sin(a);
-    Paths rotated = area;
-    for (Path& p : rotated)
-        for (Point2& q : p)
-            q = rotate(q, c, s);
-    const coord_um shift = ((shift_um % d) + d) % d;
+    const LineFrame frame(angle_degrees);  // the scanlines are vertical in it
+    const Paths rotated = frame.into(area);
+    const coord_um shift = linePhase(shift_um, d);
     std::vector<Crossing> cs = findCrossings(rotated, d, shift);
     pairScanlines(cs);
     linkBoundary(cs);
     Paths lines = chain(rotated, cs);
     if (end_pieces)
         appendEndPieces(rotated, cs, lines);
-    for (Path& line : lines)
-        for (Point2& q : line)
-            q = rotate(q, c, -s);
+    frame.back(lines);
     return lines;
 }
 

@@ -20,64 +20,15 @@ using detail::EvalProblem;
 
 constexpr int kVariadic = -1;
 
+using Args = std::vector<Value>;
+
 struct BuiltinInfo {
     Builtin id;
     std::string_view name;
     int minArgs;
     int maxArgs;
+    Value (*call)(const Args& args);  ///< nullptr for the math.* functions: callMathBuiltin
 };
-
-constexpr std::array<BuiltinInfo, 36> kBuiltins = {{
-    {Builtin::Abs, "abs", 1, 1},
-    {Builtin::All, "all", 1, 1},
-    {Builtin::Any, "any", 1, 1},
-    {Builtin::Bool, "bool", 0, 1},
-    {Builtin::Float, "float", 0, 1},
-    {Builtin::Int, "int", 0, 1},
-    {Builtin::Len, "len", 1, 1},
-    {Builtin::List, "list", 0, 1},
-    {Builtin::Map, "map", 2, kVariadic},
-    {Builtin::Max, "max", 1, kVariadic},
-    {Builtin::Min, "min", 1, kVariadic},
-    {Builtin::Round, "round", 1, 2},
-    {Builtin::Sorted, "sorted", 1, 1},
-    {Builtin::Str, "str", 0, 1},
-    {Builtin::Sum, "sum", 1, 2},
-    {Builtin::MathSqrt, "math.sqrt", 1, 1},
-    {Builtin::MathCeil, "math.ceil", 1, 1},
-    {Builtin::MathFloor, "math.floor", 1, 1},
-    {Builtin::MathTrunc, "math.trunc", 1, 1},
-    {Builtin::MathLog, "math.log", 1, 2},
-    {Builtin::MathLog10, "math.log10", 1, 1},
-    {Builtin::MathLog2, "math.log2", 1, 1},
-    {Builtin::MathExp, "math.exp", 1, 1},
-    {Builtin::MathSin, "math.sin", 1, 1},
-    {Builtin::MathCos, "math.cos", 1, 1},
-    {Builtin::MathTan, "math.tan", 1, 1},
-    {Builtin::MathAsin, "math.asin", 1, 1},
-    {Builtin::MathAcos, "math.acos", 1, 1},
-    {Builtin::MathAtan, "math.atan", 1, 1},
-    {Builtin::MathAtan2, "math.atan2", 2, 2},
-    {Builtin::MathRadians, "math.radians", 1, 1},
-    {Builtin::MathDegrees, "math.degrees", 1, 1},
-    {Builtin::MathFabs, "math.fabs", 1, 1},
-    {Builtin::MathPow, "math.pow", 2, 2},
-    {Builtin::MathIsclose, "math.isclose", 2, 2},
-    {Builtin::MathHypot, "math.hypot", 2, 2},
-}};
-
-constexpr bool tableMatchesEnum() {
-    for (std::size_t i = 0; i < kBuiltins.size(); ++i) {
-        if (static_cast<std::size_t>(kBuiltins[i].id) != i)
-            return false;
-    }
-    return true;
-}
-static_assert(tableMatchesEnum(), "kBuiltins must list the Builtin ids in enum order");
-
-const BuiltinInfo& info(Builtin id) {
-    return kBuiltins[static_cast<std::size_t>(id)];
-}
 
 void checkArgCount(const BuiltinInfo& b, std::size_t given) {
     const auto n = static_cast<int>(given);
@@ -209,6 +160,62 @@ bool anyAll(const Value& iterable, bool wantAll) {
     return wantAll;
 }
 
+/// Every built-in in enum order: its name, argument count and implementation.
+constexpr std::array<BuiltinInfo, 36> kBuiltins = {{
+    {Builtin::Abs, "abs", 1, 1, [](const Args& a) -> Value { return absValue(a[0]); }},
+    {Builtin::All, "all", 1, 1, [](const Args& a) -> Value { return anyAll(a[0], true); }},
+    {Builtin::Any, "any", 1, 1, [](const Args& a) -> Value { return anyAll(a[0], false); }},
+    {Builtin::Bool, "bool", 0, 1, [](const Args& a) -> Value { return !a.empty() && truthy(a[0]); }},
+    {Builtin::Float, "float", 0, 1,
+     [](const Args& a) -> Value { return a.empty() ? Value(0.0) : toFloat(a[0]); }},
+    {Builtin::Int, "int", 0, 1, [](const Args& a) -> Value { return a.empty() ? Value(0) : toInt(a[0]); }},
+    {Builtin::Len, "len", 1, 1, [](const Args& a) -> Value { return length(a[0]); }},
+    {Builtin::List, "list", 0, 1,
+     [](const Args& a) -> Value { return a.empty() ? Value(List{}) : Value(iterate(a[0], "list()")); }},
+    {Builtin::Map, "map", 2, kVariadic, mapValues},
+    {Builtin::Max, "max", 1, kVariadic, [](const Args& a) -> Value { return extreme(a, true); }},
+    {Builtin::Min, "min", 1, kVariadic, [](const Args& a) -> Value { return extreme(a, false); }},
+    {Builtin::Round, "round", 1, 2, roundValue},
+    {Builtin::Sorted, "sorted", 1, 1, [](const Args& a) -> Value { return sortedValues(a[0]); }},
+    {Builtin::Str, "str", 0, 1,
+     [](const Args& a) -> Value { return a.empty() ? Value("") : Value(toPythonStr(a[0])); }},
+    {Builtin::Sum, "sum", 1, 2, sumValues},
+    {Builtin::MathSqrt, "math.sqrt", 1, 1, nullptr},
+    {Builtin::MathCeil, "math.ceil", 1, 1, nullptr},
+    {Builtin::MathFloor, "math.floor", 1, 1, nullptr},
+    {Builtin::MathTrunc, "math.trunc", 1, 1, nullptr},
+    {Builtin::MathLog, "math.log", 1, 2, nullptr},
+    {Builtin::MathLog10, "math.log10", 1, 1, nullptr},
+    {Builtin::MathLog2, "math.log2", 1, 1, nullptr},
+    {Builtin::MathExp, "math.exp", 1, 1, nullptr},
+    {Builtin::MathSin, "math.sin", 1, 1, nullptr},
+    {Builtin::MathCos, "math.cos", 1, 1, nullptr},
+    {Builtin::MathTan, "math.tan", 1, 1, nullptr},
+    {Builtin::MathAsin, "math.asin", 1, 1, nullptr},
+    {Builtin::MathAcos, "math.acos", 1, 1, nullptr},
+    {Builtin::MathAtan, "math.atan", 1, 1, nullptr},
+    {Builtin::MathAtan2, "math.atan2", 2, 2, nullptr},
+    {Builtin::MathRadians, "math.radians", 1, 1, nullptr},
+    {Builtin::MathDegrees, "math.degrees", 1, 1, nullptr},
+    {Builtin::MathFabs, "math.fabs", 1, 1, nullptr},
+    {Builtin::MathPow, "math.pow", 2, 2, nullptr},
+    {Builtin::MathIsclose, "math.isclose", 2, 2, nullptr},
+    {Builtin::MathHypot, "math.hypot", 2, 2, nullptr},
+}};
+
+constexpr bool tableMatchesEnum() {
+    for (std::size_t i = 0; i < kBuiltins.size(); ++i) {
+        if (static_cast<std::size_t>(kBuiltins[i].id) != i)
+            return false;
+    }
+    return true;
+}
+static_assert(tableMatchesEnum(), "kBuiltins must list the Builtin ids in enum order");
+
+const BuiltinInfo& info(Builtin id) {
+    return kBuiltins[static_cast<std::size_t>(id)];
+}
+
 }  // namespace
 
 std::string_view builtinName(Builtin id) {
@@ -241,41 +248,9 @@ std::optional<Value> findMathMember(std::string_view name) {
 }
 
 Value callBuiltin(Builtin id, const std::vector<Value>& args) {
-    checkArgCount(info(id), args.size());
-    switch (id) {
-        case Builtin::Abs:
-            return absValue(args[0]);
-        case Builtin::All:
-            return anyAll(args[0], true);
-        case Builtin::Any:
-            return anyAll(args[0], false);
-        case Builtin::Bool:
-            return !args.empty() && truthy(args[0]);
-        case Builtin::Float:
-            return args.empty() ? Value(0.0) : toFloat(args[0]);
-        case Builtin::Int:
-            return args.empty() ? Value(0) : toInt(args[0]);
-        case Builtin::Len:
-            return length(args[0]);
-        case Builtin::List:
-            return args.empty() ? Value(List{}) : Value(iterate(args[0], "list()"));
-        case Builtin::Map:
-            return mapValues(args);
-        case Builtin::Max:
-            return extreme(args, true);
-        case Builtin::Min:
-            return extreme(args, false);
-        case Builtin::Round:
-            return roundValue(args);
-        case Builtin::Sorted:
-            return sortedValues(args[0]);
-        case Builtin::Str:
-            return args.empty() ? Value("") : Value(toPythonStr(args[0]));
-        case Builtin::Sum:
-            return sumValues(args);
-        default:
-            return callMathBuiltin(id, args);
-    }
+    const BuiltinInfo& builtin = info(id);
+    checkArgCount(builtin, args.size());
+    return builtin.call ? builtin.call(args) : callMathBuiltin(id, args);
 }
 
 }  // namespace mixengine::formula

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdint>
+#include <optional>
 
 #include "settings/formula/FormulaError.h"
 #include "settings/formula/Numeric.h"
@@ -42,6 +43,17 @@ void appendUtf8(std::string& out, std::uint32_t cp) {
         out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
         out += static_cast<char>(0x80 | (cp & 0x3F));
     }
+}
+
+/// The character of a one-letter escape ("\\n" → newline, "\\'" → quote), or nullopt.
+std::optional<char> simpleEscape(char c) {
+    constexpr std::string_view kLetters = "\\'\"abfnrtv";
+    constexpr std::string_view kMeanings = "\\'\"\a\b\f\n\r\t\v";
+    static_assert(kLetters.size() == kMeanings.size());
+    const std::size_t at = kLetters.find(c);
+    if (at == std::string_view::npos)
+        return std::nullopt;
+    return kMeanings[at];
 }
 
 class Lexer {
@@ -151,11 +163,31 @@ class Lexer {
 
     void number() {
         const std::size_t begin = pos_;
-        const char radix = static_cast<char>(std::tolower(static_cast<unsigned char>(peek(1))));
-        if (peek() == '0' && (radix == 'x' || radix == 'o' || radix == 'b')) {
-            radixInteger(begin, radix == 'x' ? 16 : radix == 'o' ? 8 : 2);
+        if (const int base = radixPrefixBase()) {
+            radixInteger(begin, base);
             return;
         }
+        const bool isFloat = decimalDigits();
+        if (peek() == 'j' || peek() == 'J')
+            fail(begin, "imaginary numbers are not supported");
+        const std::string_view text = src_.substr(begin, pos_ - begin);
+        if (isFloat) {
+            floatLiteral(begin, text);
+        } else {
+            decimalInteger(begin, text);
+        }
+    }
+
+    /// 16, 8 or 2 when a "0x", "0o" or "0b" prefix (any case) starts here, else 0.
+    int radixPrefixBase() const {
+        if (peek() != '0')
+            return 0;
+        const char radix = static_cast<char>(std::tolower(static_cast<unsigned char>(peek(1))));
+        return radix == 'x' ? 16 : radix == 'o' ? 8 : radix == 'b' ? 2 : 0;
+    }
+
+    /// Scans the digits, fraction and exponent of a decimal literal; true if it is a float.
+    bool decimalDigits() {
         digits(isDigit);
         bool isFloat = false;
         if (peek() == '.') {
@@ -163,24 +195,31 @@ class Lexer {
             ++pos_;
             digits(isDigit);
         }
+        const bool hasExponent = exponent();
+        return isFloat || hasExponent;
+    }
+
+    /// Scans "e5", "E-3", ... if one starts here; false (nothing scanned) otherwise.
+    bool exponent() {
         const char sign = peek(1);
-        if ((peek() == 'e' || peek() == 'E') &&
-            (isDigit(sign) || ((sign == '+' || sign == '-') && isDigit(peek(2))))) {
-            isFloat = true;
-            pos_ += isDigit(sign) ? 1 : 2;
-            digits(isDigit);
+        if (peek() != 'e' && peek() != 'E')
+            return false;
+        if (!isDigit(sign) && !((sign == '+' || sign == '-') && isDigit(peek(2))))
+            return false;
+        pos_ += isDigit(sign) ? 1 : 2;
+        digits(isDigit);
+        return true;
+    }
+
+    void floatLiteral(std::size_t begin, std::string_view text) {
+        try {  // e.g. "0._0": the digit scan allows underscores that Python rejects there
+            push(TokenKind::Number, begin, pos_, Value(parseFloatString(text)));
+        } catch (const detail::EvalProblem&) {
+            fail(begin, "invalid decimal literal " + std::string(text));
         }
-        if (peek() == 'j' || peek() == 'J')
-            fail(begin, "imaginary numbers are not supported");
-        const std::string_view text = src_.substr(begin, pos_ - begin);
-        if (isFloat) {
-            try {  // e.g. "0._0": the digit scan allows underscores that Python rejects there
-                push(TokenKind::Number, begin, pos_, Value(parseFloatString(text)));
-            } catch (const detail::EvalProblem&) {
-                fail(begin, "invalid decimal literal " + std::string(text));
-            }
-            return;
-        }
+    }
+
+    void decimalInteger(std::size_t begin, std::string_view text) {
         if (text.size() > 1 && text[0] == '0' && text.find_first_not_of("0_") != std::string_view::npos) {
             fail(begin, "leading zeros in decimal integer literals are not permitted");
         }
@@ -246,76 +285,51 @@ class Lexer {
     void escape(std::string& out, bool raw) {
         const std::size_t at = pos_;
         const char c = peek(1);
-        if (raw) {  // a raw string keeps the backslash; it only stops the next char ending the string
-            out += '\\';
-            if (c != '\0')
-                out += c;
-            pos_ += c == '\0' ? 1 : 2;
+        if (raw) {
+            rawEscape(out, c);
             return;
         }
         pos_ += 2;
-        switch (c) {
-            case '\n':
-                return;
-            case '\\':
-                out += '\\';
-                return;
-            case '\'':
-                out += '\'';
-                return;
-            case '"':
-                out += '"';
-                return;
-            case 'a':
-                out += '\a';
-                return;
-            case 'b':
-                out += '\b';
-                return;
-            case 'f':
-                out += '\f';
-                return;
-            case 'n':
-                out += '\n';
-                return;
-            case 'r':
-                out += '\r';
-                return;
-            case 't':
-                out += '\t';
-                return;
-            case 'v':
-                out += '\v';
-                return;
-            case 'x':
-                appendUtf8(out, hexDigits(2));
-                return;
-            case 'u':
-                appendUtf8(out, hexDigits(4));
-                return;
-            case 'U': {
-                const std::uint32_t cp = hexDigits(8);
-                if (cp > 0x10FFFF)
-                    fail(at, "\\U escape out of range");
-                appendUtf8(out, cp);
-                return;
-            }
-            case 'N':
-                fail(at, "\\N{...} escapes are not supported");
-            default:
-                break;
-        }
-        if (c >= '0' && c <= '7') {
-            std::uint32_t cp = static_cast<std::uint32_t>(c - '0');
-            for (int i = 0; i < 2 && peek() >= '0' && peek() <= '7'; ++i, ++pos_)
-                cp = cp * 8 + (peek() - '0');
-            appendUtf8(out, cp);
-            return;
-        }
-        if (c == '\0')
+        if (c == '\n')
+            return;  // a line continuation inside the string
+        if (const std::optional<char> simple = simpleEscape(c)) {
+            out += *simple;
+        } else if (c == 'x' || c == 'u' || c == 'U') {
+            hexEscape(out, c, at);
+        } else if (c >= '0' && c <= '7') {
+            octalEscape(out, c);
+        } else if (c == 'N') {
+            fail(at, "\\N{...} escapes are not supported");
+        } else if (c == '\0') {
             fail(at, "unterminated string literal");
-        out += '\\';  // Python keeps unknown escapes such as "\d" as they are
-        out += c;
+        } else {
+            out += '\\';  // Python keeps unknown escapes such as "\d" as they are
+            out += c;
+        }
+    }
+
+    /// A raw string keeps the backslash; it only stops the next character ending the string.
+    void rawEscape(std::string& out, char c) {
+        out += '\\';
+        if (c != '\0')
+            out += c;
+        pos_ += c == '\0' ? 1 : 2;
+    }
+
+    /// \xhh, \uhhhh, \Uhhhhhhhh (`kind` is x, u or U); `at` is the backslash, for messages.
+    void hexEscape(std::string& out, char kind, std::size_t at) {
+        const std::uint32_t cp = hexDigits(kind == 'x' ? 2 : kind == 'u' ? 4 : 8);
+        if (cp > 0x10FFFF)
+            fail(at, "\\U escape out of range");
+        appendUtf8(out, cp);
+    }
+
+    /// \o, \oo or \ooo: `first` is the first octal digit, already consumed.
+    void octalEscape(std::string& out, char first) {
+        std::uint32_t cp = static_cast<std::uint32_t>(first - '0');
+        for (int i = 0; i < 2 && peek() >= '0' && peek() <= '7'; ++i, ++pos_)
+            cp = cp * 8 + (peek() - '0');
+        appendUtf8(out, cp);
     }
 
     std::string_view src_;

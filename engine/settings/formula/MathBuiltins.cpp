@@ -1,8 +1,12 @@
 // The functions of Python's math module, with its domain and range errors.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "geometry/Angles.h"
 #include "settings/formula/Builtins.h"
 #include "settings/formula/FormulaError.h"
 #include "settings/formula/Numeric.h"
@@ -40,8 +44,28 @@ Value integral(Builtin id, const Value& v, double (*rounding)(double)) {
     return truncToInt(rounding(realArg(id, v)));
 }
 
+/// Where a one-argument math function is defined; outside, Python raises "math domain error". A
+/// NaN is inside every domain (the function then returns NaN).
+enum class Domain { Reals, Finite, NonNegative, Positive, UnitInterval };
+
+bool outside(double x, Domain domain) {
+    switch (domain) {
+        case Domain::Finite:
+            return std::isinf(x);
+        case Domain::NonNegative:
+            return x < 0;
+        case Domain::Positive:
+            return x <= 0;
+        case Domain::UnitInterval:
+            return x < -1.0 || x > 1.0;
+        case Domain::Reals:
+            break;
+    }
+    return false;
+}
+
 double logarithm(Builtin id, double x) {
-    if (x <= 0)
+    if (outside(x, Domain::Positive))
         domainError(id);
     return std::log(x);
 }
@@ -68,86 +92,97 @@ bool isclose(double a, double b) {
     return diff <= std::fabs(kRelTol * b) || diff <= std::fabs(kRelTol * a);
 }
 
-double trigonometric(Builtin id, double x, double (*f)(double)) {
-    if (std::isinf(x))
-        domainError(id);
-    return f(x);
+/// The real arguments of a math function: x, and y when it was given a second argument.
+struct Reals {
+    double x = 0;
+    std::optional<double> y;
+};
+
+/// math.log(x) or math.log(x, base).
+Value mathLog(Builtin id, const Reals& a) {
+    const double lnx = logarithm(id, a.x);
+    if (!a.y)
+        return lnx;
+    const double lnBase = logarithm(id, *a.y);
+    if (lnBase == 0.0)
+        throw EvalProblem("math.log(): float division by zero");
+    return lnx / lnBase;
 }
 
-double inverseTrigonometric(Builtin id, double x, double (*f)(double)) {
-    if (x < -1.0 || x > 1.0)
-        domainError(id);
-    return f(x);
+/// A math function of one real argument, defined on `domain`.
+struct UnaryEntry {
+    Builtin id;
+    double (*call)(double x);
+    Domain domain;
+};
+
+constexpr std::array<UnaryEntry, 12> kUnaryFunctions = {{
+    {Builtin::MathSqrt, [](double x) { return std::sqrt(x); }, Domain::NonNegative},
+    {Builtin::MathLog10, [](double x) { return std::log10(x); }, Domain::Positive},
+    {Builtin::MathLog2, [](double x) { return std::log2(x); }, Domain::Positive},
+    {Builtin::MathSin, [](double x) { return std::sin(x); }, Domain::Finite},
+    {Builtin::MathCos, [](double x) { return std::cos(x); }, Domain::Finite},
+    {Builtin::MathTan, [](double x) { return std::tan(x); }, Domain::Finite},
+    {Builtin::MathAsin, [](double x) { return std::asin(x); }, Domain::UnitInterval},
+    {Builtin::MathAcos, [](double x) { return std::acos(x); }, Domain::UnitInterval},
+    {Builtin::MathAtan, [](double x) { return std::atan(x); }, Domain::Reals},
+    {Builtin::MathRadians, [](double x) { return x * kRadiansPerDegree; }, Domain::Reals},
+    {Builtin::MathDegrees, [](double x) { return x * (180.0 / std::numbers::pi); }, Domain::Reals},
+    {Builtin::MathFabs, [](double x) { return std::fabs(x); }, Domain::Reals},
+}};
+
+/// The other math functions of real arguments: log (1 or 2 arguments), exp (range error) and the
+/// two-argument ones.
+struct RealEntry {
+    Builtin id;
+    Value (*call)(Builtin id, const Reals& a);
+};
+
+constexpr std::array<RealEntry, 6> kRealFunctions = {{
+    {Builtin::MathLog, mathLog},
+    {Builtin::MathExp,
+     [](Builtin id, const Reals& a) -> Value { return checkRange(id, std::exp(a.x), a.x); }},
+    {Builtin::MathAtan2, [](Builtin, const Reals& a) -> Value { return std::atan2(a.x, a.y.value_or(0.0)); }},
+    {Builtin::MathPow,
+     [](Builtin id, const Reals& a) -> Value { return mathPow(id, a.x, a.y.value_or(0.0)); }},
+    {Builtin::MathIsclose, [](Builtin, const Reals& a) -> Value { return isclose(a.x, a.y.value_or(0.0)); }},
+    {Builtin::MathHypot, [](Builtin, const Reals& a) -> Value { return std::hypot(a.x, a.y.value_or(0.0)); }},
+}};
+
+/// math.ceil / floor / trunc: the rounding each applies to a float.
+struct IntegralEntry {
+    Builtin id;
+    double (*rounding)(double);
+};
+
+constexpr std::array<IntegralEntry, 3> kIntegralFunctions = {{
+    {Builtin::MathCeil, [](double d) { return std::ceil(d); }},
+    {Builtin::MathFloor, [](double d) { return std::floor(d); }},
+    {Builtin::MathTrunc, [](double d) { return std::trunc(d); }},
+}};
+
+template <class Entry, std::size_t N>
+const Entry* findEntry(const std::array<Entry, N>& table, Builtin id) {
+    const auto it = std::find_if(table.begin(), table.end(), [id](const Entry& e) { return e.id == id; });
+    return it == table.end() ? nullptr : &*it;
 }
 
 }  // namespace
 
 Value callMathBuiltin(Builtin id, const std::vector<Value>& args) {
-    switch (id) {
-        case Builtin::MathCeil:
-            return integral(id, args[0], [](double d) { return std::ceil(d); });
-        case Builtin::MathFloor:
-            return integral(id, args[0], [](double d) { return std::floor(d); });
-        case Builtin::MathTrunc:
-            return integral(id, args[0], [](double d) { return std::trunc(d); });
-        default:
-            break;
+    if (const IntegralEntry* integralEntry = findEntry(kIntegralFunctions, id))
+        return integral(id, args[0], integralEntry->rounding);
+    Reals a;
+    a.x = realArg(id, args[0]);
+    if (args.size() > 1)
+        a.y = realArg(id, args[1]);
+    if (const UnaryEntry* unary = findEntry(kUnaryFunctions, id)) {
+        if (outside(a.x, unary->domain))
+            domainError(id);
+        return unary->call(a.x);
     }
-    const double x = realArg(id, args[0]);
-    const double y = args.size() > 1 ? realArg(id, args[1]) : 0.0;
-    switch (id) {
-        case Builtin::MathSqrt:
-            if (x < 0)
-                domainError(id);
-            return std::sqrt(x);
-        case Builtin::MathLog: {
-            const double lnx = logarithm(id, x);
-            if (args.size() == 1)
-                return lnx;
-            const double lnBase = logarithm(id, y);
-            if (lnBase == 0.0)
-                throw EvalProblem("math.log(): float division by zero");
-            return lnx / lnBase;
-        }
-        case Builtin::MathLog10:
-            if (x <= 0)
-                domainError(id);
-            return std::log10(x);
-        case Builtin::MathLog2:
-            if (x <= 0)
-                domainError(id);
-            return std::log2(x);
-        case Builtin::MathExp:
-            return checkRange(id, std::exp(x), x);
-        case Builtin::MathSin:
-            return trigonometric(id, x, [](double d) { return std::sin(d); });
-        case Builtin::MathCos:
-            return trigonometric(id, x, [](double d) { return std::cos(d); });
-        case Builtin::MathTan:
-            return trigonometric(id, x, [](double d) { return std::tan(d); });
-        case Builtin::MathAsin:
-            return inverseTrigonometric(id, x, [](double d) { return std::asin(d); });
-        case Builtin::MathAcos:
-            return inverseTrigonometric(id, x, [](double d) { return std::acos(d); });
-        case Builtin::MathAtan:
-            return std::atan(x);
-        case Builtin::MathAtan2:
-            return std::atan2(x, y);
-        case Builtin::MathRadians:
-            return x * (std::numbers::pi / 180.0);
-        case Builtin::MathDegrees:
-            return x * (180.0 / std::numbers::pi);
-        case Builtin::MathFabs:
-            return std::fabs(x);
-        case Builtin::MathPow:
-            return mathPow(id, x, y);
-        case Builtin::MathIsclose:
-            return isclose(x, y);
-        case Builtin::MathHypot:
-            return std::hypot(x, y);
-        default:
-            break;
-    }
+    if (const RealEntry* real = findEntry(kRealFunctions, id))
+        return real->call(id, a);
     throw detail::EvalProblem("internal: " + std::string(builtinName(id)) + " is not a math function");
 }
 

@@ -1,5 +1,6 @@
 #include "settings/profiles/InstCfg.h"
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <sstream>
@@ -42,28 +43,27 @@ std::size_t headerLength(std::string_view line) {
     return k > 1 && k < line.size() && line[k] == ']' ? k + 1 : 0;
 }
 
+constexpr std::string_view kBlanks = " \t";
+
+/// The first position at or after `from` that is not a blank (' ', '\t'), or the line's end.
+std::size_t skipBlanks(std::string_view line, std::size_t from) {
+    return std::min(line.find_first_not_of(kBlanks, from), line.size());
+}
+
 /// A line at column 0 that starts a new entry; fills `key` and `rest` (the value's first line).
 bool entryStart(std::string_view line, std::string& key, std::string_view& rest) {
-    std::size_t k = 0;
-    while (k < line.size() && line[k] != '=' && line[k] != ' ' && line[k] != '\t' && line[k] != '!' &&
-           line[k] != '<' && line[k] != '>' && line[k] != '[')
-        ++k;
+    const std::size_t k = std::min(line.find_first_of("= \t!<>["), line.size());
     if (k == 0)
         return false;
-    std::size_t p = k;
-    while (p < line.size() && (line[p] == ' ' || line[p] == '\t'))
-        ++p;
+    std::size_t p = skipBlanks(line, k);
     if (p >= line.size() || line[p] != '=')
         return false;
     ++p;
     // FastConfigParser wants a character other than '=' after "=[ \t]*" (a line end counts).
-    const bool spaced = p < line.size() && (line[p] == ' ' || line[p] == '\t');
-    if (!spaced && p < line.size() && line[p] == '=')
+    if (p < line.size() && line[p] == '=')
         return false;
-    while (p < line.size() && (line[p] == ' ' || line[p] == '\t'))
-        ++p;
     key = std::string(line.substr(0, k));
-    rest = line.substr(p);
+    rest = line.substr(skipBlanks(line, p));
     return true;
 }
 

@@ -103,52 +103,88 @@ const VariantEntry& findVariant(const ContainerTree& tree, const std::string& na
                      " for " + machine + "; available: " + shortList(variantNames(tree)));
 }
 
-const MaterialContainer& findMaterial(const ContainerTree& tree, const std::string& variant_name,
-                                      int approximate_diameter, const std::string& name, int extruder) {
-    const std::vector<const MaterialContainer*> materials = tree.materials(variant_name);
-    const std::string where = tree.machine().id + (variant_name == "empty" ? "" : " with " + variant_name) +
-                              " (extruder " + std::to_string(extruder) + ")";
-    if (materials.empty())
-        throw InputError("--material '" + name + "': " + where + " has no materials");
-    auto fits = [&](const MaterialContainer* m) {
-        return m && m->profile->approximate_diameter == approximate_diameter;
-    };
+namespace {
 
-    const MaterialContainer* found = byBaseFile(materials, name);
-    for (const MaterialContainer* m : materials) {
-        if (!found && m->id == name)
-            found = m;
+/// One --material look-up: the materials of a variant and the filament diameter they must fit.
+struct MaterialQuery {
+    const std::vector<const MaterialContainer*>& materials;
+    int approximate_diameter;
+    const std::string& name;
+    std::string where;  ///< "machine with variant (extruder n)", for messages
+
+    bool fits(const MaterialContainer* m) const {
+        return m && m->profile->approximate_diameter == approximate_diameter;
     }
-    if (!fits(found) && approximate_diameter == 2 && fits(byBaseFile(materials, name + "_175")))
-        found = byBaseFile(materials, name + "_175");
-    if (!found) {
-        const std::string key = folded(name);
-        for (const MaterialContainer* m : materials) {
-            const MaterialProfile& p = *m->profile;
-            if (fits(m) && (folded(p.brand + " " + p.name) == key || folded(p.name) == key)) {
-                if (found)
-                    throw InputError("--material '" + name + "': ambiguous for " + where + " (" +
-                                     found->profile->base_file + ", " + p.base_file +
-                                     ", ...); give a base_file");
-                found = m;
-            }
-        }
+};
+
+/// Rule 1: the material whose base_file, else whose id, is the name.
+const MaterialContainer* byBaseFileOrId(const MaterialQuery& q) {
+    if (const MaterialContainer* found = byBaseFile(q.materials, q.name))
+        return found;
+    for (const MaterialContainer* m : q.materials) {
+        if (m->id == q.name)
+            return m;
     }
-    std::vector<std::string> usable;  // generic materials first: they are the ones people look for
+    return nullptr;
+}
+
+/// Rule 2: for 1.75 mm filament, "<name>_175" when the name itself does not fit.
+const MaterialContainer* byThinFilamentBaseFile(const MaterialQuery& q, const MaterialContainer* found) {
+    if (!q.fits(found) && q.approximate_diameter == 2 && q.fits(byBaseFile(q.materials, q.name + "_175")))
+        return byBaseFile(q.materials, q.name + "_175");
+    return found;
+}
+
+/// Rule 3: the one fitting material whose "brand name" or name is the name (case and spaces
+/// ignored); two of them are an error.
+const MaterialContainer* byDisplayName(const MaterialQuery& q) {
+    const std::string key = folded(q.name);
+    const MaterialContainer* found = nullptr;
+    for (const MaterialContainer* m : q.materials) {
+        const MaterialProfile& p = *m->profile;
+        if (!q.fits(m) || (folded(p.brand + " " + p.name) != key && folded(p.name) != key))
+            continue;
+        if (found)
+            throw InputError("--material '" + q.name + "': ambiguous for " + q.where + " (" +
+                             found->profile->base_file + ", " + p.base_file + ", ...); give a base_file");
+        found = m;
+    }
+    return found;
+}
+
+/// The base_files of the fitting materials, generic ones first: they are the ones people look for.
+std::vector<std::string> usableMaterials(const MaterialQuery& q) {
+    std::vector<std::string> usable;
     for (int generic = 1; generic >= 0; --generic) {
-        for (const MaterialContainer* m : materials) {
-            if (fits(m) && (m->profile->brand == "Generic") == (generic == 1))
+        for (const MaterialContainer* m : q.materials) {
+            if (q.fits(m) && (m->profile->brand == "Generic") == (generic == 1))
                 usable.push_back(m->profile->base_file);
         }
     }
+    return usable;
+}
+
+}  // namespace
+
+const MaterialContainer& findMaterial(const ContainerTree& tree, const std::string& variant_name,
+                                      int approximate_diameter, const std::string& name, int extruder) {
+    const std::vector<const MaterialContainer*> materials = tree.materials(variant_name);
+    const MaterialQuery q{materials, approximate_diameter, name,
+                          tree.machine().id + (variant_name == "empty" ? "" : " with " + variant_name) +
+                              " (extruder " + std::to_string(extruder) + ")"};
+    if (materials.empty())
+        throw InputError("--material '" + name + "': " + q.where + " has no materials");
+    const MaterialContainer* found = byThinFilamentBaseFile(q, byBaseFileOrId(q));
     if (!found)
-        throw InputError("--material '" + name + "': no such material for " + where +
-                         "; available: " + shortList(usable));
-    if (!fits(found))
+        found = byDisplayName(q);
+    if (!found)
+        throw InputError("--material '" + name + "': no such material for " + q.where +
+                         "; available: " + shortList(usableMaterials(q)));
+    if (!q.fits(found))
         throw InputError("--material '" + name + "': " + found->profile->base_file + " is for " +
-                         std::to_string(found->profile->approximate_diameter) + " mm filament but " + where +
-                         " takes " + std::to_string(approximate_diameter) +
-                         " mm (rounded); available: " + shortList(usable));
+                         std::to_string(found->profile->approximate_diameter) + " mm filament but " +
+                         q.where + " takes " + std::to_string(approximate_diameter) +
+                         " mm (rounded); available: " + shortList(usableMaterials(q)));
     return *found;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // Helpers for the mesh input tests: a temporary directory removed at the end of the test, and
-// generators of model files (binary / ASCII STL bytes of given triangles, a unit cube soup).
+// generators of model files (binary / ASCII STL bytes of given triangles, a unit cube soup, a
+// large wavy grid).
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -47,6 +49,23 @@ class TempDir {
   private:
     std::filesystem::path path_;
 };
+
+/// A wavy `quads` x `quads` grid of quads: 2·quads² triangles sharing (quads + 1)² vertices; the
+/// default is 832,050 triangles, like a 41 MB scan.
+inline std::vector<Triangle> wavyGridTriangles(int quads = 645) {
+    auto at = [](int i, int j) {
+        return Vec3{i * 0.31, j * 0.29, 5.0 + std::sin(i * 0.05) * std::cos(j * 0.07)};
+    };
+    std::vector<Triangle> triangles;
+    triangles.reserve(2 * static_cast<std::size_t>(quads) * static_cast<std::size_t>(quads));
+    for (int i = 0; i < quads; ++i) {
+        for (int j = 0; j < quads; ++j) {
+            triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+            triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+        }
+    }
+    return triangles;
+}
 
 /// The 12 triangles of the cube [0, size]^3, outward winding.
 inline std::vector<Triangle> cubeTriangles(double size = 10.0) {
