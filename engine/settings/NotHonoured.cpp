@@ -50,8 +50,8 @@ bool sameText(std::string_view a, std::string_view b) {
 std::optional<std::string> offending(const NotHonouredEntry& entry, StackEvaluator& given,
                                      StackEvaluator& stock, int scope) {
     const std::optional<formula::Value> value = given.value(scope, entry.key);
-    if (!value)
-        return std::nullopt;
+    if (!value || !given.enabled(scope, entry.key))
+        return std::nullopt;  // not there, or hidden in Cura: it acts in neither engine
     const std::optional<formula::Value> reference = stock.value(scope, entry.key);
     if (reference && formula::pythonEquals(*value, *reference))
         return std::nullopt;  // the definitions' own value: nothing the user asked for is ignored

@@ -4,7 +4,9 @@
 // The list is settings/mixengine/not_honoured.json, embedded at build time (the engine needs no
 // files for it). Each entry names a key and either nothing more (any value is not honoured) or the
 // values that are not honoured (e.g. adhesion_type raft). A warning is given when a listed value
-// differs from the one the definitions give (a machine's own defaults are not the user's request).
+// differs from the one the definitions give (a machine's own defaults are not the user's request)
+// and the setting is enabled (its `enabled` formula: Cura hides it otherwise, and neither engine
+// reads it then, e.g. raft_margin without a raft).
 // tests/python/test_parity.py keeps the list true: every entry is a strict xfail there.
 //
 // "The value the definitions give" is the setting's own `value` formula (else its default_value)
