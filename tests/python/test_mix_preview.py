@@ -32,12 +32,7 @@ def cube(tmp_path_factory):
 
 
 def slice_cube(cube, out, *settings):
-    args = ["slice"]
-    for s in settings:
-        args += ["-s", s]
-    proc = helpers.mixengine(*args, "-l", cube, "-o", out)
-    assert proc.returncode == 0, proc.stderr
-    return out
+    return helpers.slice_with(cube, out, *settings)
 
 
 def layer_shares(moves):

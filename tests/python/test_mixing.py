@@ -36,13 +36,7 @@ def sliced(engine, cube, tmp_path_factory):
 
     @lru_cache(maxsize=None)
     def run(*settings):
-        out = out_dir / f"{len(list(out_dir.iterdir()))}.gcode"
-        args = ["slice"]
-        for s in settings:
-            args += ["-s", s]
-        proc = helpers.mixengine(*args, "-l", cube, "-o", out)
-        assert proc.returncode == 0, proc.stderr
-        return out
+        return helpers.slice_with(cube, out_dir / f"{len(list(out_dir.iterdir()))}.gcode", *settings)
 
     return run
 

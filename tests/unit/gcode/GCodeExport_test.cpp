@@ -133,14 +133,18 @@ TEST(GCodeExport, NoRetractionWhenAmountIsZero) {
     EXPECT_FALSE(g.retracted());
 }
 
-// With acceleration and jerk out of the way every move takes distance / speed (the acceleration
-// model itself is tested in TimeEstimate_test.cpp).
-TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
+/// Marlin, 1.75 mm, with acceleration and jerk out of the way: every move takes distance / speed.
+ExportParams withoutAccelerationOrJerk() {
     ExportParams p = marlin175();
     p.kinematics.acceleration_mm_s2 = 1e12;
     p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
     p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;
-    GCodeExport g(p);
+    return p;
+}
+
+// The acceleration model itself is tested in TimeEstimate_test.cpp.
+TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
+    GCodeExport g(withoutAccelerationOrJerk());
     g.travel({30'000, 40'000}, 50);   // 50 mm at 50 mm/s: 1 s
     g.extrude({30'000, 0}, 1.0, 20);  // 40 mm at 20 mm/s: 2 s
     g.retract();                      // 6.5 mm at 25 mm/s: 0.26 s
@@ -154,11 +158,7 @@ TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
 // Each move's time goes to what it prints (CuraEngine's PrintFeatureType buckets): extrusions to the
 // feature set last, travel to Travel, retractions, primes and travel while retracted to Retraction.
 TEST(GCodeExport, TimeIsBookedByFeature) {
-    ExportParams p = marlin175();
-    p.kinematics.acceleration_mm_s2 = 1e12;
-    p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
-    p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;
-    GCodeExport g(p);
+    GCodeExport g(withoutAccelerationOrJerk());
     g.travel({30'000, 40'000}, 50);  // 1 s of travel
     g.setTimeFeature(TimeFeature::OuterWall);
     g.extrude({30'000, 0}, 1.0, 20);  // 2 s of outer wall
