@@ -170,7 +170,9 @@ void GCodeExport::setFan(double ratio) {
     if (ratio == fan_ratio_)
         return;
     fan_ratio_ = ratio;
-    if (ratio <= 0) {
+    if (params_.makerbot_fan) {
+        line(ratio > 0 ? "M126 T0" : "M127 T0");  // Makerbot: the fan is on or off, no speed
+    } else if (ratio <= 0) {
         line("M107");
     } else {
         line("M106 S" + formatDecimal(std::min(ratio, 1.0) * 255.0, 1));

@@ -26,6 +26,7 @@ struct ExportParams {
     double prime_speed_mm_s = 25;
     coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
     bool firmware_retract = false;   ///< G10/G11 instead of E moves (machine_firmware_retract)
+    bool makerbot_fan = false;       ///< M126 T0 / M127 T0 instead of M106 / M107 (Makerbot flavor)
     Kinematics kinematics;
     MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
     MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)

@@ -40,6 +40,7 @@ ExportParams exportParams(const Scene& scene) {
     p.kinematics = kinematicsOf(global);
     p.mixing = parseMixingOutput(global);
     p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
+    p.makerbot_fan = global.text("machine_gcode_flavor") == "Makerbot";
     return p;
 }
 
