@@ -106,11 +106,19 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
     }
 }
 
+bool movesTheHead(const PlannedLayer& layer) {
+    return std::any_of(layer.steps.begin(), layer.steps.end(), [](const PlanStep& step) {
+        return step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude;
+    });
+}
+
 }  // namespace
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode) {
     WrittenLayers out;
     for (const PlannedLayer& layer : plan.layers) {
+        if (!movesTheHead(layer))
+            continue;  // as CuraEngine: a layer with nothing to print is not written (;LAYER_COUNT: keeps it)
         gcode.takeText();  // start a fresh chunk
         gcode.comment("LAYER:" + std::to_string(layer.index));
         if (params.reset_e_each_layer && !gcode.retracted())

@@ -236,3 +236,5 @@ def test_not_honoured_entries_from_the_shared_list():
     assert "Build Plate Adhesion Type = raft: a raft is printed as a skirt" in text
     assert "Enable Ironing = True (global, cube.stl): ironing is not built yet" in text
     assert NotHonoured.offending(entries, [("ironing_enabled", False, False, "global")]) == []
+    # a listed value that is the machine's own default is not the user's request (the engine's rule too)
+    assert NotHonoured.offending(entries, [("adhesion_type", "raft", "raft", "global")]) == []
