@@ -172,8 +172,9 @@ bool combsOnRaft(const Settings& global) {
     return !global.has("retraction_combing") || global.text("retraction_combing") != "off";
 }
 
-/// A raft or filler layer: its paths, extruder by extruder (the active one first), without mesh
-/// markers; the raft's own fan.
+/// A raft or filler layer: its paths, extruder by extruder (the active one first), loops before
+/// lines (the raft base's outline, then its lines, as CuraEngine), without mesh markers; the
+/// raft's own fan.
 PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, bool after_first, PlanRun& run) {
     const Point2 layer_start = run.state.head;
     const int layer_extruder = run.state.extruder;
@@ -187,11 +188,16 @@ PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, boo
     for (int extruder : order) {
         useExtruder(extruder, planned, run);
         const Settings& train = run.extruders[trainOf(extruder, run.extruders)];
+        const TravelParams travel =
+            travelParams(train, layer.index, layer.thickness_um, comb.empty() ? nullptr : &comb);
+        std::vector<ExtrusionPath> loops = ofExtruder(layer.paths, extruder), lines;
+        const auto open = std::stable_partition(loops.begin(), loops.end(),
+                                                [](const ExtrusionPath& path) { return path.closed; });
+        lines.assign(std::make_move_iterator(open), std::make_move_iterator(loops.end()));
+        loops.erase(open, loops.end());
         std::optional<Feature> feature;
-        appendOrderedPaths(
-            ofExtruder(layer.paths, extruder),
-            travelParams(train, layer.index, layer.thickness_um, comb.empty() ? nullptr : &comb),
-            run.state.head, feature, planned.steps);
+        appendOrderedPaths(std::move(loops), travel, run.state.head, feature, planned.steps);
+        appendOrderedPaths(std::move(lines), travel, run.state.head, feature, planned.steps);
     }
     const CoolingParams cooling =
         layer.fan_ratio >= 0 ? raftCooling(run.cooling, layer.fan_ratio) : run.cooling;
