@@ -43,9 +43,10 @@ void changeExtruder(int extruder, const PlanWriterParams& params, GCodeExport& g
     }
 }
 
-/// CuraEngine 4.13's time bucket of a feature (support infill is PrintFeatureType::Support there).
+/// CuraEngine 4.13's time bucket of a feature (support infill is PrintFeatureType::Support there;
+/// ironing and the raft are booked as the type they are marked with).
 TimeFeature timeFeature(Feature feature) {
-    switch (feature) {
+    switch (markedFeature(feature)) {
         case Feature::WallOuter:
             return TimeFeature::OuterWall;
         case Feature::WallInner:
@@ -62,8 +63,9 @@ TimeFeature timeFeature(Feature feature) {
             return TimeFeature::SkirtBrim;
         case Feature::PrimeTower:
             return TimeFeature::PrimeTower;
+        default:
+            return TimeFeature::None;
     }
-    return TimeFeature::None;
 }
 
 void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterParams& params,

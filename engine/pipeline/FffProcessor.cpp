@@ -9,6 +9,7 @@
 #include "planning/PrintPlanner.h"
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/GroupToolpaths.h"
+#include "toolpaths/RaftLayout.h"
 
 namespace mixengine {
 namespace {
@@ -39,13 +40,33 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     return planPrint(toolpaths, group.settings, scene.machine.extruders, state);
 }
 
-MixingGroup mixingInput(const SceneGroup& group) {
+/// The mixing stage's view of the group: each mesh's height span as printed, i.e. lifted by the
+/// raft (toolpaths/RaftLayout.h) like the layers whose z the schedules are read at.
+MixingGroup mixingInput(const Scene& scene, const SceneGroup& group) {
     MixingGroup input{&group.settings, {}};
+    const coord_um lift = raftLayout(group.settings, &scene.machine.extruders).modelLiftUm(1);
     for (const SceneMesh& m : group.meshes) {
         const AABB3 box = m.mesh.bounds();
-        input.meshes.push_back({&m.settings, box.min.z, box.max.z});
+        input.meshes.push_back({&m.settings, box.min.z + lift, box.max.z + lift});
     }
     return input;
+}
+
+/// Numbers the plan's layers on from `next_index` (the first group keeps CuraEngine's numbers,
+/// negative raft layers included); returns the index after the last layer.
+int renumber(PrintPlan& plan, int next_index, bool first_group) {
+    if (plan.layers.empty())
+        return next_index;
+    const int offset = first_group ? 0 : next_index - plan.layers.front().index;
+    for (PlannedLayer& layer : plan.layers)
+        layer.index += offset;
+    return plan.layers.back().index + 1;
+}
+
+/// The layers of the model (not the raft's): CuraEngine's ;LAYER_COUNT:.
+int modelLayers(const PrintPlan& plan) {
+    return static_cast<int>(std::count_if(plan.layers.begin(), plan.layers.end(),
+                                          [](const PlannedLayer& layer) { return layer.index >= 0; }));
 }
 
 /// "a.stl", "a.stl, b.stl", or "a.stl, b.stl and 3 more meshes" for messages.
@@ -103,7 +124,8 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     GCodeOutput output;
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
     output.summary.max = {INT64_MIN, INT64_MIN, INT64_MIN};
-    int layer_offset = 0;
+    int next_index = 0;
+    int model_layers = 0;
     for (const SceneGroup& group : scene.groups) {
         if (group.meshes.empty())
             continue;
@@ -111,12 +133,11 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         SlicedGroup sliced = sliceGroup(group, threads, log);
         log.progress(ProgressStage::Toolpaths, 0.3);
         PrintPlan plan = planGroup(scene, group, sliced, threads, state, log);
-        assignMixes(plan, mixingInput(group), log);
+        assignMixes(plan, mixingInput(scene, group), log);
+        model_layers += modelLayers(plan);
+        next_index = renumber(plan, next_index, output.layer_chunks.empty());
         if (on_plan)
             on_plan(plan);
-        for (PlannedLayer& layer : plan.layers)
-            layer.index += layer_offset;
-        layer_offset += static_cast<int>(plan.layers.size());
         log.progress(ProgressStage::GCode, 0.8);
         WrittenLayers written = writePlan(plan, writer, gcode);
         output.summary.min = {std::min(output.summary.min.x, written.min.x),
@@ -147,7 +168,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     output.start = startCode(global, scene.machine.extruders.front(), relative);
     if (!relative)
         output.start += "G92 E0\n";
-    output.start += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
+    output.start += ";LAYER_COUNT:" + std::to_string(model_layers) + "\n";  // as CuraEngine: not the raft's
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
     log.progress(ProgressStage::Done, 1.0);
     return output;

@@ -5,7 +5,10 @@
 //     cool_min_speed (travel keeps its speed);
 //   - fan: from cool_fan_full_layer on, cool_fan_speed_min for layers that take at least
 //     cool_min_layer_time_fan_speed_max, cool_fan_speed_max for layers at or under
-//     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0.
+//     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0
+//     (layers below the model — raft filler layers — count as layer 0);
+//   - raft layers (raftCooling): their raft_*_fan_speed replaces cool_fan_speed_min and there is no
+//     ramp, as CuraEngine 4.13 cools them; the minimum layer time and cool_fan_speed_max still apply.
 // Layer time here is the planner's simple estimate: distance / speed of every move.
 #include <vector>
 
@@ -26,6 +29,9 @@ struct CoolingParams {
 };
 
 CoolingParams coolingParams(const Settings& settings);
+
+/// The model's cooling for a raft layer printed with `raft_fan_ratio` (0..1).
+CoolingParams raftCooling(const CoolingParams& model, double raft_fan_ratio);
 
 /// Seconds each step takes at its planned speed (index = step; 0 for markers), the head at `start`.
 std::vector<double> stepSeconds(const PlannedLayer& layer, Point2 start);

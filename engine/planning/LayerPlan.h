@@ -37,8 +37,11 @@ struct PlanStep {
 };
 
 struct PlannedLayer {
+    /// CuraEngine's layer number: 0 is the model's first layer; raft and raft filler layers below
+    /// it are negative (;LAYER:-6 … ;LAYER:-1).
     int index = 0;
-    coord_um z = 0;  ///< nozzle height
+    coord_um z = 0;          ///< nozzle height
+    coord_um thickness = 0;  ///< height of the extruded lines (0 = the distance to the layer below)
     std::vector<PlanStep> steps;
 };
 

@@ -122,6 +122,24 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
     appendPathWipe(path, start, params, before_end, head, steps);
 }
 
+/// The nearest path not done yet by its nearest end (open lines) or its first vertex (loops, to
+/// keep the search linear in the number of paths); paths.size() when none is left.
+std::size_t nearestPath(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done,
+                        const Point2& head) {
+    std::size_t best = paths.size();
+    double best_distance = std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        if (done[i] || paths[i].points.size() < 2)
+            continue;
+        const double d = paths[i].closed ? distanceUm(head, paths[i].points.front())
+                                         : std::min(distanceUm(head, paths[i].points.front()),
+                                                    distanceUm(head, paths[i].points.back()));
+        if (d < best_distance)
+            best = i, best_distance = d;
+    }
+    return best;
+}
+
 }  // namespace
 
 double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um,
@@ -133,25 +151,15 @@ double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_u
 void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& params, Point2& head,
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps) {
     std::vector<bool> done(paths.size(), false);
+    const bool keep_order = !paths.empty() && paths.front().keep_order;
     for (std::size_t placed = 0; placed < paths.size(); ++placed) {
-        // Pick the nearest path by its nearest end (open lines) or its first vertex (loops, to keep
-        // the search linear in the number of paths); the loop's best start is chosen afterwards.
-        std::size_t best = paths.size();
-        double best_distance = std::numeric_limits<double>::max();
-        for (std::size_t i = 0; i < paths.size(); ++i) {
-            if (done[i] || paths[i].points.size() < 2)
-                continue;
-            const double d = paths[i].closed ? distanceUm(head, paths[i].points.front())
-                                             : std::min(distanceUm(head, paths[i].points.front()),
-                                                        distanceUm(head, paths[i].points.back()));
-            if (d < best_distance)
-                best = i, best_distance = d;
-        }
-        std::size_t best_start = 0;
-        if (best < paths.size())
-            best_start = bestStart(paths[best], head, best_distance);
+        const std::size_t best = keep_order ? placed : nearestPath(paths, done, head);
         if (best == paths.size())
             break;
+        if (paths[best].points.size() < 2)
+            continue;
+        double best_distance = 0;
+        const std::size_t best_start = bestStart(paths[best], head, best_distance);
         done[best] = true;
         if (feature != paths[best].feature) {
             PlanStep marker;

@@ -2,7 +2,8 @@
 // Orders the extrusion paths of one layer to keep travel short and turns them into plan steps.
 //
 // Greedy nearest neighbour from the current head position: a closed loop may start at any of its
-// vertices (the nearest is taken), an open line at either end. Travels longer than
+// vertices (the nearest is taken), an open line at either end. A group whose paths have keep_order
+// (monotonic ironing) is printed in its own order; only each path's start is chosen. Travels longer than
 // retraction_min_travel retract when retraction is enabled, unless they stay inside the comb
 // boundary (combing).
 #include <optional>

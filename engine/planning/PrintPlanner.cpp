@@ -8,6 +8,7 @@
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
 #include "planning/Temperatures.h"
+#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 
@@ -58,7 +59,7 @@ struct LayerContext {
 };
 
 /// The order of a mesh's groups on a layer: walls (inner first, or outer first with
-/// outer_inset_first), skin, infill — infill first with infill_before_walls.
+/// outer_inset_first), skin, infill — infill first with infill_before_walls — and ironing last.
 std::vector<const std::vector<ExtrusionPath>*> groupOrder(const MeshLayerGroups& g, const Settings& s) {
     const bool outer_first = s.has("outer_inset_first") && s.boolean("outer_inset_first");
     std::vector<const std::vector<ExtrusionPath>*> order;
@@ -68,6 +69,7 @@ std::vector<const std::vector<ExtrusionPath>*> groupOrder(const MeshLayerGroups&
         order = {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill};
     if (s.has("infill_before_walls") && s.boolean("infill_before_walls"))
         std::rotate(order.begin(), order.begin() + 3, order.end());
+    order.push_back(&g.ironing);
     return order;
 }
 
@@ -120,6 +122,117 @@ void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
     }
 }
 
+/// What every layer of one planPrint call shares.
+struct PlanRun {
+    const GroupToolpaths& toolpaths;
+    const std::vector<Settings>& extruders;
+    CoolingParams cooling;
+    MotionSources motion;
+    std::set<int> used;
+    PlannerState& state;
+};
+
+/// Starts `planned` with its fan step.
+PlannedLayer startLayer(int index, coord_um z, coord_um thickness) {
+    PlannedLayer planned;
+    planned.index = index;
+    planned.z = z;
+    planned.thickness = thickness;
+    PlanStep fan;
+    fan.kind = PlanStep::Kind::SetFan;
+    planned.steps.push_back(fan);
+    return planned;
+}
+
+/// Switches to `extruder` (a tool change step when it is not the active one).
+void useExtruder(int extruder, PlannedLayer& planned, PlanRun& run) {
+    run.used.insert(extruder);
+    if (extruder == run.state.extruder)
+        return;
+    PlanStep change;
+    change.kind = PlanStep::Kind::SetExtruder;
+    change.extruder = extruder;
+    planned.steps.push_back(change);
+    run.state.extruder = extruder;
+}
+
+/// Retraction at the layer start (not on the print's first layer), cooling and acceleration/jerk.
+void finishLayer(PlannedLayer& planned, bool after_first, int layer_extruder, Point2 layer_start,
+                 const CoolingParams& cooling, PlanRun& run) {
+    if (after_first)
+        retractAtLayerStart(planned, run.extruders[trainOf(layer_extruder, run.extruders)]);
+    applyCooling(planned, layer_start, cooling);
+    assignMotion(planned, run.motion, layer_extruder);
+}
+
+/// As CuraEngine: travel on the raft combs inside its outline grown by 0.1 mm unless combing is off.
+constexpr coord_um kRaftCombMarginUm = 100;
+
+bool combsOnRaft(const Settings& global) {
+    return !global.has("retraction_combing") || global.text("retraction_combing") != "off";
+}
+
+/// A raft or filler layer: its paths, extruder by extruder (the active one first), loops before
+/// lines (the raft base's outline, then its lines, as CuraEngine), without mesh markers; the
+/// raft's own fan.
+PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, bool after_first, PlanRun& run) {
+    const Point2 layer_start = run.state.head;
+    const int layer_extruder = run.state.extruder;
+    PlannedLayer planned = startLayer(layer.index, layer.z_um, layer.thickness_um);
+    std::set<int> extruders;
+    collectExtruders(layer.paths, extruders);
+    std::vector<int> order;
+    if (extruders.erase(run.state.extruder))
+        order.push_back(run.state.extruder);
+    order.insert(order.end(), extruders.begin(), extruders.end());
+    for (int extruder : order) {
+        useExtruder(extruder, planned, run);
+        const Settings& train = run.extruders[trainOf(extruder, run.extruders)];
+        const TravelParams travel =
+            travelParams(train, layer.index, layer.thickness_um, comb.empty() ? nullptr : &comb);
+        std::vector<ExtrusionPath> loops = ofExtruder(layer.paths, extruder), lines;
+        const auto open = std::stable_partition(loops.begin(), loops.end(),
+                                                [](const ExtrusionPath& path) { return path.closed; });
+        lines.assign(std::make_move_iterator(open), std::make_move_iterator(loops.end()));
+        loops.erase(open, loops.end());
+        std::optional<Feature> feature;
+        appendOrderedPaths(std::move(loops), travel, run.state.head, feature, planned.steps);
+        appendOrderedPaths(std::move(lines), travel, run.state.head, feature, planned.steps);
+    }
+    const CoolingParams cooling =
+        layer.fan_ratio >= 0 ? raftCooling(run.cooling, layer.fan_ratio) : run.cooling;
+    finishLayer(planned, after_first, layer_extruder, layer_start, cooling, run);
+    return planned;
+}
+
+/// Model layer `i`: every extruder's prime tower, ooze shield, skirt/brim (layer 0), support and
+/// meshes.
+PlannedLayer planModelLayer(std::size_t i, bool after_first, PlanRun& run) {
+    const GroupToolpaths& toolpaths = run.toolpaths;
+    const LayerZ& height = toolpaths.heights[i];
+    const Point2 layer_start = run.state.head;
+    const CombBoundary comb(combArea(toolpaths, i));
+    const int layer_extruder = run.state.extruder;
+    PlannedLayer planned = startLayer(static_cast<int>(i), height.print_z, height.print_z - height.bottom_z);
+    for (int extruder : extruderOrder(toolpaths, i, run.state.extruder)) {
+        useExtruder(extruder, planned, run);
+        const LayerContext ctx{planned.index, planned.thickness, extruder,
+                               &run.extruders[trainOf(extruder, run.extruders)], &comb};
+        if (i < toolpaths.prime_tower.size())
+            planNonMesh(toolpaths.prime_tower[i], ctx, run.state.head, planned);
+        if (i < toolpaths.ooze_shield.size())
+            planNonMesh(toolpaths.ooze_shield[i], ctx, run.state.head, planned);
+        if (i == 0)
+            planNonMesh(toolpaths.adhesion, ctx, run.state.head, planned);
+        if (i < toolpaths.support.size())
+            planNonMesh(toolpaths.support[i], ctx, run.state.head, planned);
+        for (std::size_t m = 0; m < toolpaths.meshes.size(); ++m)
+            planMeshLayer(toolpaths.meshes[m], static_cast<int>(m), ctx, run.state.head, planned);
+    }
+    finishLayer(planned, after_first, layer_extruder, layer_start, run.cooling, run);
+    return planned;
+}
+
 }  // namespace
 
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active) {
@@ -130,7 +243,7 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
         collectExtruders(toolpaths.support[layer], used);
     for (const MeshToolpaths& mesh : toolpaths.meshes) {
         const MeshLayerGroups& g = mesh.layers[layer];
-        for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+        for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill, &g.ironing})
             collectExtruders(*group, used);
     }
     std::vector<int> order;
@@ -154,60 +267,31 @@ Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
 
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                     const std::vector<Settings>& extruders, PlannerState& state) {
-    const std::vector<LayerZ>& heights = toolpaths.heights;
     PrintPlan plan;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         plan.mesh_names.push_back(mesh.name);
-    const CoolingParams cooling = coolingParams(global);
     const Point2 print_start = state.head;
-    std::set<int> used;
     std::vector<const Settings*> mesh_settings;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         mesh_settings.push_back(mesh.settings);
-    const MotionSources motion = motionSources(global, std::move(mesh_settings), extruders);
-    for (std::size_t i = 0; i < heights.size(); ++i) {
-        const Point2 layer_start = state.head;
-        const CombBoundary comb(combArea(toolpaths, i));
-        const int layer_extruder = state.extruder;
-        PlannedLayer planned;
-        planned.index = static_cast<int>(i);
-        planned.z = heights[i].print_z;
-        PlanStep fan;
-        fan.kind = PlanStep::Kind::SetFan;
-        planned.steps.push_back(fan);
-        for (int extruder : extruderOrder(toolpaths, i, state.extruder)) {
-            used.insert(extruder);
-            if (extruder != state.extruder) {
-                PlanStep change;
-                change.kind = PlanStep::Kind::SetExtruder;
-                change.extruder = extruder;
-                planned.steps.push_back(change);
-                state.extruder = extruder;
-            }
-            const std::size_t train =
-                std::min<std::size_t>(static_cast<std::size_t>(extruder), extruders.size() - 1);
-            const LayerContext ctx{planned.index, heights[i].print_z - heights[i].bottom_z, extruder,
-                                   &extruders[train], &comb};
-            if (i < toolpaths.prime_tower.size())
-                planNonMesh(toolpaths.prime_tower[i], ctx, state.head, planned);
-            if (i < toolpaths.ooze_shield.size())
-                planNonMesh(toolpaths.ooze_shield[i], ctx, state.head, planned);
-            if (i == 0)
-                planNonMesh(toolpaths.adhesion, ctx, state.head, planned);
-            if (i < toolpaths.support.size())
-                planNonMesh(toolpaths.support[i], ctx, state.head, planned);
-            for (std::size_t m = 0; m < toolpaths.meshes.size(); ++m)
-                planMeshLayer(toolpaths.meshes[m], static_cast<int>(m), ctx, state.head, planned);
-        }
-        if (i > 0)
-            retractAtLayerStart(planned, extruders[trainOf(layer_extruder, extruders)]);
-        applyCooling(planned, layer_start, cooling);
-        assignMotion(planned, motion, layer_extruder);
-        plan.layers.push_back(std::move(planned));
+    PlanRun run{toolpaths,
+                extruders,
+                coolingParams(global),
+                motionSources(global, std::move(mesh_settings), extruders),
+                {},
+                state};
+    if (!toolpaths.raft.empty()) {
+        const Paths comb_area =
+            combsOnRaft(global) ? offsetPolygons(toolpaths.raft_outline, kRaftCombMarginUm) : Paths{};
+        const CombBoundary raft_comb(comb_area);
+        for (const RaftLayer& layer : toolpaths.raft)
+            plan.layers.push_back(planRaftLayer(layer, raft_comb, !plan.layers.empty(), run));
     }
-    const int only = used.size() == 1 ? *used.begin() : state.extruder;
+    for (std::size_t i = 0; i < toolpaths.heights.size(); ++i)
+        plan.layers.push_back(planModelLayer(i, !plan.layers.empty(), run));
+    const int only = run.used.size() == 1 ? *run.used.begin() : state.extruder;
     const std::size_t train = std::min<std::size_t>(static_cast<std::size_t>(only), extruders.size() - 1);
-    planTemperatures(plan, temperatureParams(global, extruders[train]), used.size() == 1, print_start);
+    planTemperatures(plan, temperatureParams(global, extruders[train]), run.used.size() == 1, print_start);
     return plan;
 }
 

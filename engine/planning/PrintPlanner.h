@@ -1,5 +1,8 @@
 #pragma once
-// Planning: the toolpaths of a mesh group become ordered steps per layer. On each layer the
+// Planning: the toolpaths of a mesh group become ordered steps per layer. The layers below the
+// model come first (GroupToolpaths::raft: raft and filler layers, with their negative numbers, own
+// thickness and — raft layers — own fan, planning/Cooling.h); travel on them combs inside the raft's
+// outline grown by 0.1 mm (unless retraction_combing is off), as CuraEngine. On each layer the
 // extruders print one after the other, the one already active first (fewest tool changes); each
 // extruder prints its prime tower and ooze shield, the skirt/brim (layer 0), its support, then
 // every mesh in order — inner walls, outer walls, skin, infill — with travel, retraction and the fan.
@@ -18,8 +21,8 @@ struct PlannerState {
     int extruder = 0;  ///< the active extruder (carried from group to group)
 };
 
-/// One PlannedLayer per toolpaths.heights entry. retraction_combing "off" (or a layer without
-/// outlines) → every long travel retracts.
+/// One PlannedLayer per toolpaths.raft entry, then one per toolpaths.heights entry.
+/// retraction_combing "off" (or a layer without outlines) → every long travel retracts.
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                     const std::vector<Settings>& extruders, PlannerState& state);
 

@@ -76,9 +76,11 @@ double secondsBetween(const NozzleTemperatureParams& p, double from_c, double to
     return speed > 0 ? std::abs(to_c - from_c) / speed : 0.0;
 }
 
-/// The temperature a layer wants: its average flow through the graph (layer 0: the layer-0 value).
-double wantedTemperature(const NozzleTemperatureParams& p, const PlannedLayer& layer, Point2 start) {
-    if (layer.index == 0 && p.layer0_c != 0)
+/// The temperature a layer wants: its average flow through the graph (the plan's first layer — the
+/// raft's base under a raft — the layer-0 value).
+double wantedTemperature(const NozzleTemperatureParams& p, const PlannedLayer& layer, Point2 start,
+                         bool first) {
+    if (first && p.layer0_c != 0)
         return p.layer0_c;
     if (!p.flow_dependent)
         return p.print_c;
@@ -128,9 +130,9 @@ void planNozzle(PrintPlan& plan, const NozzleTemperatureParams& p, Point2 start)
         starts.push_back(start);
         start = lastPosition(layer, start);
     }
-    double current = plan.layers.empty() ? 0 : wantedTemperature(p, plan.layers[0], starts[0]);
+    double current = plan.layers.empty() ? 0 : wantedTemperature(p, plan.layers[0], starts[0], true);
     for (std::size_t i = 1; i < plan.layers.size(); ++i) {
-        const double wanted = wantedTemperature(p, plan.layers[i], starts[i]);
+        const double wanted = wantedTemperature(p, plan.layers[i], starts[i], false);
         if (wanted == current)
             continue;
         PlannedLayer& before = plan.layers[i - 1];

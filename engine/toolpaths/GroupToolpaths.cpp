@@ -37,7 +37,7 @@ std::vector<std::set<int>> extrudersPerLayer(const GroupToolpaths& result, std::
             if (i >= mesh.layers.size())
                 continue;
             const MeshLayerGroups& g = mesh.layers[i];
-            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill, &g.ironing})
                 collect(*group, used[i]);
         }
         collect(result.support[i], used[i]);
@@ -50,6 +50,51 @@ Paths pointsOf(const std::vector<ExtrusionPath>& paths) {
     for (const ExtrusionPath& path : paths)
         points.push_back(path.points);
     return points;
+}
+
+/// The raft's filler layers, each printing `support` (toolpaths/RaftLayout.h).
+std::vector<RaftLayer> fillerLayers(const RaftLayout& layout, const std::vector<ExtrusionPath>& support) {
+    std::vector<RaftLayer> layers;
+    if (support.empty())
+        return layers;
+    const int count = layout.fillerLayerCount();
+    const coord_um height = layout.fillerLayerHeightUm();
+    for (int index = -count; index < 0; ++index) {
+        RaftLayer layer;
+        layer.index = index;
+        layer.thickness_um = height;
+        layer.z_um = layout.totalThicknessUm() + coord_um(count + index + 1) * height;
+        layer.paths = support;
+        layers.push_back(std::move(layer));
+    }
+    return layers;
+}
+
+/// Everything on the first printed layer: the models, the support area and the prime tower.
+Paths firstLayerArea(const GroupToolpaths& result, const std::vector<Paths>& model, const Paths& support_area,
+                     const Settings& global) {
+    Paths area = result.first_sliced_layer < model.size() ? model[result.first_sliced_layer] : Paths{};
+    area.insert(area.end(), support_area.begin(), support_area.end());
+    if (!result.prime_tower.empty() && !result.prime_tower[0].empty())
+        area.push_back(primeTowerOutline(global));
+    return area;
+}
+
+/// The raft under the first printed layer and its filler layers; the model's heights lifted.
+void addRaft(const ToolpathInput& input, const RaftLayout& layout, const Paths& first_layer,
+             const std::vector<ExtrusionPath>& filler, GroupToolpaths& result) {
+    RaftToolpaths raft = generateRaft({input.global, input.extruders, first_layer});
+    if (raft.layers.empty())
+        return;
+    result.raft = std::move(raft.layers);
+    result.raft_outline = std::move(raft.outline);
+    for (RaftLayer& layer : fillerLayers(layout, filler))
+        result.raft.push_back(std::move(layer));
+    for (std::size_t i = 0; i < result.heights.size(); ++i) {
+        const coord_um lift = layout.modelLiftUm(static_cast<int>(i));
+        result.heights[i].print_z += lift;
+        result.heights[i].bottom_z += lift;
+    }
 }
 
 /// Drops the empty layers at the bottom (toolpaths/EmptyLayers.h) and says so in the notes.
@@ -77,7 +122,8 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     }
     const std::vector<Paths> model = unitedModel(input, threads);
 
-    SupportInput support{input.global, input.extruders, &input.heights, {}, &model};
+    const RaftLayout raft = raftLayout(*input.global, input.extruders);
+    SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled};
     for (const ToolpathMeshInput& mesh : input.meshes)
         support.meshes.push_back({mesh.settings, mesh.layers});
     SupportResult support_result = generateSupport(support, threads);
@@ -88,7 +134,7 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     result.prime_tower = generatePrimeTower(tower);
     result.ooze_shield = generateOozeShield(tower);
 
-    if (!model.empty()) {
+    if (!model.empty() && !raft.enabled) {
         // As CuraEngine, the brim goes around the support on layer 0 too.
         AdhesionInput adhesion{input.global, input.extruders,
                                unionOf(model[0], support_result.first_layer_area),
@@ -100,6 +146,9 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         result.warnings = std::move(skirt.warnings);
     }
     dropEmptyBottomLayers(input, result);
+    if (raft.enabled && !result.heights.empty())
+        addRaft(input, raft, firstLayerArea(result, model, support_result.first_layer_area, *input.global),
+                support_result.filler, result);
     return result;
 }
 

@@ -5,6 +5,7 @@
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/InfillPatterns.h"
+#include "toolpaths/Ironing.h"
 #include "toolpaths/OutlineOffsets.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/Seam.h"
@@ -133,6 +134,29 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     return xy == 0 && hole == 0 ? outlines : offsetOutlines(outlines, xy, hole);
 }
 
+/// The mesh's highest layer with an outline (−1: none).
+int highestFilledLayer(const std::vector<SlicedLayer>& layers) {
+    for (std::size_t i = layers.size(); i-- > 0;) {
+        if (!layers[i].outlines.empty())
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
+/// The ironing of layer `i` (toolpaths/Ironing.h); none unless ironing_enabled.
+std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const Settings& s, std::size_t i) {
+    if (!s.has("ironing_enabled") || !s.boolean("ironing_enabled"))
+        return {};
+    const int layer = static_cast<int>(i);
+    const bool only_highest = s.has("ironing_only_highest_layer") && s.boolean("ironing_only_highest_layer");
+    if (only_highest && layer != highestFilledLayer(layers))
+        return {};
+    const Paths above =
+        i + 1 < layers.size() ? adjustedOutlines(layers[i + 1].outlines, s, layer + 1) : Paths{};
+    const Paths surface = topSurface(adjustedOutlines(layers[i].outlines, s, layer), above);
+    return ironingPaths(surface, ironingParams(s, layer));
+}
+
 }  // namespace
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
@@ -168,6 +192,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
              generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
             result[i].skin.push_back(std::move(path));
         result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
+        result[i].ironing = ironing(layers, settings, i);
     });
     return result;
 }

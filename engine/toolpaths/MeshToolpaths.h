@@ -10,7 +10,8 @@
 //             roofing_* keys;
 //   infill  — infill_pattern at infill_line_distance inside the innermost wall, grown by
 //             infill_overlap_mm, at infill_angles[layer % n] (default 45° and 135° alternating for
-//             lines and zigzag, 45° otherwise); none when infill_line_distance is 0.
+//             lines and zigzag, 45° otherwise); none when infill_line_distance is 0;
+//   ironing — with ironing_enabled, the layer's top surface (toolpaths/Ironing.h), last.
 // Widths, speeds, flows and extruders per feature and layer: toolpaths/FeatureStyle.h.
 // Layers are processed in parallel (common/ParallelFor.h); the result does not depend on `threads`.
 #include <vector>
@@ -21,12 +22,14 @@
 
 namespace mixengine {
 
-/// Paths of one layer in print order of their groups: inner walls, outer walls, skin, infill.
+/// Paths of one layer in print order of their groups: inner walls, outer walls, skin, infill,
+/// ironing.
 struct MeshLayerGroups {
     std::vector<ExtrusionPath> inner_walls;
     std::vector<ExtrusionPath> outer_walls;
     std::vector<ExtrusionPath> skin;
     std::vector<ExtrusionPath> infill;
+    std::vector<ExtrusionPath> ironing;
 };
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,

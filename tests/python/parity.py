@@ -500,10 +500,7 @@ def explain(key, value):
 
 # Reasons for whole families of settings (a key's first matching prefix); other keys get their verdict.
 FAMILY_REASONS = [
-    (("adhesion_type",), "a raft is printed as a skirt"),
-    (("raft_", "layer_0_z_overlap"), "rafts are not built yet (a raft is printed as a skirt)"),
     (("bridge_",), "bridge settings are not built yet"),
-    (("ironing_",), "ironing is not built yet"),
     (("coasting_",), "coasting is not built yet"),
     (("magic_fuzzy_skin_",), "fuzzy skin is not built yet"),
     (("mold_",), "molds are not built yet"),

@@ -247,12 +247,25 @@ def machine(overrides=None):
     return bed_offset(g), float(e["material_diameter"]), float(e["machine_nozzle_size"])
 
 
+def raft_lift_mm(overrides=None):
+    """How far both engines raise the model over a raft (adhesion_type raft; MixEngine's
+    toolpaths/RaftLayout.h, CuraEngine's raft.cpp): the raft's thickness + raft_airgap - layer_0_z_overlap
+    (layer 0 sits that overlap higher); 0 without a raft."""
+    g, e = resolve(overrides)
+    if g.get("adhesion_type") != "raft":
+        return 0.0
+    thickness = (float(e["raft_base_thickness"]) + float(e["raft_interface_thickness"])
+                 + int(e["raft_surface_layers"]) * float(e["raft_surface_thickness"]))
+    return thickness + float(e["raft_airgap"]) - float(e["layer_0_z_overlap"])
+
+
 def measured(run, name, overrides=None, sections=None):
     """(gcode_model.Model, print_quality.Quality) of run.gcode against the model, with the resolved
-    settings (filament diameter, nozzle, bed offset)."""
+    settings (filament diameter, nozzle, bed offset, the raft's lift)."""
     offset, diameter, nozzle = machine(overrides)
     model = gcode_model.read(run.gcode)
-    q = print_quality.measure(model, model_path(name), offset, diameter, nozzle_mm=nozzle, sections=sections)
+    q = print_quality.measure(model, model_path(name), offset, diameter, nozzle_mm=nozzle, sections=sections,
+                              lift_mm=raft_lift_mm(overrides))
     return model, q
 
 

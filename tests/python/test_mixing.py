@@ -95,6 +95,39 @@ def test_channels_add_up_to_the_single_colour_e(sliced, dialect, relative):
 
 
 @pytest.mark.parametrize("relative", [False, True])
+@pytest.mark.parametrize("dialect", ["eb_axes", "rrf_colon", "marlin_m163"])
+def test_raft_is_printed_with_its_own_mix_and_adds_up(sliced, dialect, relative):
+    """adhesion_type=raft: the raft's layers (;LAYER: below 0: base, interface, fdmprinter's two surface
+    layers) are printed with mixing_raft_ratio — filament A by default, 0.3:0.7 when set — and the cube above
+    follows its gradient from its own bottom, lifted by the raft; move by move A + B is still the
+    single-colour E of the same slice with the same raft."""
+    raft = ("adhesion_type=raft",)
+    single = single_moves_of(sliced(*raft, *mode_settings(relative or dialect == "rrf_colon")))
+    tolerance = 2e-5 if dialect in SPLIT_DIALECTS else 0.5 / RESOLUTION + 1e-9
+    for raft_mix, raft_b in ((None, 0.0), ("0.3:0.7", 0.7)):
+        extra = raft + ((f"mixing_raft_ratio={raft_mix}",) if raft_mix else ())
+        reading = read_mixing_gcode(sliced(*extra, *gradient(dialect, 20, 80, relative)), dialect)
+        layers = reading.layer_totals()
+        assert sorted(layer for layer in layers if layer < 0) == [-9, -8, -7, -6]  # 5 filler layers unprinted
+        for layer in (-9, -8, -7, -6):
+            amount_a, amount_b = layers[layer][1]
+            assert amount_b / (amount_a + amount_b) == pytest.approx(raft_b, abs=tolerance), layer
+        lift = layers[1][0] - 0.4  # fdmprinter: layer 1 of the model is printed at 0.3 + 0.1 mm above its bottom
+        assert lift == pytest.approx(0.71 + 0.3 - 0.15)  # raft 0.36 + 0.15 + 2 x 0.1, air gap, layer-0 overlap
+        for layer, (z, (amount_a, amount_b)) in layers.items():
+            if layer >= 1:
+                expected = seed_share_b(20, 80, 100.0 * (z - lift) / CUBE_MM)
+                assert amount_b / (amount_a + amount_b) == pytest.approx(expected, abs=tolerance), layer
+        mixed = [m for m in reading.moves if m.xy and m.total > 0]
+        assert len(mixed) == len(single) > 1000
+        assert max(relative_error(m.total, s.total) for m, s in zip(mixed, single)) <= 1e-5
+
+
+def single_moves_of(path):
+    return [m for m in read_mixing_gcode(path, "single").moves if m.xy and m.total > 0]
+
+
+@pytest.mark.parametrize("relative", [False, True])
 def test_klipper_host_sees_the_b_total(sliced, relative, report):
     """A Klipper host moves the manual_stepper to the absolute B positions it is sent (G92 cannot reset it).
     Whatever position a previous print left the stepper at, its final position is the B filament of the

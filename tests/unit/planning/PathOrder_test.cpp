@@ -100,6 +100,27 @@ TEST(PathOrder, OneFeatureMarkerPerChange) {
     EXPECT_EQ(feature, Feature::Fill);
 }
 
+TEST(PathOrder, KeepOrderPrintsTheGroupAsGivenFromTheNearerEnds) {
+    // Nearest first would take x = 1, 3, 5 mm; kept in order (monotonic ironing) it is 5, 1, 3 mm, each
+    // line entered from its end nearer the nozzle (the second ends at y = 0, so the third starts there).
+    std::vector<ExtrusionPath> paths{line({5'000, 0}, {5'000, 500}, Feature::Ironing),
+                                     line({1'000, 500}, {1'000, 0}, Feature::Ironing),
+                                     line({3'000, 0}, {3'000, 500}, Feature::Ironing)};
+    for (ExtrusionPath& p : paths)
+        p.keep_order = true;
+    Point2 head{0, 0};
+    std::optional<Feature> feature;
+    std::vector<PlanStep> steps;
+    appendOrderedPaths(paths, travelParams(), head, feature, steps);
+    std::vector<Point2> travels;
+    for (const PlanStep& s : steps) {
+        if (s.kind == PlanStep::Kind::Travel)
+            travels.push_back(s.to);
+    }
+    EXPECT_EQ(travels, (std::vector<Point2>{{5'000, 0}, {1'000, 500}, {3'000, 0}}));
+    EXPECT_EQ(steps[0].feature, Feature::Ironing);
+}
+
 TEST(PathOrder, RetractOnlyForTravelsLongerThanTheMinimum) {
     struct Case {
         coord_um start_x;

@@ -125,6 +125,55 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
     EXPECT_EQ(box.right, 70'000 + 1'000);
 }
 
+TEST(GroupToolpaths, RaftUnderATeeLiftsTheModelAndTakesTheFirstLayersSupport) {
+    ResolvedMachine m = test::fdmMachine({{"support_enable", "True"},
+                                          {"support_pattern", "lines"},
+                                          {"adhesion_type", "raft"},
+                                          {"initial_layer_line_width_factor", "150"},
+                                          {"speed_support_infill", "40"},
+                                          {"speed_print_layer_0", "20"},
+                                          {"raft_airgap", "0.3"},
+                                          {"layer_0_z_overlap", "0.15"},
+                                          {"raft_margin", "5"}});
+    test::Stack s = test::prismStack(60);  // 0.3 mm first layer, then 0.1 mm
+    test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
+    test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers}}};
+    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const RaftLayout layout = raftLayout(m.global, &m.extruders);
+    EXPECT_TRUE(g.adhesion.empty());  // no skirt or brim under a raft
+    EXPECT_TRUE(g.warnings.empty());
+    // Raft layers, then the filler layers (0.3 + 0.3 − 0.15 = 0.45 mm: 5 of 0.09 mm) printing the support.
+    const int raft_layers = 2 + layout.surface_layers;
+    ASSERT_EQ(layout.fillerLayerCount(), 5);
+    ASSERT_EQ(g.raft.size(), static_cast<std::size_t>(raft_layers + 5));
+    EXPECT_EQ(g.raft.front().index, -layout.extraLayerCount());
+    for (int i = 0; i < static_cast<int>(g.raft.size()); ++i)
+        EXPECT_EQ(g.raft[static_cast<std::size_t>(i)].index, g.raft.front().index + i);
+    const RaftLayer& filler = g.raft.back();
+    EXPECT_EQ(filler.index, -1);
+    EXPECT_EQ(filler.thickness_um, 90);
+    EXPECT_EQ(filler.z_um, layout.totalThicknessUm() + 450);
+    EXPECT_LT(filler.fan_ratio, 0);  // cooled as the model's first layer
+    ASSERT_FALSE(filler.paths.empty());
+    for (const ExtrusionPath& p : filler.paths) {
+        EXPECT_EQ(p.feature, Feature::Support);
+        EXPECT_EQ(p.width_um, m.global.lengthMicrons("support_line_width"));  // no first-layer widening
+        EXPECT_DOUBLE_EQ(p.speed_mm_s, 40);                                   // no first-layer slow-down
+    }
+    EXPECT_TRUE(g.support[0].empty());  // the model's first layer prints no support
+    EXPECT_FALSE(g.support[1].empty());
+    // The raft covers the bar's shadow (the support) with the 5 mm margin.
+    const ClipperLib::IntRect box = boundsOf(g.raft_outline);
+    EXPECT_NEAR(box.left, 40'000 - 5'000, 1'000);
+    EXPECT_NEAR(box.right, 70'000 + 5'000, 1'000);
+    // The model is lifted; its layers keep their thickness.
+    EXPECT_EQ(g.heights[0].print_z, s.heights[0].print_z + layout.modelLiftUm(0));
+    EXPECT_EQ(g.heights[5].print_z, s.heights[5].print_z + layout.modelLiftUm(5));
+    EXPECT_EQ(g.heights[5].print_z - g.heights[5].bottom_z, 100);
+    EXPECT_EQ(g.heights[0].print_z - g.heights[0].bottom_z, 300);
+}
+
 TEST(GroupToolpaths, EmptyBottomLayersAreDroppedAndThePrintStartsAtTheFirstHeight) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
     test::Stack s = test::prismStack(30);
