@@ -13,6 +13,7 @@
 // (toolpaths/Adhesion.h); last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
 // so layer 0 of the result is the first layer that prints. `threads` is used inside every step;
 // the result does not depend on it.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ struct ToolpathMeshInput {
     const Settings* settings = nullptr;                ///< the mesh's resolved settings
     std::string name;                                  ///< for ;MESH:
     const std::vector<SlicedLayer>* layers = nullptr;  ///< index = layer
+    /// The middle of the mesh's bounding box in x and y (the infill pattern's origin); unset: the
+    /// middle of its outlines' bounds.
+    std::optional<Point2> middle_um;
 };
 
 struct ToolpathInput {

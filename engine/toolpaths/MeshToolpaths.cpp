@@ -4,7 +4,9 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
+#include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
+#include "toolpaths/MeshInfill.h"
 #include "toolpaths/OutlineOffsets.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/Seam.h"
@@ -105,26 +107,6 @@ SkinFillParams skinFill(const Settings& s, int layer, coord_um z, const FeatureS
     return p;
 }
 
-std::vector<ExtrusionPath> infillPaths(const Paths& area, const Settings& s, int layer, coord_um z,
-                                       const FeatureStyle& style) {
-    InfillParams p;
-    p.line_distance_um = s.lengthMicrons("infill_line_distance");
-    if (p.line_distance_um <= 0 || area.empty())
-        return {};
-    const std::string text = s.has("infill_pattern") ? s.text("infill_pattern") : "lines";
-    p.pattern = infillPatternOf(text, "infill_pattern");
-    const bool alternate = p.pattern == InfillPattern::Lines || p.pattern == InfillPattern::ZigZag;
-    p.angle_degrees = angleFor(s, "infill_angles", layer,
-                               alternate ? std::vector<double>{45, 135} : std::vector<double>{45});
-    p.z_um = z;
-    p.line_width_um = style.width_um;
-    p.speed_mm_s = style.speed_mm_s;
-    p.flow = style.flow;
-    p.extruder = style.extruder;
-    const coord_um overlap = s.has("infill_overlap_mm") ? s.lengthMicrons("infill_overlap_mm") : 0;
-    return generateInfill(overlap != 0 ? offsetMiter(area, overlap) : area, p);
-}
-
 /// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/OutlineOffsets.h).
 Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
@@ -136,7 +118,8 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
 }  // namespace
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
-                                                   const Settings& settings, int threads) {
+                                                   const Settings& settings, int threads,
+                                                   const std::optional<Point2>& mesh_middle_um) {
     std::vector<MeshLayerGroups> result(layers.size());
     std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
@@ -158,6 +141,11 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
 
     const std::vector<SkinAreas> areas =
         computeSkinAreas(top_reference, bottom_reference, inner_areas, skinParams(settings, refs), threads);
+    std::vector<Paths> infill_areas(layers.size());
+    for (std::size_t i = 0; i < layers.size(); ++i)
+        infill_areas[i] = areas[i].infill;
+    const std::vector<LayerInfill> infill = arrangeInfill(infill_areas, infillLayerParams(settings), threads);
+    const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
 
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
@@ -167,7 +155,8 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         for (ExtrusionPath& path :
              generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
             result[i].skin.push_back(std::move(path));
-        result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
+        result[i].infill =
+            meshInfillPaths(infill[i], meshInfillParams(settings, layer, z, styles.infill, middle));
     });
     return result;
 }
