@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include "toolpaths/PolygonOps.h"
 
@@ -154,6 +155,19 @@ std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const Infil
     thickerLayers(layer, base, out);
     singleLayer(layer, base, out);
     return out;
+}
+
+std::optional<Point2> randomInfillStart(const std::vector<ExtrusionPath>& infill, int layer) {
+    std::vector<const ExtrusionPath*> lines, loops;
+    for (const ExtrusionPath& path : infill)
+        (path.closed ? loops : lines).push_back(&path);
+    std::minstd_rand random(static_cast<std::minstd_rand::result_type>(std::max(layer, 0)) + 1U);
+    if (!lines.empty())
+        return lines[random() % lines.size()]->points.front();
+    if (loops.empty())
+        return std::nullopt;
+    const Path& loop = loops[random() % loops.size()]->points;
+    return loop[random() % loop.size()];
 }
 
 }  // namespace mixengine

@@ -17,6 +17,7 @@
 //   thicker     — the areas printed t layers thick come first, with t × the flow, no walls, zigzag
 //                 with its end pieces.
 // zig_zaggify_infill (or the zigzag pattern) connects the lines.
+#include <optional>
 #include <vector>
 
 #include "geometry/Point.h"
@@ -38,5 +39,10 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
 
 /// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base);
+
+/// infill_randomize_start_location: the first point of an infill line picked at random (a
+/// generator seeded with the layer number, as CuraEngine seeds rand() with it; a random vertex of
+/// a loop when there are no lines); nothing without infill. The same on every run.
+std::optional<Point2> randomInfillStart(const std::vector<ExtrusionPath>& infill, int layer);
 
 }  // namespace mixengine

@@ -157,6 +157,9 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
             result[i].skin.push_back(std::move(path));
         result[i].infill =
             meshInfillPaths(infill[i], meshInfillParams(settings, layer, z, styles.infill, middle));
+        if (settings.has("infill_randomize_start_location") &&
+            settings.boolean("infill_randomize_start_location"))
+            result[i].infill_start = randomInfillStart(result[i].infill, layer);
     });
     return result;
 }

@@ -29,6 +29,8 @@ struct MeshLayerGroups {
     std::vector<ExtrusionPath> outer_walls;
     std::vector<ExtrusionPath> skin;
     std::vector<ExtrusionPath> infill;
+    /// infill_randomize_start_location: planning starts the infill nearest this point.
+    std::optional<Point2> infill_start;
 };
 
 /// `mesh_middle_um`: the middle of the mesh's bounding box in x and y (CuraEngine's infill origin);

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "ToolpathTestSupport.h"
 
 namespace mixengine {
@@ -66,6 +68,31 @@ TEST(MeshInfill, SettingsGiveOriginAngleAndArrangement) {
     const InfillLayerParams a = infillLayerParams(m.global);
     EXPECT_EQ(a.combine_layers, 3);
     EXPECT_EQ(a.gradual_steps, 2);
+}
+
+}  // namespace
+}  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+TEST(MeshInfill, RandomStartIsTheStartOfALineAndRepeatable) {
+    std::vector<ExtrusionPath> lines;
+    for (int i = 0; i < 20; ++i) {
+        ExtrusionPath p;
+        p.points = {{i * 1'000, 0}, {i * 1'000, 5'000}};
+        lines.push_back(p);
+    }
+    std::set<coord_um> starts;
+    for (int layer = 0; layer < 10; ++layer) {
+        const std::optional<Point2> start = randomInfillStart(lines, layer);
+        ASSERT_TRUE(start.has_value());
+        EXPECT_EQ(start->Y, 0);
+        EXPECT_EQ(start, randomInfillStart(lines, layer));
+        starts.insert(start->X);
+    }
+    EXPECT_GT(starts.size(), 3U);  // it moves from layer to layer
+    EXPECT_FALSE(randomInfillStart({}, 3).has_value());
 }
 
 }  // namespace
