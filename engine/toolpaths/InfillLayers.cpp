@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/ParallelFor.h"
+#include "toolpaths/LayerWindows.h"
 #include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
@@ -31,23 +32,35 @@ double skipLayers(const InfillLayerParams& p) {
     return double(p.gradual_step_layers) / steps;
 }
 
+/// What gradual infill compares with: every layer's kept infill and, without the heuristic, the
+/// intersection of each run of gradual_step_layers layers (toolpaths/LayerWindows.h).
+struct Above {
+    const std::vector<Paths>& own;
+    std::vector<Paths> windows;  ///< [j]: layers j … j + step − 1; empty with the heuristic
+};
+
 /// The part of `infill` that stays infill on the layers of step `step` above layer `i`.
-Paths infillAbove(Paths infill, const std::vector<Paths>& own, int i, int step, const InfillLayerParams& p) {
+Paths infillAbove(Paths infill, const Above& above, int i, int step, const InfillLayerParams& p) {
+    const std::size_t n = above.own.size();
+    if (!p.small_gaps_heuristic) {  // the layers i + step·S + 1 … i + (step + 1)·S at once
+        const std::size_t first = static_cast<std::size_t>(i + step * p.gradual_step_layers + 1);
+        return first < n ? intersectAll(infill, above.windows[first]) : Paths{};
+    }
     const double skip = skipLayers(p);
     const double first = i + step * p.gradual_step_layers + std::floor(skip);
     const double last = i + (step + 1) * p.gradual_step_layers;
     for (double upper = first; upper <= last && !infill.empty(); upper += skip) {
-        if (upper >= double(own.size()))
+        if (upper >= double(n))
             return {};
-        infill = intersectAll(infill, own[static_cast<std::size_t>(upper)]);
+        infill = intersectAll(infill, above.own[static_cast<std::size_t>(upper)]);
     }
     return infill;
 }
 
 /// Step 2: the densities of layer i.
-LayerInfill densities(const std::vector<Paths>& own, int i, const InfillLayerParams& p) {
-    const int n = static_cast<int>(own.size());
-    const Paths& infill = own[static_cast<std::size_t>(i)];
+LayerInfill densities(const Above& above, int i, const InfillLayerParams& p) {
+    const int n = static_cast<int>(above.own.size());
+    const Paths& infill = above.own[static_cast<std::size_t>(i)];
     LayerInfill layer;
     if (infill.empty() || i < p.initial_bottom_layers || i > n - 1 - p.top_layers) {
         layer.by_density.push_back({Paths{}});
@@ -55,7 +68,7 @@ LayerInfill densities(const std::vector<Paths>& own, int i, const InfillLayerPar
     }
     Paths less_dense = infill;
     for (int step = 0; step < p.gradual_steps; ++step) {
-        less_dense = infillAbove(std::move(less_dense), own, i, step, p);
+        less_dense = infillAbove(std::move(less_dense), above, i, step, p);
         if (less_dense.empty())
             break;
         layer.by_density.push_back({differenceOf(infill, less_dense)});
@@ -105,9 +118,12 @@ void combineLayers(std::vector<LayerInfill>& layers, const std::vector<Paths>& a
 std::vector<LayerInfill> arrangeInfill(const std::vector<Paths>& areas, const InfillLayerParams& p,
                                        int threads) {
     const std::vector<Paths> own = p.support_only ? supportingInfill(areas, p.support_reach_um) : areas;
+    Above above{own, {}};
+    if (p.gradual_steps > 0 && !p.small_gaps_heuristic)
+        above.windows = windowIntersections(own, p.gradual_step_layers, threads);
     std::vector<LayerInfill> layers(areas.size());
     parallelFor(areas.size(), threads,
-                [&](std::size_t i) { layers[i] = densities(own, static_cast<int>(i), p); });
+                [&](std::size_t i) { layers[i] = densities(above, static_cast<int>(i), p); });
     combineLayers(layers, areas, p, threads);
     return layers;
 }

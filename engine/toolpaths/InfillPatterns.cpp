@@ -61,7 +61,8 @@ std::vector<LineSet> lineSetsOf(const InfillParams& p) {
         case InfillPattern::TriHexagon:
             return {lineSet(p, d, a, 0), lineSet(p, d, a + 60, 0),
                     lineSet(p, d, a + 120, p.pattern == InfillPattern::TriHexagon ? d / 2 : 0)};
-        case InfillPattern::Cubic: {
+        case InfillPattern::Cubic:
+        case InfillPattern::CubicSubdiv: {
             const coord_um shift = static_cast<coord_um>(double(p.z_um) / std::numbers::sqrt2);
             return {lineSet(p, d, a, shift), lineSet(p, d, a + 120, shift), lineSet(p, d, a + 240, shift)};
         }
@@ -113,6 +114,10 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
                 {}};
         case InfillPattern::Concentric:
             return {{}, concentricLoops(area, p)};
+        case InfillPattern::CubicSubdiv:
+            if (p.subdiv_cubes != nullptr)
+                return {clipLines(p.subdiv_cubes->linesAt(p.z_um), area), {}};
+            return {separateLines(area, lineSetsOf(p), p.line_width_um), {}};
         default: {
             const std::vector<LineSet> sets = lineSetsOf(p);
             return {connected ? connectedLines(area, sets) : separateLines(area, sets, p.line_width_um), {}};
@@ -122,7 +127,7 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
 
 bool lineBased(InfillPattern pattern) {
     return pattern != InfillPattern::ZigZag && pattern != InfillPattern::Concentric &&
-           pattern != InfillPattern::Gyroid;
+           pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv;
 }
 
 Paths offsetArea(const Paths& area, coord_um delta) {
@@ -150,8 +155,10 @@ InfillPattern infillPatternOf(const std::string& text, const std::string& key) {
         return InfillPattern::Triangles;
     if (text == "trihexagon")
         return InfillPattern::TriHexagon;
-    if (text == "cubic" || text == "cubicsubdiv")
+    if (text == "cubic")
         return InfillPattern::Cubic;
+    if (text == "cubicsubdiv")
+        return InfillPattern::CubicSubdiv;
     if (text == "tetrahedral")
         return InfillPattern::Tetrahedral;
     if (text == "quarter_cubic")
@@ -174,7 +181,8 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
     const bool connected = params.pattern == InfillPattern::ZigZag ||
                            (params.connect_lines && !even &&
                             (lineBased(params.pattern) || params.pattern == InfillPattern::Gyroid));
-    const coord_um inset = walls + (connected ? w / 2 : 0);
+    const bool octree = params.pattern == InfillPattern::CubicSubdiv && params.subdiv_cubes != nullptr;
+    const coord_um inset = octree ? 0 : walls + (connected ? w / 2 : 0);
     Drawn drawn = drawPattern(offsetArea(area, params.overlap_um - inset), params, connected);
     if (params.multiplier > 1) {
         const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0);

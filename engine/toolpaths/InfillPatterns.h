@@ -13,8 +13,11 @@
 //   concentric        — loops d apart, the first d − w/2 inside the area (its centre line one line
 //                       distance from the edge of a line along the area's edge);
 //   gyroid            — toolpaths/GyroidInfill.h with period 2.41·d.
-// cubicsubdiv prints as cubic; cross, cross_3d and lightning print as lines at d (the same
-// material per area, not the same shape).
+//   cubicsubdiv       — the lines of an octree of cubes (toolpaths/SubdivCubes.h, subdiv_cubes) cut to
+//                       the area grown by the overlap (no wall inset, not connected, as CuraEngine);
+//                       as cubic without the octree.
+// cross, cross_3d and lightning print as lines at d (the same material per area, not the same
+// shape).
 //
 // Placement: every line set goes through the pattern origin (origin_um: CuraEngine's infill origin,
 // the mesh's middle plus infill_offset_x/_y; its shift across a set at angle a is
@@ -35,6 +38,7 @@
 
 #include "geometry/Point.h"
 #include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/SubdivCubes.h"
 
 namespace mixengine {
 
@@ -45,6 +49,7 @@ enum class InfillPattern {
     Triangles,
     TriHexagon,
     Cubic,
+    CubicSubdiv,
     Tetrahedral,
     QuarterCubic,
     Concentric,
@@ -71,6 +76,7 @@ struct InfillParams {
     int wall_count = 0;              ///< loops around the area (infill_wall_line_count)
     int multiplier = 1;              ///< parallel lines per line (infill_multiplier)
     bool connect_lines = false;      ///< zig_zaggify_infill
+    const SubdivCubes* subdiv_cubes = nullptr;  ///< cubicsubdiv's octree (the caller's)
 };
 
 /// The pattern's lines inside `area` (lines end on its boundary grown by the overlap).

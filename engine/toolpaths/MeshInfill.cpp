@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "common/ParallelFor.h"
 #include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
@@ -114,8 +115,9 @@ InfillLayerParams infillLayerParams(const Settings& s) {
         p.support_reach_um = static_cast<coord_um>((std::tan(angle) - 0.01) * double(layer_height));
     }
     p.gradual_steps = countOf(s, "gradual_infill_steps");
-    p.gradual_step_layers =
-        static_cast<int>(roundDivide(lengthOr(s, "gradual_infill_step_height", 0), layer_height));
+    // At least one layer per step (CuraEngine would loop for ever on 0).
+    p.gradual_step_layers = static_cast<int>(
+        std::max<long long>(1, roundDivide(lengthOr(s, "gradual_infill_step_height", 0), layer_height)));
     p.small_gaps_heuristic = flag(s, "skin_no_small_gaps_heuristic");
     p.combine_layers = combinedLayers(s);
     p.initial_bottom_layers = countOf(s, "initial_bottom_layers");
@@ -146,6 +148,32 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
     p.multiplier = std::max(1, countOf(s, "infill_multiplier"));
     p.connect_lines = flag(s, "zig_zaggify_infill") || p.pattern == InfillPattern::ZigZag;
     return p;
+}
+
+std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,
+                                             const Point2& mesh_middle, int threads) {
+    if (!s.has("infill_pattern") || s.text("infill_pattern") != "cubicsubdiv")
+        return nullptr;
+    SubdivCubeParams p;
+    p.line_distance_um = s.lengthMicrons("infill_line_distance");
+    if (p.line_distance_um <= 0)
+        return nullptr;
+    p.radius_addition_um = lengthOr(s, "sub_div_rad_add", 0);
+    const std::vector<double> angles =
+        s.has("infill_angles") ? s.realList("infill_angles") : std::vector<double>{};
+    p.angle_degrees = angles.empty() ? 0.0 : angles.front();
+    p.origin_um = {mesh_middle.X + lengthOr(s, "infill_offset_x", 0),
+                   mesh_middle.Y + lengthOr(s, "infill_offset_y", 0)};
+    p.layer_height_um = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
+    p.machine_size_um = {lengthOr(s, "machine_width", 0), lengthOr(s, "machine_depth", 0),
+                         lengthOr(s, "machine_height", 0)};
+    const int walls = countOf(s, "wall_line_count");
+    const coord_um w0 = lengthOr(s, "wall_line_width_0", 400), wx = lengthOr(s, "wall_line_width_x", 400);
+    const coord_um inset = walls >= 2 ? w0 + wx / 2 : walls == 1 ? w0 / 2 : 0;
+    std::vector<Paths> boundaries(layers.size());
+    parallelFor(layers.size(), threads,
+                [&](std::size_t i) { boundaries[i] = offsetMiter(layers[i].outlines, -inset); });
+    return std::make_unique<SubdivCubes>(p, boundaries);
 }
 
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base) {

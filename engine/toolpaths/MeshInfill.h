@@ -17,15 +17,18 @@
 //   thicker     — the areas printed t layers thick come first, with t × the flow, no walls, zigzag
 //                 with its end pieces.
 // zig_zaggify_infill (or the zigzag pattern) connects the lines.
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "geometry/Point.h"
 #include "settings/Settings.h"
+#include "slicing/Slicer.h"
 #include "toolpaths/ExtrusionPath.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
+#include "toolpaths/SubdivCubes.h"
 
 namespace mixengine {
 
@@ -36,6 +39,12 @@ InfillLayerParams infillLayerParams(const Settings& s);
 /// distance infill_line_distance, the origin at `mesh_middle` + the infill offsets.
 InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const FeatureStyle& style,
                               const Point2& mesh_middle);
+
+/// cubicsubdiv's octree (toolpaths/SubdivCubes.h) for a mesh whose infill_pattern is cubicsubdiv
+/// (nothing otherwise): boundaries from its sliced layers' outlines, moved in to the centre line of
+/// wall min(2, wall_line_count); origin as meshInfillParams'.
+std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,
+                                             const Point2& mesh_middle, int threads);
 
 /// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base);

@@ -107,6 +107,13 @@ SkinFillParams skinFill(const Settings& s, int layer, coord_um z, const FeatureS
     return p;
 }
 
+InfillParams infillParams(const Settings& s, int layer, coord_um z, const FeatureStyle& style,
+                          const Point2& middle, const SubdivCubes* cubes) {
+    InfillParams p = meshInfillParams(s, layer, z, style, middle);
+    p.subdiv_cubes = cubes;
+    return p;
+}
+
 /// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/OutlineOffsets.h).
 Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
@@ -146,6 +153,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         infill_areas[i] = areas[i].infill;
     const std::vector<LayerInfill> infill = arrangeInfill(infill_areas, infillLayerParams(settings), threads);
     const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
+    const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
 
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
@@ -156,7 +164,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
              generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
             result[i].skin.push_back(std::move(path));
         result[i].infill =
-            meshInfillPaths(infill[i], meshInfillParams(settings, layer, z, styles.infill, middle));
+            meshInfillPaths(infill[i], infillParams(settings, layer, z, styles.infill, middle, cubes.get()));
         if (settings.has("infill_randomize_start_location") &&
             settings.boolean("infill_randomize_start_location"))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);

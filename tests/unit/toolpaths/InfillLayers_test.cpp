@@ -60,6 +60,20 @@ TEST(InfillLayers, GradualInfillIsDenserBelowTheEndOfTheInfill) {
         EXPECT_EQ(layers[static_cast<std::size_t>(i)].by_density.size(), 1U) << i;
 }
 
+TEST(InfillLayers, GradualInfillWithTheSmallGapsHeuristicLooksAtFewerLayers) {
+    InfillLayerParams p;
+    p.gradual_steps = 1;
+    p.gradual_step_layers = 3;
+    p.small_gaps_heuristic = true;  // looks at layer i + 3 only
+    std::vector<Paths> areas = column(12, {square(0, 0, 10'000)});
+    areas[5].clear();  // a gap the heuristic does not see from layer 3 (it looks at 6)
+    const std::vector<LayerInfill> with = arrangeInfill(areas, p, 2);
+    EXPECT_TRUE(with[3].by_density[0][0].empty());
+    p.small_gaps_heuristic = false;  // layers 4, 5, 6: the gap counts, layer 3 is all dense
+    const std::vector<LayerInfill> without = arrangeInfill(areas, p, 2);
+    EXPECT_EQ(without[3].by_density.size(), 1U);
+}
+
 TEST(InfillLayers, GradualDensePartIsWhereTheInfillEndsAbove) {
     InfillLayerParams p;
     p.gradual_steps = 1;

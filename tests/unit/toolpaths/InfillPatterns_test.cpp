@@ -164,7 +164,7 @@ TEST(InfillPatterns, ConnectedLinesArePolylinesAlongTheEdge) {
 TEST(InfillPatterns, NamesAsCura) {
     EXPECT_EQ(infillPatternOf("grid", "infill_pattern"), InfillPattern::Grid);
     EXPECT_EQ(infillPatternOf("quarter_cubic", "infill_pattern"), InfillPattern::QuarterCubic);
-    EXPECT_EQ(infillPatternOf("cubicsubdiv", "infill_pattern"), InfillPattern::Cubic);
+    EXPECT_EQ(infillPatternOf("cubicsubdiv", "infill_pattern"), InfillPattern::CubicSubdiv);
     EXPECT_EQ(infillPatternOf("cross_3d", "infill_pattern"), InfillPattern::Lines);
     EXPECT_THROW(infillPatternOf("honeycomb", "infill_pattern"), InputError);
     EXPECT_TRUE(infill(InfillPattern::Grid, 0).empty());
