@@ -10,17 +10,20 @@
 namespace mixengine {
 namespace {
 
-/// Step 1: the infill each layer keeps as support for the layers above.
-std::vector<Paths> supportingInfill(const std::vector<Paths>& areas, coord_um reach) {
+/// Step 1: the infill each layer keeps as support for the layers above. The overhangs depend on the
+/// areas only (in parallel); the kept infill runs down from the top.
+std::vector<Paths> supportingInfill(const std::vector<Paths>& areas, coord_um reach, int threads) {
+    std::vector<Paths> overhang(areas.size());
+    parallelFor(areas.size() > 0 ? areas.size() - 1 : 0, threads, [&](std::size_t below) {
+        const Paths& inside_above = areas[below + 1];
+        const Paths basic = differenceOf(offsetMiter(areas[below], -reach), inside_above);
+        overhang[below] = differenceOf(offsetMiter(basic, reach + 50), inside_above);
+    });
     std::vector<Paths> own = areas;
     for (std::size_t i = areas.size(); i-- > 1;) {
         const std::size_t below = i - 1;
-        if (areas[below].empty())
-            continue;
-        const Paths& inside_above = areas[i];
-        const Paths overhang = differenceOf(offsetMiter(areas[below], -reach), inside_above);
-        const Paths full_overhang = differenceOf(offsetMiter(overhang, reach + 50), inside_above);
-        own[below] = intersectAll(unionOf(own[i], full_overhang), areas[below]);
+        if (!areas[below].empty())
+            own[below] = intersectAll(unionOf(own[i], overhang[below]), areas[below]);
     }
     return own;
 }
@@ -117,7 +120,8 @@ void combineLayers(std::vector<LayerInfill>& layers, const std::vector<Paths>& a
 
 std::vector<LayerInfill> arrangeInfill(const std::vector<Paths>& areas, const InfillLayerParams& p,
                                        int threads) {
-    const std::vector<Paths> own = p.support_only ? supportingInfill(areas, p.support_reach_um) : areas;
+    const std::vector<Paths> own =
+        p.support_only ? supportingInfill(areas, p.support_reach_um, threads) : areas;
     Above above{own, {}};
     if (p.gradual_steps > 0 && !p.small_gaps_heuristic)
         above.windows = windowIntersections(own, p.gradual_step_layers, threads);

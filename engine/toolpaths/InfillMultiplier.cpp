@@ -43,8 +43,9 @@ Paths firstOffset(const Paths& lines, const Paths& loops, coord_um offset) {
     return unionOf(bands, rings);
 }
 
-/// Closed loops cut by the outline into two-point lines.
-Paths cutIntoLines(const Paths& loops, const Paths& outline) {
+/// Closed loops cut by the outline into open polylines (CuraEngine cuts them further into two-point
+/// lines, which its line order optimizer chains again; the pieces are kept whole here).
+Paths cutOpen(const Paths& loops, const Paths& outline) {
     Paths polylines;
     for (const Path& loop : loops) {
         if (loop.empty())
@@ -53,11 +54,7 @@ Paths cutIntoLines(const Paths& loops, const Paths& outline) {
         closed.push_back(loop.front());
         polylines.push_back(std::move(closed));
     }
-    Paths lines;
-    for (const Path& piece : clipLines(polylines, outline))
-        for (std::size_t i = 1; i < piece.size(); ++i)
-            lines.push_back({piece[i - 1], piece[i]});
-    return lines;
+    return clipLines(polylines, outline);
 }
 
 }  // namespace
@@ -87,7 +84,7 @@ void multiplyInfill(Paths& lines, Paths& loops, const Paths& outline, const Mult
     loops.insert(loops.end(), result.begin(), result.end());
     if (p.connected)
         return;
-    const Paths cut = cutIntoLines(loops, outline);
+    const Paths cut = cutOpen(loops, outline);
     lines.insert(lines.end(), cut.begin(), cut.end());
     loops.clear();
 }

@@ -8,7 +8,8 @@
 //     — or, with connected lines (zig_zaggify_infill), inwards into the cells between the bands,
 //     the cells' outlines being the first new lines then;
 //   - connected: the new lines are closed loops clipped to the outline; otherwise they are cut to
-//     the outline into separate two-point lines (and the odd N's middle loops with them).
+//     the outline into open polylines (and the odd N's middle loops with them; CuraEngine goes on
+//     to split them into two-point lines, which its line order optimizer chains again).
 // w = line_width_um; `outline` is the infill area the lines may not leave (without the overlap).
 #include "geometry/Point.h"
 

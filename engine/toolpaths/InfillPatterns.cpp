@@ -115,8 +115,8 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
         case InfillPattern::Concentric:
             return {{}, concentricLoops(area, p)};
         case InfillPattern::CubicSubdiv:
-            if (p.subdiv_cubes != nullptr)
-                return {clipLines(p.subdiv_cubes->linesAt(p.z_um), area), {}};
+            if (p.subdiv_lines != nullptr)
+                return {clipLines(*p.subdiv_lines, area), {}};
             return {separateLines(area, lineSetsOf(p), p.line_width_um), {}};
         default: {
             const std::vector<LineSet> sets = lineSetsOf(p);
@@ -181,7 +181,7 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
     const bool connected = params.pattern == InfillPattern::ZigZag ||
                            (params.connect_lines && !even &&
                             (lineBased(params.pattern) || params.pattern == InfillPattern::Gyroid));
-    const bool octree = params.pattern == InfillPattern::CubicSubdiv && params.subdiv_cubes != nullptr;
+    const bool octree = params.pattern == InfillPattern::CubicSubdiv && params.subdiv_lines != nullptr;
     const coord_um inset = octree ? 0 : walls + (connected ? w / 2 : 0);
     Drawn drawn = drawPattern(offsetArea(area, params.overlap_um - inset), params, connected);
     if (params.multiplier > 1) {

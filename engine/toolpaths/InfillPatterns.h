@@ -13,7 +13,8 @@
 //   concentric        — loops d apart, the first d − w/2 inside the area (its centre line one line
 //                       distance from the edge of a line along the area's edge);
 //   gyroid            — toolpaths/GyroidInfill.h with period 2.41·d.
-//   cubicsubdiv       — the lines of an octree of cubes (toolpaths/SubdivCubes.h, subdiv_cubes) cut to
+//   cubicsubdiv       — the lines of an octree of cubes at this height (toolpaths/SubdivCubes.h, the
+//                       caller's subdiv_lines) cut to
 //                       the area grown by the overlap (no wall inset, not connected, as CuraEngine);
 //                       as cubic without the octree.
 // cross, cross_3d and lightning print as lines at d (the same material per area, not the same
@@ -38,7 +39,6 @@
 
 #include "geometry/Point.h"
 #include "toolpaths/ExtrusionPath.h"
-#include "toolpaths/SubdivCubes.h"
 
 namespace mixengine {
 
@@ -69,14 +69,14 @@ struct InfillParams {
     double speed_mm_s = 60;
     double flow = 1.0;
     int extruder = 0;
-    bool zigzag_end_pieces = false;  ///< zigzag: also print the area's ends (support_connect_zigzags)
-    Point2 origin_um{0, 0};          ///< every line set passes through it
-    coord_um shift_um = 0;           ///< extra shift of every line set across its lines
-    coord_um overlap_um = 0;         ///< the lines reach this far beyond the area
-    int wall_count = 0;              ///< loops around the area (infill_wall_line_count)
-    int multiplier = 1;              ///< parallel lines per line (infill_multiplier)
-    bool connect_lines = false;      ///< zig_zaggify_infill
-    const SubdivCubes* subdiv_cubes = nullptr;  ///< cubicsubdiv's octree (the caller's)
+    bool zigzag_end_pieces = false;       ///< zigzag: also print the area's ends (support_connect_zigzags)
+    Point2 origin_um{0, 0};               ///< every line set passes through it
+    coord_um shift_um = 0;                ///< extra shift of every line set across its lines
+    coord_um overlap_um = 0;              ///< the lines reach this far beyond the area
+    int wall_count = 0;                   ///< loops around the area (infill_wall_line_count)
+    int multiplier = 1;                   ///< parallel lines per line (infill_multiplier)
+    bool connect_lines = false;           ///< zig_zaggify_infill
+    const Paths* subdiv_lines = nullptr;  ///< cubicsubdiv: the octree's lines at z_um (the caller's)
 };
 
 /// The pattern's lines inside `area` (lines end on its boundary grown by the overlap).

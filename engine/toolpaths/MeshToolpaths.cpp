@@ -107,13 +107,6 @@ SkinFillParams skinFill(const Settings& s, int layer, coord_um z, const FeatureS
     return p;
 }
 
-InfillParams infillParams(const Settings& s, int layer, coord_um z, const FeatureStyle& style,
-                          const Point2& middle, const SubdivCubes* cubes) {
-    InfillParams p = meshInfillParams(s, layer, z, style, middle);
-    p.subdiv_cubes = cubes;
-    return p;
-}
-
 /// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/OutlineOffsets.h).
 Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
@@ -163,8 +156,10 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         for (ExtrusionPath& path :
              generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
             result[i].skin.push_back(std::move(path));
-        result[i].infill =
-            meshInfillPaths(infill[i], infillParams(settings, layer, z, styles.infill, middle, cubes.get()));
+        InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
+        const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
+        fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
+        result[i].infill = meshInfillPaths(infill[i], fill);
         if (settings.has("infill_randomize_start_location") &&
             settings.boolean("infill_randomize_start_location"))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);

@@ -30,7 +30,7 @@ TEST(InfillMultiplier, TwoLinesHalfAWidthEachSideInsteadOfOne) {
     EXPECT_TRUE(loops.empty());
     bool left = false, right = false;
     for (const Path& l : lines) {
-        ASSERT_EQ(l.size(), 2U);
+        ASSERT_EQ(l.size(), 2U);  // each side is cut off by the outline at both ends
         if (l[0].X == l[1].X) {  // the two long sides of the band
             left = left || l[0].X == 4'800;
             right = right || l[0].X == 5'200;
@@ -48,7 +48,8 @@ TEST(InfillMultiplier, ThreeLinesKeepTheMiddleOne) {
     for (const Path& l : lines)
         middle += l[0].X == 5'000 && l[1].X == 5'000 ? 1 : 0;
     EXPECT_EQ(middle, 1);
-    // The band 2w wide with square ends: sides 2 × 8.8 mm, ends 2 × 0.8 mm, plus the middle line.
+    // The band 2w wide with square ends (one closed polyline, inside the outline): sides 2 × 8.8 mm,
+    // ends 2 × 0.8 mm, plus the middle line.
     EXPECT_NEAR(lengthOf(lines, false), 2 * 8'800.0 + 2 * 800.0 + 8'000.0, 2.0);
 }
 
