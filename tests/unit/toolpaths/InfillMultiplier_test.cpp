@@ -31,7 +31,7 @@ TEST(InfillMultiplier, TwoLinesHalfAWidthEachSideInsteadOfOne) {
     bool left = false, right = false;
     for (const Path& l : lines) {
         ASSERT_EQ(l.size(), 2U);  // each side is cut off by the outline at both ends
-        if (l[0].X == l[1].X) {  // the two long sides of the band
+        if (l[0].X == l[1].X) {   // the two long sides of the band
             left = left || l[0].X == 4'800;
             right = right || l[0].X == 5'200;
         }
