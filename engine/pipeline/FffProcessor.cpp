@@ -30,7 +30,10 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     input.extruders = &scene.machine.extruders;
     input.heights = sliced.heights;
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
-        input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m]});
+        const AABB3 box = group.meshes[m].mesh.bounds();
+        const Point2 middle{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
+        input.meshes.push_back(
+            {&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m], middle});
     }
     const GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
     for (const std::string& warning : toolpaths.warnings)

@@ -122,18 +122,48 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
     appendPathWipe(path, start, params, before_end, head, steps);
 }
 
-/// The nearest path not done yet by its nearest end (open lines) or its first vertex (loops, to
-/// keep the search linear in the number of paths); paths.size() when none is left.
+/// The travel length the search compares: straight, or along the comb route when asked for and the
+/// straight travel leaves the comb boundary (100 × straight without a route).
+double orderDistance(const Point2& from, const Point2& to, const TravelParams& params) {
+    const double straight = distanceUm(from, to);
+    if (!params.comb_aware_order || params.comb == nullptr || params.comb->empty() || straight <= 0 ||
+        params.comb->straightInside(from, to))
+        return straight;
+    const std::optional<Path> route = params.comb->route(from, to);
+    if (!route)
+        return straight * 100;
+    double length = 0;
+    Point2 at = from;
+    for (const Point2& p : *route) {
+        length += distanceUm(at, p);
+        at = p;
+    }
+    return length;
+}
+
+/// The distance to a path's nearest end (open lines) or its first vertex (loops, to keep the search
+/// linear in the number of paths); `bound`: the best so far (the comb route is only looked for when
+/// the straight distance beats it).
+double pathDistance(const ExtrusionPath& path, const Point2& from, const TravelParams& params, double bound) {
+    double best = std::numeric_limits<double>::max();
+    const Point2* ends[2] = {&path.points.front(), &path.points.back()};
+    for (std::size_t e = 0; e < (path.closed ? 1U : 2U); ++e) {
+        const double straight = distanceUm(from, *ends[e]);
+        if (straight < std::min(best, bound))
+            best = std::min(best, params.comb_aware_order ? orderDistance(from, *ends[e], params) : straight);
+    }
+    return best;
+}
+
+/// Index of the nearest path not done yet (paths.size() when none is left).
 std::size_t nearestPath(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done,
-                        const Point2& head) {
+                        const Point2& from, const TravelParams& params) {
     std::size_t best = paths.size();
     double best_distance = std::numeric_limits<double>::max();
     for (std::size_t i = 0; i < paths.size(); ++i) {
         if (done[i] || paths[i].points.size() < 2)
             continue;
-        const double d = paths[i].closed ? distanceUm(head, paths[i].points.front())
-                                         : std::min(distanceUm(head, paths[i].points.front()),
-                                                    distanceUm(head, paths[i].points.back()));
+        const double d = pathDistance(paths[i], from, params, best_distance);
         if (d < best_distance)
             best = i, best_distance = d;
     }
@@ -153,13 +183,20 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
     std::vector<bool> done(paths.size(), false);
     const bool keep_order = !paths.empty() && paths.front().keep_order;
     for (std::size_t placed = 0; placed < paths.size(); ++placed) {
-        const std::size_t best = keep_order ? placed : nearestPath(paths, done, head);
+        const Point2 from = placed == 0 && params.order_from ? *params.order_from : head;
+        const std::size_t best = keep_order ? placed : nearestPath(paths, done, from, params);
         if (best == paths.size())
             break;
         if (paths[best].points.size() < 2)
             continue;
         double best_distance = 0;
-        const std::size_t best_start = bestStart(paths[best], head, best_distance);
+        std::size_t best_start = bestStart(paths[best], from, best_distance);
+        if (params.comb_aware_order && !paths[best].closed) {
+            const ExtrusionPath& path = paths[best];
+            const bool front = orderDistance(from, path.points.front(), params) <=
+                               orderDistance(from, path.points.back(), params);
+            best_start = front ? 0 : path.points.size() - 1;
+        }
         done[best] = true;
         if (feature != paths[best].feature) {
             PlanStep marker;

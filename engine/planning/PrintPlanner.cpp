@@ -73,6 +73,15 @@ std::vector<const std::vector<ExtrusionPath>*> groupOrder(const MeshLayerGroups&
     return order;
 }
 
+/// The infill's ordering: from its random start (infill_randomize_start_location), by comb
+/// distances (infill_enable_travel_optimization).
+TravelParams infillTravel(TravelParams travel, const MeshLayerGroups& groups, const Settings& s) {
+    travel.order_from = groups.infill_start;
+    travel.comb_aware_order =
+        s.has("infill_enable_travel_optimization") && s.boolean("infill_enable_travel_optimization");
+    return travel;
+}
+
 void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
                    PlannedLayer& planned) {
     const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(ctx.layer)];
@@ -86,7 +95,9 @@ void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext
         if (!marked)
             addMeshMarker(mesh_index, planned.steps);
         marked = true;
-        appendOrderedPaths(std::move(selected), travel, head, feature, planned.steps);
+        appendOrderedPaths(std::move(selected),
+                           group == &groups.infill ? infillTravel(travel, groups, *mesh.settings) : travel,
+                           head, feature, planned.steps);
     }
 }
 

@@ -117,7 +117,7 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         paths.settings = mesh.settings;
         paths.name = mesh.name;
         paths.sliced = mesh.layers;
-        paths.layers = generateMeshToolpaths(*mesh.layers, *mesh.settings, threads);
+        paths.layers = generateMeshToolpaths(*mesh.layers, *mesh.settings, threads, mesh.middle_um);
         result.meshes.push_back(std::move(paths));
     }
     const std::vector<Paths> model = unitedModel(input, threads);

@@ -16,6 +16,7 @@
 // first layer's support moves to the raft's filler layers (toolpaths/Support.h) and the model's
 // heights are lifted (toolpaths/RaftLayout.h). `threads` is used inside every step; the result
 // does not depend on it.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,9 @@ struct ToolpathMeshInput {
     const Settings* settings = nullptr;                ///< the mesh's resolved settings
     std::string name;                                  ///< for ;MESH:
     const std::vector<SlicedLayer>* layers = nullptr;  ///< index = layer
+    /// The middle of the mesh's bounding box in x and y (the infill pattern's origin); unset: the
+    /// middle of its outlines' bounds.
+    std::optional<Point2> middle_um;
 };
 
 struct ToolpathInput {

@@ -4,8 +4,10 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
+#include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
 #include "toolpaths/Ironing.h"
+#include "toolpaths/MeshInfill.h"
 #include "toolpaths/OutlineOffsets.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/Seam.h"
@@ -106,26 +108,6 @@ SkinFillParams skinFill(const Settings& s, int layer, coord_um z, const FeatureS
     return p;
 }
 
-std::vector<ExtrusionPath> infillPaths(const Paths& area, const Settings& s, int layer, coord_um z,
-                                       const FeatureStyle& style) {
-    InfillParams p;
-    p.line_distance_um = s.lengthMicrons("infill_line_distance");
-    if (p.line_distance_um <= 0 || area.empty())
-        return {};
-    const std::string text = s.has("infill_pattern") ? s.text("infill_pattern") : "lines";
-    p.pattern = infillPatternOf(text, "infill_pattern");
-    const bool alternate = p.pattern == InfillPattern::Lines || p.pattern == InfillPattern::ZigZag;
-    p.angle_degrees = angleFor(s, "infill_angles", layer,
-                               alternate ? std::vector<double>{45, 135} : std::vector<double>{45});
-    p.z_um = z;
-    p.line_width_um = style.width_um;
-    p.speed_mm_s = style.speed_mm_s;
-    p.flow = style.flow;
-    p.extruder = style.extruder;
-    const coord_um overlap = s.has("infill_overlap_mm") ? s.lengthMicrons("infill_overlap_mm") : 0;
-    return generateInfill(overlap != 0 ? offsetMiter(area, overlap) : area, p);
-}
-
 /// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/OutlineOffsets.h).
 Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
@@ -160,7 +142,8 @@ std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const
 }  // namespace
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
-                                                   const Settings& settings, int threads) {
+                                                   const Settings& settings, int threads,
+                                                   const std::optional<Point2>& mesh_middle_um) {
     std::vector<MeshLayerGroups> result(layers.size());
     std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
@@ -182,6 +165,12 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
 
     const std::vector<SkinAreas> areas =
         computeSkinAreas(top_reference, bottom_reference, inner_areas, skinParams(settings, refs), threads);
+    std::vector<Paths> infill_areas(layers.size());
+    for (std::size_t i = 0; i < layers.size(); ++i)
+        infill_areas[i] = areas[i].infill;
+    const std::vector<LayerInfill> infill = arrangeInfill(infill_areas, infillLayerParams(settings), threads);
+    const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
+    const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
 
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
@@ -191,7 +180,13 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         for (ExtrusionPath& path :
              generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
             result[i].skin.push_back(std::move(path));
-        result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
+        InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
+        const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
+        fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
+        result[i].infill = meshInfillPaths(infill[i], fill);
+        if (settings.has("infill_randomize_start_location") &&
+            settings.boolean("infill_randomize_start_location"))
+            result[i].infill_start = randomInfillStart(result[i].infill, layer);
         result[i].ironing = ironing(layers, settings, i);
     });
     return result;

@@ -177,3 +177,60 @@ TEST(PathOrder, ExtrusionVolume) {
 
 }  // namespace
 }  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+/// The first extrusion's start: where the first path printed begins.
+Point2 firstPrinted(const std::vector<PlanStep>& steps) {
+    Point2 at{0, 0};
+    for (const PlanStep& s : steps) {
+        if (s.kind == PlanStep::Kind::Extrude)
+            return at;
+        if (s.kind == PlanStep::Kind::Travel)
+            at = s.to;
+    }
+    return at;
+}
+
+TEST(PathOrder, OrderFromMovesTheFirstSearchNotTheTravel) {
+    std::vector<ExtrusionPath> paths{line({1'000, 0}, {2'000, 0}), line({50'000, 0}, {51'000, 0})};
+    TravelParams t = travelParams();
+    t.order_from = Point2{51'000, 10};  // the far line's end is chosen first
+    Point2 head{0, 0};
+    std::optional<Feature> feature;
+    std::vector<PlanStep> steps;
+    appendOrderedPaths(paths, t, head, feature, steps);
+    EXPECT_EQ(firstPrinted(steps), Point2(51'000, 0));
+    ASSERT_EQ(steps[1].kind, PlanStep::Kind::Travel);  // after the ;TYPE: marker, from the head
+    EXPECT_TRUE(steps[1].retract);
+}
+
+TEST(PathOrder, CombAwareOrderPrefersWhatCanBeReachedInside) {
+    // A U-shaped part with a 2 mm gap: the head at the top of the left arm, a line 3 mm away across
+    // the gap (a 40 mm travel round the bottom inside the part) and one 7.5 mm up the left arm.
+    const Paths u{{{0, 0},
+                   {22'000, 0},
+                   {22'000, 40'000},
+                   {12'000, 40'000},
+                   {12'000, 10'000},
+                   {10'000, 10'000},
+                   {10'000, 40'000},
+                   {0, 40'000}}};
+    const CombBoundary comb(u);
+    std::vector<ExtrusionPath> paths{line({12'500, 30'000}, {20'000, 30'000}),
+                                     line({5'000, 36'000}, {1'000, 36'000})};
+    TravelParams t = travelParams();
+    t.comb = &comb;
+    for (bool aware : {false, true}) {
+        t.comb_aware_order = aware;
+        Point2 head{9'500, 30'000};
+        std::optional<Feature> feature;
+        std::vector<PlanStep> steps;
+        appendOrderedPaths(paths, t, head, feature, steps);
+        EXPECT_EQ(firstPrinted(steps), aware ? Point2(5'000, 36'000) : Point2(12'500, 30'000)) << aware;
+    }
+}
+
+}  // namespace
+}  // namespace mixengine
