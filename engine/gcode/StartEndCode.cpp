@@ -86,6 +86,17 @@ std::string nozzlesOff(const std::vector<Settings>& extruders, int active) {
 
 }  // namespace
 
+StartTemperature startNozzleTemperature(const Settings& global, const Settings& extruder0) {
+    const std::string flavor = flavorText(global);
+    const bool nozzle_control =
+        !extruder0.has("machine_nozzle_temp_enabled") || extruder0.boolean("machine_nozzle_temp_enabled");
+    if (flavor == "Griffin")
+        return {true, initialNozzleTemperature(extruder0), true};
+    if (flavor == "UltiGCode" || !nozzle_control || !global.boolean("material_print_temp_prepend"))
+        return {};
+    return {true, initialNozzleTemperature(extruder0), global.boolean("material_print_temp_wait")};
+}
+
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion) {
     const std::string flavor = flavorText(global);
     const bool reprap = flavor == "RepRap (RepRap)";

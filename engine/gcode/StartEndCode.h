@@ -14,6 +14,15 @@ namespace mixengine {
 /// The start: temperatures, M82, machine_start_gcode, the heated build volume (M141), M83.
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion);
 
+/// The temperature startCode() leaves the first nozzle at, and whether it waited for it (set = false:
+/// the start code sets none).
+struct StartTemperature {
+    bool set = false;
+    double celsius = 0;
+    bool waited = false;
+};
+StartTemperature startNozzleTemperature(const Settings& global, const Settings& extruder0);
+
 /// machine_end_gcode between the extrusion-mode lines CuraEngine writes.
 std::string endCode(const Settings& global, bool relative_extrusion);
 

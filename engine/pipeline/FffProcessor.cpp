@@ -97,6 +97,9 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     const Settings& global = scene.machine.global;
     const ExportParams export_params = exportParams(scene);
     GCodeExport gcode(export_params);
+    const StartTemperature start = startNozzleTemperature(global, scene.machine.extruders.front());
+    if (start.set)
+        gcode.assumeNozzleTemperature(0, start.celsius, start.waited);
     const PlanWriterParams writer = writerParams(scene);
     PlannerState state;
 

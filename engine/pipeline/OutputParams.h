@@ -14,6 +14,9 @@ Kinematics kinematicsOf(const Settings& global);
 
 ExportParams exportParams(const Scene& scene);
 
+/// How nozzle temperature commands are written (flavor, shared heater, active tool, nozzle control).
+TemperatureCommandParams temperatureCommandParams(const Scene& scene);
+
 PlanWriterParams writerParams(const Scene& scene);
 
 /// Fills summary.machine_name, build plate and summary.extruders (Griffin / UltiGCode headers);

@@ -7,6 +7,7 @@
 #include "planning/Cooling.h"
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
+#include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 
 namespace mixengine {
@@ -120,6 +121,44 @@ void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
     }
 }
 
+/// Per extruder: the last layer on which it prints a model, support or adhesion (−1: none).
+std::vector<int> lastPrintLayers(const GroupToolpaths& toolpaths, std::size_t extruder_count) {
+    std::vector<int> last(extruder_count, -1);
+    auto note = [&](const std::vector<ExtrusionPath>& paths, std::size_t layer) {
+        for (const ExtrusionPath& path : paths) {
+            const auto e = static_cast<std::size_t>(std::max(path.extruder, 0));
+            if (e < last.size())
+                last[e] = std::max(last[e], static_cast<int>(layer));
+        }
+    };
+    note(toolpaths.adhesion, 0);
+    for (std::size_t l = 0; l < toolpaths.support.size(); ++l)
+        note(toolpaths.support[l], l);
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        for (std::size_t l = 0; l < mesh.layers.size(); ++l) {
+            const MeshLayerGroups& g = mesh.layers[l];
+            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+                note(*group, l);
+        }
+    }
+    return last;
+}
+
+void planNozzleTemperatures(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings& global,
+                            const std::vector<Settings>& extruders, const std::set<int>& used,
+                            int start_extruder, Point2 start) {
+    const int only = used.size() == 1 ? *used.begin() : start_extruder;
+    planTemperatures(plan, temperatureParams(global, extruders[trainOf(only, extruders)]), used.size() == 1,
+                     start);
+    if (used.size() <= 1)
+        return;
+    SwitchTemperatureParams params;
+    params.trains = trainTemperatureParams(extruders);
+    params.share_heater = global.boolean("machine_extruders_share_heater");
+    params.last_layer = lastPrintLayers(toolpaths, extruders.size());
+    planSwitchTemperatures(plan, params, start_extruder, start);
+}
+
 }  // namespace
 
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active) {
@@ -160,6 +199,7 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
         plan.mesh_names.push_back(mesh.name);
     const CoolingParams cooling = coolingParams(global);
     const Point2 print_start = state.head;
+    const int start_extruder = state.extruder;
     std::set<int> used;
     std::vector<const Settings*> mesh_settings;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
@@ -205,9 +245,7 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
         assignMotion(planned, motion, layer_extruder);
         plan.layers.push_back(std::move(planned));
     }
-    const int only = used.size() == 1 ? *used.begin() : state.extruder;
-    const std::size_t train = std::min<std::size_t>(static_cast<std::size_t>(only), extruders.size() - 1);
-    planTemperatures(plan, temperatureParams(global, extruders[train]), used.size() == 1, print_start);
+    planNozzleTemperatures(plan, toolpaths, global, extruders, used, start_extruder, print_start);
     return plan;
 }
 

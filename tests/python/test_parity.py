@@ -16,24 +16,25 @@ import pytest
 import parity
 
 _DEFS = parity.definitions()
-KEYS = sorted(k for k, node in _DEFS.items()
-              if node.get("type") not in parity.SKIP_TYPES and k not in parity.SKIP_KEYS)
+KEYS = sorted(parity.SINGLE.keys())
+DUAL_KEYS = sorted(parity.DUAL.keys())
 LISTED = parity.load_not_honoured()
 
 
-def _param(key):
+def _param(key, scene):
+    """KEY as a strict xfail when the list says it is not honoured (whatever the value) in SCENE."""
     entry = LISTED.get(key)
-    if entry is not None and entry[0] is None:  # every changed value is listed
+    applies = entry is not None and (scene is parity.DUAL or not entry[2])
+    if applies and entry[0] is None:  # every changed value is listed
         return pytest.param(key, marks=pytest.mark.xfail(strict=True, reason=f"not honoured yet: {entry[1]}"))
     return key
 
 
-@pytest.fixture(scope="session")
-def verdicts(engine, request, report):
-    """{key: [(value, verdict)]} for the parity tests selected in this run, judged two at a time."""
+def _verdicts(scene, test_name, request, report):
+    """{key: [(value, verdict)]} for the TEST_NAME tests selected in this run, judged two at a time."""
     selected = {item.callspec.params["key"] for item in request.session.items
-                if item.originalname == "test_setting_acts_as_in_curaengine"}
-    results = parity.run_all(keys=selected)
+                if item.originalname == test_name}
+    results = parity.run_all(keys=selected, scene=scene)
     by_key = {}
     for outcome in results.values():
         by_key.setdefault(outcome["key"], []).append((outcome["value"], outcome["verdict"]))
@@ -41,19 +42,43 @@ def verdicts(engine, request, report):
     for outcome in results.values():
         kind = outcome["verdict"].split(":")[0]
         counts[kind] = counts.get(kind, 0) + 1
-    report(f"parity: {len(results)} changed values of {len(selected)} settings: " +
+    report(f"parity ({scene.name}): {len(results)} changed values of {len(selected)} settings: " +
            ", ".join(f"{n} {kind}" for kind, n in sorted(counts.items())))
     return by_key
 
 
-@pytest.mark.parametrize("key", [_param(k) for k in KEYS])
+@pytest.fixture(scope="session")
+def verdicts(engine, request, report):
+    """The verdicts of the single-extruder scene (the Ender-3)."""
+    return _verdicts(parity.SINGLE, "test_setting_acts_as_in_curaengine", request, report)
+
+
+@pytest.fixture(scope="session")
+def dual_verdicts(engine, request, report):
+    """The verdicts of the two-extruder scene (the Ultimaker S5, one part per extruder)."""
+    return _verdicts(parity.DUAL, "test_setting_acts_as_in_curaengine_with_two_extruders", request, report)
+
+
+@pytest.mark.parametrize("key", [_param(k, parity.SINGLE) for k in KEYS])
 def test_setting_acts_as_in_curaengine(verdicts, key):
+    _check(verdicts, key, parity.SINGLE)
+
+
+@pytest.mark.parametrize("key", [_param(k, parity.DUAL) for k in DUAL_KEYS])
+def test_setting_acts_as_in_curaengine_with_two_extruders(dual_verdicts, key):
+    """The settings that matter with two extruders (parity.DualScene), on the Ultimaker S5 with one part per
+    extruder: the same rule and the same list as the single-extruder test."""
+    _check(dual_verdicts, key, parity.DUAL)
+
+
+def _check(verdicts, key, scene):
     outcomes = verdicts.get(key, [])
     judged = [(value, verdict) for value, verdict in outcomes
               if not verdict.startswith(("cura-unchanged", "cura-failed"))]
     if not judged:
         pytest.skip("no context enables it, or CuraEngine's G-code does not change with it")
-    listed_values = LISTED[key][0] if key in LISTED else ()
+    applies = key in LISTED and (scene is parity.DUAL or not LISTED[key][2])
+    listed_values = LISTED[key][0] if applies else ()
     unexpected = [f"{key}={value}: {verdict}" for value, verdict in judged
                   if verdict != "honoured" and (listed_values is None or value not in listed_values)]
     assert not unexpected, "; ".join(unexpected)
