@@ -23,7 +23,7 @@ GCodeExport::GCodeExport(const ExportParams& params)
 GCodeExport::ExtruderState& GCodeExport::state() {
     const auto index = static_cast<std::size_t>(extruder_);
     if (states_.size() <= index)
-        states_.resize(index + 1, ExtruderState{0, retraction_.prime_speed_mm_s, 0, 0});
+        states_.resize(index + 1, ExtruderState{0, retraction_.prime_speed_mm_s, 0, 0, false});
     return states_[index];
 }
 
@@ -50,6 +50,20 @@ void GCodeExport::selectExtruder(const ToolChange& change) {
     retraction_hop_um_ = change.retraction_hop_um;
     state();  // a first use starts with nothing retracted, primed at its own prime speed
     resetExtrusionAxis();
+}
+
+bool GCodeExport::markPrimed() {
+    const bool was = state().primed;
+    state().primed = true;
+    return !was;
+}
+
+void GCodeExport::assumePrimed(int extruder, double retracted_mm) {
+    const int active = extruder_;
+    extruder_ = extruder;
+    state().primed = true;
+    state().retracted_mm = retracted_mm;
+    extruder_ = active;
 }
 
 std::vector<double> GCodeExport::filamentPerExtruder() const {

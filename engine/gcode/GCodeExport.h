@@ -75,6 +75,13 @@ class GCodeExport {
     void retractTo(const RetractionConfig& config);
     /// Lifts the nozzle `hop_um` above the layer (0: back down); nothing when already there.
     void hopTo(coord_um hop_um);
+    /// The active extruder's retraction for travel.
+    const RetractionConfig& retraction() const { return retraction_; }
+    /// Notes that the active extruder is primed; false when it was already.
+    bool markPrimed();
+    /// Extruder `extruder` starts with `retracted_mm` of filament pulled back and primed
+    /// (machine_extruders_share_nozzle: the start code leaves every filament so).
+    void assumePrimed(int extruder, double retracted_mm);
     /// Primes what is retracted, plus the extra prime owed (after lowering a z-hop).
     void unretract();
     /// Material primed in addition at the next prime of the active extruder
@@ -114,6 +121,7 @@ class GCodeExport {
     /// Filament per extruder (index = extruder_nr), length or mm³ when volumetric.
     std::vector<double> filamentPerExtruder() const;
     int extruder() const { return extruder_; }
+    Point2 position() const { return position_; }  ///< of the active nozzle, in plan coordinates
     coord_um z() const { return z_; }
     bool retracted() const { return states_[static_cast<std::size_t>(extruder_)].retracted_mm > 0; }
     /// Filament of the active extruder pulled back now (mm).
@@ -134,6 +142,7 @@ class GCodeExport {
         double prime_speed_mm_s = 25;  ///< of the next prime: that of the last retraction
         double extra_prime_mm3 = 0;
         double extruded = 0;  ///< forward filament in the axis unit (extra primes included)
+        bool primed = false;
     };
     ExtruderState& state();
     double filamentOnAxis(double filament_mm) const;  ///< filament in the axis unit

@@ -72,6 +72,8 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
+            if (!step.retract && step.to == gcode.position())
+                break;  // as CuraEngine: no move, so no acceleration or jerk change either
             gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, true);
             if (step.retract)
                 gcode.retract();
@@ -101,6 +103,11 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             break;
         case PlanStep::Kind::SetNozzleTemperature:
             gcode.setNozzleTemperature(step.extruder, step.temperature_c, step.wait);
+            break;
+        case PlanStep::Kind::Prime:
+            if (static_cast<std::size_t>(gcode.extruder()) < params.extruders.size())
+                writePrimeTrain(params.extruders[static_cast<std::size_t>(gcode.extruder())].prime,
+                                params.griffin, gcode);
             break;
         case PlanStep::Kind::SetBedTemperature:
             gcode.line("M140 S" + formatDecimal(step.temperature_c, 1));

@@ -7,6 +7,7 @@
 
 #include "gcode/GCodeExport.h"
 #include "gcode/Header.h"
+#include "gcode/StartEndCode.h"
 #include "planning/LayerPlan.h"
 
 namespace mixengine {
@@ -26,16 +27,18 @@ struct ExtruderOutput {
     std::string start_code;          ///< machine_extruder_start_code, written after T<n>
     std::string end_code;            ///< machine_extruder_end_code, written before switching away
     bool retraction_enabled = true;  ///< retraction_enable
-    RetractionConfig
-        switch_retraction;       ///< switch_extruder_retraction_amount, _speed, switch_extruder_prime_speed
-    coord_um switch_hop_um = 0;  ///< retraction_hop_after_extruder_switch(_height) (0 = none)
+    /// switch_extruder_retraction_amount, switch_extruder_retraction_speed, switch_extruder_prime_speed
+    RetractionConfig switch_retraction;
+    coord_um switch_hop_um = 0;         ///< retraction_hop_after_extruder_switch(_height) (0 = none)
     double switch_extra_prime_mm3 = 0;  ///< switch_extruder_extra_prime_amount
+    PrimeTrain prime;                   ///< its first use (Prime steps)
 };
 
 struct PlanWriterParams {
     double layer_change_speed_mm_s = 10;    ///< Z moves
     bool reset_e_each_layer = true;         ///< G92 E0 at each layer start in absolute mode
     std::vector<ExtruderOutput> extruders;  ///< index = extruder_nr (needed for SetExtruder steps)
+    bool griffin = false;                   ///< machine_gcode_flavor Griffin: primes with G280
 };
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode);

@@ -139,6 +139,31 @@ std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::v
            ";End of Gcode\n";
 }
 
+namespace {
+
+/// The prime itself (see writePrimeTrain).
+void primeOnce(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+    if (prime.blob) {
+        const Point2 here = gcode.position();
+        const Point2 to = prime.absolute ? prime.position_um
+                                         : Point2{here.X + prime.position_um.X, here.Y + prime.position_um.Y};
+        gcode.travel(to, prime.travel_speed_mm_s);
+    }
+    if (griffin) {
+        gcode.line(prime.blob ? "G280" : "G280 S1");
+        if (!prime.blob)
+            gcode.line("G0 Z" + formatCoordMm(micronsToMm(gcode.z())));
+    }
+}
+
+}  // namespace
+
+void writePrimeTrain(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+    if (gcode.markPrimed())
+        primeOnce(prime, griffin, gcode);
+    gcode.retractTo(gcode.retraction());
+}
+
 std::string endCode(const Settings& global, bool relative_extrusion) {
     std::string out;
     if (relative_extrusion)

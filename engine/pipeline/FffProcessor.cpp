@@ -62,6 +62,22 @@ std::string meshNames(const Scene& scene) {
     return text.empty() ? "the scene" : text;
 }
 
+/// As CuraEngine's start: with machine_extruders_share_nozzle every filament is primed and pulled back
+/// machine_extruders_shared_nozzle_initial_retraction; on Griffin the first extruder is primed
+/// (gcode/StartEndCode.h writePrimeTrain). Returns the text for the end of the start code.
+std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& writer, GCodeExport& gcode) {
+    if (scene.machine.global.boolean("machine_extruders_share_nozzle")) {
+        for (std::size_t e = 0; e < scene.machine.extruders.size(); ++e)
+            gcode.assumePrimed(
+                static_cast<int>(e),
+                scene.machine.extruders[e].millimetres("machine_extruders_shared_nozzle_initial_retraction"));
+    }
+    if (!writer.griffin || writer.extruders.empty())
+        return "";
+    writePrimeTrain(writer.extruders.front().prime, true, gcode);
+    return gcode.takeText();
+}
+
 }  // namespace
 
 std::string GCodeOutput::joined() const {
@@ -101,6 +117,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     if (start.set)
         gcode.assumeNozzleTemperature(0, start.celsius, start.waited);
     const PlanWriterParams writer = writerParams(scene);
+    const std::string prime = primeFirstExtruder(scene, writer, gcode);
     PlannerState state;
 
     GCodeOutput output;
@@ -150,6 +167,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     output.start = startCode(global, scene.machine.extruders.front(), relative);
     if (!relative)
         output.start += "G92 E0\n";
+    output.start += prime;
     output.start += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
     log.progress(ProgressStage::Done, 1.0);

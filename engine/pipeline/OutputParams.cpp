@@ -63,6 +63,15 @@ RetractionConfig travelRetraction(const Settings& e) {
             e.real("retraction_extra_prime_amount")};
 }
 
+PrimeTrain primeTrain(const Settings& e) {
+    PrimeTrain prime;
+    prime.blob = e.boolean("prime_blob_enable");
+    prime.position_um = {e.lengthMicrons("extruder_prime_pos_x"), e.lengthMicrons("extruder_prime_pos_y")};
+    prime.absolute = e.boolean("extruder_prime_pos_abs");
+    prime.travel_speed_mm_s = e.velocityMmPerS("speed_travel");
+    return prime;
+}
+
 /// What switching away from / to train `e` does besides the tool change itself.
 void switchParams(const Settings& e, ExtruderOutput& out) {
     out.retraction_enabled = e.boolean("retraction_enable");
@@ -72,12 +81,14 @@ void switchParams(const Settings& e, ExtruderOutput& out) {
     if (e.boolean("retraction_hop_after_extruder_switch"))
         out.switch_hop_um = e.lengthMicrons("retraction_hop_after_extruder_switch_height");
     out.switch_extra_prime_mm3 = e.real("switch_extruder_extra_prime_amount");
+    out.prime = primeTrain(e);
 }
 
 PlanWriterParams writerParams(const Scene& scene) {
     const Settings& global = scene.machine.global;
     PlanWriterParams writer;
     writer.layer_change_speed_mm_s = global.velocityMmPerS("speed_z_hop");
+    writer.griffin = global.text("machine_gcode_flavor") == "Griffin";
     const bool offset_coords = !global.has("machine_use_extruder_offset_to_offset_coords") ||
                                global.boolean("machine_use_extruder_offset_to_offset_coords");
     for (std::size_t i = 0; i < scene.machine.extruders.size(); ++i) {

@@ -19,6 +19,9 @@ TemperatureCommandParams temperatureCommandParams(const Scene& scene);
 
 PlanWriterParams writerParams(const Scene& scene);
 
+/// An extruder's prime train (prime_blob_enable, extruder_prime_pos_*, speed_travel).
+PrimeTrain primeTrain(const Settings& extruder);
+
 /// Fills summary.machine_name, build plate and summary.extruders (Griffin / UltiGCode headers);
 /// summary.filament_per_extruder must already hold one value per extruder train.
 void describeExtruders(const Scene& scene, bool volumetric, PrintSummary& summary);

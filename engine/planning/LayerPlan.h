@@ -20,6 +20,7 @@ struct PlanStep {
         SetExtruder,           ///< tool change to `extruder`
         SetNozzleTemperature,  ///< `temperature_c` for nozzle `extruder` (−1: the active one); `wait`: M109
         SetBedTemperature,     ///< M140 `temperature_c`, without waiting
+        Prime,  ///< first use of the active extruder: its prime (G280 on Griffin), then a retraction
     };
     Kind kind = Kind::Travel;
     Point2 to{};

@@ -159,6 +159,21 @@ void planNozzleTemperatures(PrintPlan& plan, const GroupToolpaths& toolpaths, co
     planSwitchTemperatures(plan, params, start_extruder, start);
 }
 
+/// A SetExtruder step, and a Prime step when the extruder was not used before in the print.
+void switchTo(int extruder, PlannerState& state, std::vector<PlanStep>& steps) {
+    PlanStep change;
+    change.kind = PlanStep::Kind::SetExtruder;
+    change.extruder = extruder;
+    steps.push_back(change);
+    state.extruder = extruder;
+    if (state.primed.insert(extruder).second) {
+        PlanStep prime;
+        prime.kind = PlanStep::Kind::Prime;
+        prime.extruder = extruder;
+        steps.push_back(prime);
+    }
+}
+
 }  // namespace
 
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active) {
@@ -218,11 +233,7 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
         for (int extruder : extruderOrder(toolpaths, i, state.extruder)) {
             used.insert(extruder);
             if (extruder != state.extruder) {
-                PlanStep change;
-                change.kind = PlanStep::Kind::SetExtruder;
-                change.extruder = extruder;
-                planned.steps.push_back(change);
-                state.extruder = extruder;
+                switchTo(extruder, state, planned.steps);
             }
             const std::size_t train =
                 std::min<std::size_t>(static_cast<std::size_t>(extruder), extruders.size() - 1);

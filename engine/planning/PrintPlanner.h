@@ -3,8 +3,10 @@
 // extruders print one after the other, the one already active first (fewest tool changes); each
 // extruder prints its prime tower and ooze shield, the skirt/brim (layer 0), its support, then
 // every mesh in order — inner walls, outer walls, skin, infill — with travel, retraction and the fan.
+// The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).
 // Travel combs inside the layer's comb area: the sliced outlines of every mesh of the group on that
 // layer (MeshToolpaths::sliced), even-odd (planning/CombBoundary.h).
+#include <set>
 #include <vector>
 
 #include "planning/LayerPlan.h"
@@ -15,7 +17,8 @@ namespace mixengine {
 
 struct PlannerState {
     Point2 head{0, 0};
-    int extruder = 0;  ///< the active extruder (carried from group to group)
+    int extruder = 0;         ///< the active extruder (carried from group to group)
+    std::set<int> primed{0};  ///< extruders primed already (the start code primes the first)
 };
 
 /// One PlannedLayer per toolpaths.heights entry. retraction_combing "off" (or a layer without
