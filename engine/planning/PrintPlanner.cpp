@@ -159,6 +159,56 @@ void planNozzleTemperatures(PrintPlan& plan, const GroupToolpaths& toolpaths, co
     planSwitchTemperatures(plan, params, start_extruder, start);
 }
 
+/// The outermost extruder of the prime tower prints its rings on every layer up to the last one on
+/// which two or more extruders print, any extruder when it is switched to on the layer (as CuraEngine).
+bool printsTower(const GroupToolpaths& t, const LayerContext& ctx, bool switched) {
+    const auto i = static_cast<std::size_t>(ctx.layer);
+    if (i >= t.prime_tower.size() || t.prime_tower[i].empty())
+        return false;
+    return switched ||
+           (ctx.extruder == t.prime_tower_outermost && ctx.layer <= t.prime_tower_last_forced_layer);
+}
+
+/// prime_tower_wipe_enabled of the extruder switched away from: a travel to the tower's middle,
+/// where the old nozzle would be (CuraEngine's post-wipe point).
+void wipeOnTower(const GroupToolpaths& t, const std::vector<Settings>& extruders, int previous,
+                 const LayerContext& ctx, Point2& head, PlannedLayer& planned) {
+    const Settings& old = extruders[trainOf(previous, extruders)];
+    if (ctx.layer == 0 || previous == ctx.extruder || !old.boolean("prime_tower_wipe_enabled"))
+        return;
+    const Settings& now = *ctx.extruder_settings;
+    PlanStep travel;
+    travel.kind = PlanStep::Kind::Travel;
+    travel.to = {t.prime_tower_middle.X - old.lengthMicrons("machine_nozzle_offset_x") +
+                     now.lengthMicrons("machine_nozzle_offset_x"),
+                 t.prime_tower_middle.Y - old.lengthMicrons("machine_nozzle_offset_y") +
+                     now.lengthMicrons("machine_nozzle_offset_y")};
+    travel.speed_mm_s = travelParams(now, ctx.layer, ctx.thickness, nullptr).travel_speed_mm_s;
+    planned.steps.push_back(travel);
+    head = travel.to;
+}
+
+/// What one extruder prints on a layer, in CuraEngine's order: on layer 0 the skirt or brim, the
+/// ooze shield, its prime tower rings (and the wipe), its support, then every mesh.
+void planExtruderOnLayer(const GroupToolpaths& t, const std::vector<Settings>& extruders,
+                         const LayerContext& ctx, int previous, Point2& head, PlannedLayer& planned) {
+    const auto i = static_cast<std::size_t>(ctx.layer);
+    if (i == 0)
+        planNonMesh(t.adhesion, ctx, head, planned);
+    if (i < t.ooze_shield.size())
+        planNonMesh(t.ooze_shield[i], ctx, head, planned);
+    const bool switched = ctx.extruder != previous;
+    if (printsTower(t, ctx, switched)) {
+        planNonMesh(t.prime_tower[i], ctx, head, planned);
+        if (switched)
+            wipeOnTower(t, extruders, previous, ctx, head, planned);
+    }
+    if (i < t.support.size())
+        planNonMesh(t.support[i], ctx, head, planned);
+    for (std::size_t m = 0; m < t.meshes.size(); ++m)
+        planMeshLayer(t.meshes[m], static_cast<int>(m), ctx, head, planned);
+}
+
 /// A SetExtruder step, and a Prime step when the extruder was not used before in the print.
 void switchTo(int extruder, PlannerState& state, std::vector<PlanStep>& steps) {
     PlanStep change;
@@ -182,6 +232,9 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
         collectExtruders(toolpaths.adhesion, used);
     if (layer < toolpaths.support.size())
         collectExtruders(toolpaths.support[layer], used);
+    if (static_cast<int>(layer) <= toolpaths.prime_tower_last_forced_layer &&
+        toolpaths.prime_tower_outermost >= 0)
+        used.insert(toolpaths.prime_tower_outermost);
     for (const MeshToolpaths& mesh : toolpaths.meshes) {
         const MeshLayerGroups& g = mesh.layers[layer];
         for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
@@ -235,20 +288,9 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
             if (extruder != state.extruder) {
                 switchTo(extruder, state, planned.steps);
             }
-            const std::size_t train =
-                std::min<std::size_t>(static_cast<std::size_t>(extruder), extruders.size() - 1);
             const LayerContext ctx{planned.index, heights[i].print_z - heights[i].bottom_z, extruder,
-                                   &extruders[train], &comb};
-            if (i < toolpaths.prime_tower.size())
-                planNonMesh(toolpaths.prime_tower[i], ctx, state.head, planned);
-            if (i < toolpaths.ooze_shield.size())
-                planNonMesh(toolpaths.ooze_shield[i], ctx, state.head, planned);
-            if (i == 0)
-                planNonMesh(toolpaths.adhesion, ctx, state.head, planned);
-            if (i < toolpaths.support.size())
-                planNonMesh(toolpaths.support[i], ctx, state.head, planned);
-            for (std::size_t m = 0; m < toolpaths.meshes.size(); ++m)
-                planMeshLayer(toolpaths.meshes[m], static_cast<int>(m), ctx, state.head, planned);
+                                   &extruders[trainOf(extruder, extruders)], &comb};
+            planExtruderOnLayer(toolpaths, extruders, ctx, layer_extruder, state.head, planned);
         }
         if (i > 0)
             retractAtLayerStart(planned, extruders[trainOf(layer_extruder, extruders)]);

@@ -1,8 +1,10 @@
 #pragma once
 // Planning: the toolpaths of a mesh group become ordered steps per layer. On each layer the
 // extruders print one after the other, the one already active first (fewest tool changes); each
-// extruder prints its prime tower and ooze shield, the skirt/brim (layer 0), its support, then
-// every mesh in order — inner walls, outer walls, skin, infill — with travel, retraction and the fan.
+// extruder prints the skirt/brim (layer 0), the ooze shield, its prime tower rings — when it was
+// switched to on the layer, or as the tower's outermost extruder, then (prime_tower_wipe_enabled of
+// the extruder left) a travel to the tower's middle — its support, then every mesh in order —
+// inner walls, outer walls, skin, infill — with travel, retraction and the fan.
 // The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).
 // Travel combs inside the layer's comb area: the sliced outlines of every mesh of the group on that
 // layer (MeshToolpaths::sliced), even-odd (planning/CombBoundary.h).
