@@ -15,6 +15,7 @@ GCodeExport::GCodeExport(const ExportParams& params)
       retraction_{params.retraction_amount_mm, params.retraction_speed_mm_s, params.prime_speed_mm_s,
                   params.retraction_extra_prime_mm3},
       retraction_hop_um_(params.retraction_hop_um),
+      fan_number_(params.fan_number),
       motion_(params.motion_flavor),
       temperatures_(params.temperatures) {
     state().prime_speed_mm_s = params.prime_speed_mm_s;
@@ -48,6 +49,10 @@ void GCodeExport::selectExtruder(const ToolChange& change) {
     offset_ = change.nozzle_offset_um;
     retraction_ = change.retraction;
     retraction_hop_um_ = change.retraction_hop_um;
+    if (change.fan_number != fan_number_) {  // another fan: its speed is written again
+        fan_number_ = change.fan_number;
+        fan_ratio_ = -1;
+    }
     state();  // a first use starts with nothing retracted, primed at its own prime speed
     resetExtrusionAxis();
 }
@@ -123,11 +128,15 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
     z_ = z;
 }
 
-void GCodeExport::hopTo(coord_um hop_um) {
-    if (hop_um == hop_um_)
+void GCodeExport::hopTo(coord_um hop_um, bool rewrite) {
+    if (hop_um == hop_um_ && !(rewrite && hop_um > 0))
         return;
     const coord_um layer = layer_z_;
     hop_um_ = hop_um;
+    if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
+        line("G0" + feedrateWord(params_.z_hop_speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z_)));
+        return;
+    }
     moveZ(layer + hop_um, params_.z_hop_speed_mm_s);
 }
 
@@ -220,10 +229,11 @@ void GCodeExport::setFan(double ratio) {
     if (ratio == fan_ratio_)
         return;
     fan_ratio_ = ratio;
+    const std::string fan = fan_number_ != 0 ? " P" + std::to_string(fan_number_) : "";
     if (ratio <= 0) {
-        line("M107");
+        line("M107" + fan);
     } else {
-        line("M106 S" + formatDecimal(std::min(ratio, 1.0) * 255.0, 1));
+        line("M106 S" + formatDecimal(std::min(ratio, 1.0) * 255.0, 1) + fan);
     }
 }
 

@@ -42,6 +42,7 @@ struct ExportParams {
     MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
     MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
     TemperatureCommandParams temperatures;  ///< nozzle temperature commands (gcode/TemperatureCommands.h)
+    int fan_number = 0;  ///< the first extruder's machine_extruder_cooling_fan_number (P<n> when not 0)
 };
 
 /// A tool change: the new extruder's filament diameter, nozzle offset (subtracted from X/Y) and its
@@ -52,6 +53,7 @@ struct ToolChange {
     Point2 nozzle_offset_um{0, 0};
     RetractionConfig retraction;
     coord_um retraction_hop_um = 0;
+    int fan_number = 0;  ///< machine_extruder_cooling_fan_number: M106/M107 P<n> when not 0
 };
 
 class GCodeExport {
@@ -73,8 +75,9 @@ class GCodeExport {
     /// speed of the retraction before when less; nothing when equal. Every retraction made adds its
     /// extra prime for the next prime.
     void retractTo(const RetractionConfig& config);
-    /// Lifts the nozzle `hop_um` above the layer (0: back down); nothing when already there.
-    void hopTo(coord_um hop_um);
+    /// Lifts the nozzle `hop_um` above the layer (0: back down); nothing when already there, unless
+    /// `rewrite` (CuraEngine writes the lift of a switch even when the nozzle is up already).
+    void hopTo(coord_um hop_um, bool rewrite = false);
     /// The active extruder's retraction for travel.
     const RetractionConfig& retraction() const { return retraction_; }
     /// Notes that the active extruder is primed; false when it was already.
@@ -88,7 +91,7 @@ class GCodeExport {
     /// (switch_extruder_extra_prime_amount).
     void addExtraPrime(double volume_mm3) { state().extra_prime_mm3 += volume_mm3; }
     void resetExtrusionAxis();  ///< G92 E0 in absolute mode
-    void setFan(double ratio);  ///< M106 S0..255 / M107
+    void setFan(double ratio);  ///< M106 S0..255 / M107 (P<n> for the active extruder's fan n ≠ 0)
     /// Acceleration (mm/s²) and XY jerk (mm/s) of the following moves, 0 = unchanged: writes
     /// M204/M205 (gcode/MotionCommands.h) when they change and uses them for the time estimate.
     void setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel);
@@ -165,6 +168,7 @@ class GCodeExport {
     coord_um layer_z_ = 0;
     coord_um hop_um_ = 0;  ///< the nozzle is this far above layer_z_
     double fan_ratio_ = -1;
+    int fan_number_ = 0;
     MotionCommands motion_;
     TemperatureCommands temperatures_;
 };

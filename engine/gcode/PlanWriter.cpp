@@ -28,7 +28,7 @@ void changeExtruder(int extruder, const PlanWriterParams& params, GCodeExport& g
         if (old.retraction_enabled)
             gcode.retractTo(old.switch_retraction);
         if (old.switch_hop_um > 0)
-            gcode.hopTo(old.switch_hop_um);
+            gcode.hopTo(old.switch_hop_um, true);
         gcode.resetExtrusionAxis();
         writeCode(old.end_code, gcode);
     }

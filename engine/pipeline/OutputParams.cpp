@@ -40,6 +40,7 @@ ExportParams exportParams(const Scene& scene) {
     p.z_hop_speed_mm_s = e0.velocityMmPerS("speed_z_hop");
     p.firmware_retract = e0.has("machine_firmware_retract") && e0.boolean("machine_firmware_retract");
     p.temperatures = temperatureCommandParams(scene);
+    p.fan_number = static_cast<int>(e0.integer("machine_extruder_cooling_fan_number"));
     p.kinematics = kinematicsOf(global);
     p.mixing = parseMixingOutput(global);
     p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
@@ -103,6 +104,7 @@ PlanWriterParams writerParams(const Scene& scene) {
         out.change.retraction = travelRetraction(e);
         out.change.retraction_hop_um =
             e.boolean("retraction_hop_enabled") ? e.lengthMicrons("retraction_hop") : 0;
+        out.change.fan_number = static_cast<int>(e.integer("machine_extruder_cooling_fan_number"));
         out.start_code = e.text("machine_extruder_start_code");
         out.end_code = e.text("machine_extruder_end_code");
         switchParams(e, out);

@@ -209,8 +209,30 @@ void planExtruderOnLayer(const GroupToolpaths& t, const std::vector<Settings>& e
         planMeshLayer(t.meshes[m], static_cast<int>(m), ctx, head, planned);
 }
 
-/// A SetExtruder step, and a Prime step when the extruder was not used before in the print.
-void switchTo(int extruder, PlannerState& state, std::vector<PlanStep>& steps) {
+/// machine_extruder_end_pos_* / _start_pos_* of train `s` (_abs: a head position, so plus the
+/// train's nozzle offset; else relative to `from`).
+Point2 extruderPosition(const Settings& s, const char* which, Point2 from) {
+    const std::string key = std::string("machine_extruder_") + which + "_pos_";
+    const Point2 pos{s.lengthMicrons(key + "x"), s.lengthMicrons(key + "y")};
+    if (!s.boolean(key + "abs"))
+        return {from.X + pos.X, from.Y + pos.Y};
+    return {pos.X + s.lengthMicrons("machine_nozzle_offset_x"),
+            pos.Y + s.lengthMicrons("machine_nozzle_offset_y")};
+}
+
+/// A SetExtruder step, and a Prime step when the extruder was not used before in the print. As
+/// CuraEngine, the old extruder first travels to its end position and the new one starts planning
+/// from its start position.
+void switchTo(int extruder, const std::vector<Settings>& extruders, PlannerState& state,
+              std::vector<PlanStep>& steps) {
+    const Settings& old = extruders[trainOf(state.extruder, extruders)];
+    PlanStep end;
+    end.kind = PlanStep::Kind::Travel;
+    end.to = extruderPosition(old, "end", state.head);
+    end.speed_mm_s = old.velocityMmPerS("speed_travel");
+    end.retract = old.boolean("retraction_enable") && end.to != state.head;
+    steps.push_back(end);
+    state.head = extruderPosition(extruders[trainOf(extruder, extruders)], "start", end.to);
     PlanStep change;
     change.kind = PlanStep::Kind::SetExtruder;
     change.extruder = extruder;
@@ -286,7 +308,7 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
         for (int extruder : extruderOrder(toolpaths, i, state.extruder)) {
             used.insert(extruder);
             if (extruder != state.extruder) {
-                switchTo(extruder, state, planned.steps);
+                switchTo(extruder, extruders, state, planned.steps);
             }
             const LayerContext ctx{planned.index, heights[i].print_z - heights[i].bottom_z, extruder,
                                    &extruders[trainOf(extruder, extruders)], &comb};

@@ -149,8 +149,7 @@ class DualScene:
         {"prime_blob_enable": "True"},
         {"machine_extruders_share_nozzle": "True"},
     ]
-    # A setting that matters only in a structure other than the plain print's: tried there first.
-    key_contexts = {"skirt_brim_minimal_length": {"adhesion_type": "skirt"}}
+    key_contexts = {}
     # Values that mean something on this bed and print (the generic flips would put the tower off the bed
     # or raise the final temperature above the printing one).
     flip_values = {
@@ -158,6 +157,9 @@ class DualScene:
         "layer_start_y": ["0"], "material_print_temperature": ["220"], "material_print_temperature_layer_0": ["215"],
         "material_initial_print_temperature": ["180"], "material_final_print_temperature": ["170"],
         "machine_extruder_start_pos_x": ["0"], "machine_extruder_end_pos_x": ["0"],
+        # values that cross what this print needs: every idle time below the window (the nozzles stay
+        # hot), and a minimal length above the brim's (the second extruder's lines grow)
+        "machine_min_cool_heat_time_window": ["1000"], "skirt_brim_minimal_length": ["2000"],
     }
 
     def _split(self, settings):
