@@ -119,6 +119,10 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     const PlanWriterParams writer = writerParams(scene);
     const std::string prime = primeFirstExtruder(scene, writer, gcode);
     PlannerState state;
+    // As CuraEngine, the first layer is planned from layer_start_x/_y of the first extruder (later
+    // layers go on from where the one before ended).
+    const Settings& first = scene.machine.extruders.front();
+    state.head = {first.lengthMicrons("layer_start_x"), first.lengthMicrons("layer_start_y")};
 
     GCodeOutput output;
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};

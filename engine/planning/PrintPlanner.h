@@ -18,7 +18,7 @@
 namespace mixengine {
 
 struct PlannerState {
-    Point2 head{0, 0};
+    Point2 head{0, 0};        ///< where planning goes on from (at the start: layer_start_x/_y)
     int extruder = 0;         ///< the active extruder (carried from group to group)
     std::set<int> primed{0};  ///< extruders primed already (the start code primes the first)
 };
