@@ -73,7 +73,8 @@ class SettingsNotice:
     def _found(self, stack):
         definition = stack.definition
         extruders = [e for e in stack.extruderList if e.isEnabled]
-        keys = [k for k in self._entries if definition.findDefinitions(key=k)]
+        keys = [k for k in self._entries if definition.findDefinitions(key=k)
+                and (len(extruders) > 1 or not NotHonoured.multiExtruderOnly(self._entries[k]))]
         for key in keys:
             yield key, stack.getProperty(key, "value"), self._default(definition, stack, key), "global"
             for extruder in extruders:

@@ -22,6 +22,12 @@ Verdicts (verdict()): compared on G-code signatures (signature()), not on bytes:
                       the temperature commands (M104/M109/M140/M190/M141/M191 with their values) it adds.
   not honoured: ...   otherwise, with the first reason.
 
+Scenes (SCENES): "ender3", the Ender-3 with MODEL, every setting; "s5_dual", the Ultimaker S5 with one part per
+extruder and only the settings that matter with two extruders (DualScene). `python parity.py --scene s5_dual
+[--explain key=value ...]` runs or explains that scene. In the two-extruder scene only temperature commands with a
+value some setting gives are compared (verdict's set_temperatures): the standby temperatures CuraEngine computes
+follow its own time estimates.
+
 The list of settings MixEngine does not honour yet is settings/mixengine/not_honoured.json: the engine warns
 about them, the plugin shows them, and test_parity.py runs every entry as a strict xfail.
 """

@@ -7,6 +7,11 @@ yet are settings/mixengine/not_honoured.json — the same list the engine warns 
 strict expected failure: when a listed setting starts to act, its test fails until the entry is removed, so the
 list can only shrink and cannot lie.
 
+The same rule runs on a second scene, the Ultimaker S5 with one part per extruder (parity.DualScene), for the
+settings that matter with two extruders (test_setting_acts_as_in_curaengine_with_two_extruders). A key is listed
+when it is not honoured in either scene; an entry marked "multi_extruder_only" is expected to fail in the
+two-extruder scene only.
+
 A setting whose change leaves CuraEngine's G-code as it was is skipped (nothing to match). CuraEngine's results
 are cached in ~/.cache/mixengine-compare/parity; a fresh run slices each changed value once with each engine,
 two at a time.
@@ -105,3 +110,33 @@ def test_the_verdict_can_fail():
     assert parity.verdict(base, more, base, more) == "honoured"
     assert parity.verdict(base, base, base, more) == "cura-unchanged"
     assert "M104 S210" in parity.verdict(base, hotter, base, more)
+
+
+def test_the_two_extruder_verdict_compares_set_temperatures_only():
+    """In the two-extruder scene a standby temperature CuraEngine computes from its own time estimates
+    (M104 T1 S153.9) is not compared, a temperature a setting gives (M104 T1 S150) is."""
+    base = {"digest": "a", "figures": dict.fromkeys(parity.THRESHOLDS, 100.0), "commands": ["M104"],
+            "types": ["FILL"], "temps": ["M104 S100 T1", "M109 S200"]}
+    cura = dict(base, digest="b", temps=["M104 S150 T1", "M104 S153.9 T1", "M109 S200"])
+    mix_close = dict(base, digest="c", temps=["M104 S150 T1", "M104 S161.4 T1", "M109 S200"])
+    mix_without = dict(base, digest="d", temps=["M104 S161.4 T1", "M109 S200"])
+    set_values = {0.0, 100.0, 150.0, 200.0}
+    assert parity.verdict(base, cura, base, mix_close, set_temperatures=set_values) == "honoured"
+    assert "M104 S150 T1" in parity.verdict(base, cura, base, mix_without, set_temperatures=set_values)
+    assert "M104 S153.9 T1" in parity.verdict(base, cura, base, mix_close)  # the single-extruder rule
+
+
+def test_the_two_extruder_scene_gives_both_trains_and_both_parts():
+    """Both engines get every global value, each train's own values after its -eN, and each part after
+    its train with its extruder_nr (CuraEngine parents a model's settings to the last -e given)."""
+    args = [str(a) for a in parity.DUAL.slice_args({"material_standby_temperature": "150"})]
+    assert args[:2] == ["-j", str(parity.DUAL.machine)]
+    e0, e1 = args.index("-e0"), args.index("-e1")
+    models = [i for i, a in enumerate(args) if a == "-l"]
+    assert len(models) == 2 and e0 < models[0] < e1 < models[1]
+    assert args[models[0] + 1].endswith("dual_a.stl") and args[models[0] + 2:models[0] + 4] == ["-s", "extruder_nr=0"]
+    assert args[models[1] + 1].endswith("dual_b.stl") and args[-2:] == ["-s", "extruder_nr=1"]
+    assert "material_standby_temperature=150.0" in args[:e0]  # a global user value, seen by both trains
+    assert "machine_nozzle_offset_x=22.0" in args[e1:models[1]]
+    flip = [str(a) for a in parity.DUAL.slice_args({"machine_nozzle_offset_x": "33"})]  # a train's own key:
+    assert "machine_nozzle_offset_x=33.0" in flip[flip.index("-e1"):]                 # the second train's
