@@ -23,7 +23,8 @@ struct NotHonouredEntry {
     std::string key;
     std::vector<std::string> values;  ///< empty: every value but the definitions' is not honoured
     std::string why;
-    bool multi_extruder_only = false;  ///< "multi_extruder_only": true — only with two or more extruder trains
+    bool multi_extruder_only =
+        false;  ///< "multi_extruder_only": true — only with two or more extruder trains
 };
 
 /// Parses the list's JSON text; throws InputError naming `origin` when it is malformed.

@@ -104,7 +104,8 @@ namespace {
 // "multi_extruder_only": the entry holds for prints with two or more extruder trains; a machine with one
 // train is not warned.
 TEST(NotHonoured, MultiExtruderOnlyEntriesNeedTwoTrains) {
-    const char* const list = R"({"settings": {"ironing_enabled": {"why": "two nozzles", "multi_extruder_only": true}}})";
+    const char* const list =
+        R"({"settings": {"ironing_enabled": {"why": "two nozzles", "multi_extruder_only": true}}})";
     const std::vector<NotHonouredEntry> entries = parseNotHonoured(list, "test");
     ASSERT_EQ(entries.size(), 1u);
     EXPECT_TRUE(entries[0].multi_extruder_only);
