@@ -33,6 +33,11 @@ def normalised(value):
         return text
 
 
+def multiExtruderOnly(entry):
+    """True for an entry that holds only for prints with two or more extruders ("multi_extruder_only")."""
+    return isinstance(entry, dict) and bool(entry.get("multi_extruder_only", False))
+
+
 def reason(entry):
     return entry.get("why", "") if isinstance(entry, dict) else str(entry)
 

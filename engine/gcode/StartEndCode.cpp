@@ -90,6 +90,17 @@ std::string nozzlesOff(const std::vector<Settings>& extruders, int active) {
 
 }  // namespace
 
+StartTemperature startNozzleTemperature(const Settings& global, const Settings& extruder0) {
+    const std::string flavor = flavorText(global);
+    const bool nozzle_control =
+        !extruder0.has("machine_nozzle_temp_enabled") || extruder0.boolean("machine_nozzle_temp_enabled");
+    if (flavor == "Griffin")
+        return {true, initialNozzleTemperature(extruder0), true};
+    if (flavor == "UltiGCode" || !nozzle_control || !global.boolean("material_print_temp_prepend"))
+        return {};
+    return {true, initialNozzleTemperature(extruder0), global.boolean("material_print_temp_wait")};
+}
+
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion) {
     const std::string flavor = flavorText(global);
     const bool reprap = flavor == "RepRap (RepRap)";
@@ -130,6 +141,31 @@ std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::v
     out += gcode.takeText();
     return out + endCode(global, relative_extrusion) + nozzlesOff(extruders, gcode.extruder()) +
            ";End of Gcode\n";
+}
+
+namespace {
+
+/// The prime itself (see writePrimeTrain).
+void primeOnce(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+    if (prime.blob) {
+        const Point2 here = gcode.position();
+        const Point2 to = prime.absolute ? prime.position_um
+                                         : Point2{here.X + prime.position_um.X, here.Y + prime.position_um.Y};
+        gcode.travel(to, prime.travel_speed_mm_s);
+    }
+    if (griffin) {
+        gcode.line(prime.blob ? "G280" : "G280 S1");
+        if (!prime.blob)
+            gcode.line("G0 Z" + formatCoordMm(micronsToMm(gcode.z())));
+    }
+}
+
+}  // namespace
+
+void writePrimeTrain(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+    if (gcode.markPrimed())
+        primeOnce(prime, griffin, gcode);
+    gcode.retractTo(gcode.retraction());
 }
 
 std::string endCode(const Settings& global, bool relative_extrusion) {

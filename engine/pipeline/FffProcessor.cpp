@@ -86,6 +86,22 @@ std::string meshNames(const Scene& scene) {
     return text.empty() ? "the scene" : text;
 }
 
+/// As CuraEngine's start: with machine_extruders_share_nozzle every filament is primed and pulled back
+/// machine_extruders_shared_nozzle_initial_retraction; on Griffin the first extruder is primed
+/// (gcode/StartEndCode.h writePrimeTrain). Returns the text for the end of the start code.
+std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& writer, GCodeExport& gcode) {
+    if (scene.machine.global.boolean("machine_extruders_share_nozzle")) {
+        for (std::size_t e = 0; e < scene.machine.extruders.size(); ++e)
+            gcode.assumePrimed(
+                static_cast<int>(e),
+                scene.machine.extruders[e].millimetres("machine_extruders_shared_nozzle_initial_retraction"));
+    }
+    if (!writer.griffin || writer.extruders.empty())
+        return "";
+    writePrimeTrain(writer.extruders.front().prime, true, gcode);
+    return gcode.takeText();
+}
+
 }  // namespace
 
 std::string GCodeOutput::joined() const {
@@ -121,8 +137,16 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     const Settings& global = scene.machine.global;
     const ExportParams export_params = exportParams(scene);
     GCodeExport gcode(export_params);
+    const StartTemperature start = startNozzleTemperature(global, scene.machine.extruders.front());
+    if (start.set)
+        gcode.assumeNozzleTemperature(0, start.celsius, start.waited);
     const PlanWriterParams writer = writerParams(scene);
+    const std::string prime = primeFirstExtruder(scene, writer, gcode);
     PlannerState state;
+    // As CuraEngine, the first layer is planned from layer_start_x/_y of the first extruder (later
+    // layers go on from where the one before ended).
+    const Settings& first = scene.machine.extruders.front();
+    state.head = {first.lengthMicrons("layer_start_x"), first.lengthMicrons("layer_start_y")};
 
     GCodeOutput output;
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
@@ -171,6 +195,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     output.start = startCode(global, scene.machine.extruders.front(), relative);
     if (!relative)
         output.start += "G92 E0\n";
+    output.start += prime;
     output.start += ";LAYER_COUNT:" + std::to_string(model_layers) + "\n";  // as CuraEngine: not the raft's
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
     log.progress(ProgressStage::Done, 1.0);

@@ -18,8 +18,9 @@ struct PlanStep {
         SetMesh,               ///< ;MESH: marker (mesh_index −1 = NONMESH)
         SetFan,                ///< fan to `fan_ratio` (0..1)
         SetExtruder,           ///< tool change to `extruder`
-        SetNozzleTemperature,  ///< M104 `temperature_c` for the active extruder, without waiting
+        SetNozzleTemperature,  ///< `temperature_c` for nozzle `extruder` (−1: the active one); `wait`: M109
         SetBedTemperature,     ///< M140 `temperature_c`, without waiting
+        Prime,  ///< first use of the active extruder: its prime (G280 on Griffin), then a retraction
     };
     Kind kind = Kind::Travel;
     Point2 to{};
@@ -29,8 +30,9 @@ struct PlanStep {
     Feature feature = Feature::Fill;
     int mesh_index = -1;
     double fan_ratio = 0;
-    int extruder = 0;
+    int extruder = 0;  ///< SetExtruder: the new one; SetNozzleTemperature: the nozzle (−1 = active)
     double temperature_c = 0;
+    bool wait = false;              ///< SetNozzleTemperature: wait until it is reached (M109)
     double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
     int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none

@@ -7,6 +7,7 @@
 #include "planning/Cooling.h"
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
+#include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 #include "toolpaths/PolygonOps.h"
 
@@ -133,6 +134,131 @@ void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
     }
 }
 
+/// Per extruder: the last layer on which it prints a model, support or adhesion (−1: none).
+std::vector<int> lastPrintLayers(const GroupToolpaths& toolpaths, std::size_t extruder_count) {
+    std::vector<int> last(extruder_count, -1);
+    auto note = [&](const std::vector<ExtrusionPath>& paths, std::size_t layer) {
+        for (const ExtrusionPath& path : paths) {
+            const auto e = static_cast<std::size_t>(std::max(path.extruder, 0));
+            if (e < last.size())
+                last[e] = std::max(last[e], static_cast<int>(layer));
+        }
+    };
+    note(toolpaths.adhesion, 0);
+    for (std::size_t l = 0; l < toolpaths.support.size(); ++l)
+        note(toolpaths.support[l], l);
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        for (std::size_t l = 0; l < mesh.layers.size(); ++l) {
+            const MeshLayerGroups& g = mesh.layers[l];
+            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+                note(*group, l);
+        }
+    }
+    return last;
+}
+
+void planNozzleTemperatures(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings& global,
+                            const std::vector<Settings>& extruders, const std::set<int>& used,
+                            int start_extruder, Point2 start) {
+    const int only = used.size() == 1 ? *used.begin() : start_extruder;
+    planTemperatures(plan, temperatureParams(global, extruders[trainOf(only, extruders)]), used.size() == 1,
+                     start);
+    if (used.size() <= 1)
+        return;
+    SwitchTemperatureParams params;
+    params.trains = trainTemperatureParams(extruders);
+    params.share_heater = global.boolean("machine_extruders_share_heater");
+    params.last_layer = lastPrintLayers(toolpaths, extruders.size());
+    planSwitchTemperatures(plan, params, start_extruder, start);
+}
+
+/// The outermost extruder of the prime tower prints its rings on every layer up to the last one on
+/// which two or more extruders print, any extruder when it is switched to on the layer (as CuraEngine).
+bool printsTower(const GroupToolpaths& t, const LayerContext& ctx, bool switched) {
+    const auto i = static_cast<std::size_t>(ctx.layer);
+    if (i >= t.prime_tower.size() || t.prime_tower[i].empty())
+        return false;
+    return switched ||
+           (ctx.extruder == t.prime_tower_outermost && ctx.layer <= t.prime_tower_last_forced_layer);
+}
+
+/// prime_tower_wipe_enabled of the extruder switched away from: a travel to the tower's middle,
+/// where the old nozzle would be (CuraEngine's post-wipe point).
+void wipeOnTower(const GroupToolpaths& t, const std::vector<Settings>& extruders, int previous,
+                 const LayerContext& ctx, Point2& head, PlannedLayer& planned) {
+    const Settings& old = extruders[trainOf(previous, extruders)];
+    if (ctx.layer == 0 || previous == ctx.extruder || !old.boolean("prime_tower_wipe_enabled"))
+        return;
+    const Settings& now = *ctx.extruder_settings;
+    PlanStep travel;
+    travel.kind = PlanStep::Kind::Travel;
+    travel.to = {t.prime_tower_middle.X - old.lengthMicrons("machine_nozzle_offset_x") +
+                     now.lengthMicrons("machine_nozzle_offset_x"),
+                 t.prime_tower_middle.Y - old.lengthMicrons("machine_nozzle_offset_y") +
+                     now.lengthMicrons("machine_nozzle_offset_y")};
+    travel.speed_mm_s = travelParams(now, ctx.layer, ctx.thickness, nullptr).travel_speed_mm_s;
+    planned.steps.push_back(travel);
+    head = travel.to;
+}
+
+/// What one extruder prints on a layer, in CuraEngine's order: on layer 0 the skirt or brim, the
+/// ooze shield, its prime tower rings (and the wipe), its support, then every mesh.
+void planExtruderOnLayer(const GroupToolpaths& t, const std::vector<Settings>& extruders,
+                         const LayerContext& ctx, int previous, Point2& head, PlannedLayer& planned) {
+    const auto i = static_cast<std::size_t>(ctx.layer);
+    if (i == 0)
+        planNonMesh(t.adhesion, ctx, head, planned);
+    if (i < t.ooze_shield.size())
+        planNonMesh(t.ooze_shield[i], ctx, head, planned);
+    const bool switched = ctx.extruder != previous;
+    if (printsTower(t, ctx, switched)) {
+        planNonMesh(t.prime_tower[i], ctx, head, planned);
+        if (switched)
+            wipeOnTower(t, extruders, previous, ctx, head, planned);
+    }
+    if (i < t.support.size())
+        planNonMesh(t.support[i], ctx, head, planned);
+    for (std::size_t m = 0; m < t.meshes.size(); ++m)
+        planMeshLayer(t.meshes[m], static_cast<int>(m), ctx, head, planned);
+}
+
+/// machine_extruder_end_pos_* / _start_pos_* of train `s` (_abs: a head position, so plus the
+/// train's nozzle offset; else relative to `from`).
+Point2 extruderPosition(const Settings& s, const char* which, Point2 from) {
+    const std::string key = std::string("machine_extruder_") + which + "_pos_";
+    const Point2 pos{s.lengthMicrons(key + "x"), s.lengthMicrons(key + "y")};
+    if (!s.boolean(key + "abs"))
+        return {from.X + pos.X, from.Y + pos.Y};
+    return {pos.X + s.lengthMicrons("machine_nozzle_offset_x"),
+            pos.Y + s.lengthMicrons("machine_nozzle_offset_y")};
+}
+
+/// A SetExtruder step, and a Prime step when the extruder was not used before in the print. As
+/// CuraEngine, the old extruder first travels to its end position and the new one starts planning
+/// from its start position.
+void switchTo(int extruder, const std::vector<Settings>& extruders, PlannerState& state,
+              std::vector<PlanStep>& steps) {
+    const Settings& old = extruders[trainOf(state.extruder, extruders)];
+    PlanStep end;
+    end.kind = PlanStep::Kind::Travel;
+    end.to = extruderPosition(old, "end", state.head);
+    end.speed_mm_s = old.velocityMmPerS("speed_travel");
+    end.retract = old.boolean("retraction_enable") && end.to != state.head;
+    steps.push_back(end);
+    state.head = extruderPosition(extruders[trainOf(extruder, extruders)], "start", end.to);
+    PlanStep change;
+    change.kind = PlanStep::Kind::SetExtruder;
+    change.extruder = extruder;
+    steps.push_back(change);
+    state.extruder = extruder;
+    if (state.primed.insert(extruder).second) {
+        PlanStep prime;
+        prime.kind = PlanStep::Kind::Prime;
+        prime.extruder = extruder;
+        steps.push_back(prime);
+    }
+}
+
 /// What every layer of one planPrint call shares.
 struct PlanRun {
     const GroupToolpaths& toolpaths;
@@ -155,16 +281,11 @@ PlannedLayer startLayer(int index, coord_um z, coord_um thickness) {
     return planned;
 }
 
-/// Switches to `extruder` (a tool change step when it is not the active one).
+/// Switches to `extruder` (switchTo() when it is not the active one).
 void useExtruder(int extruder, PlannedLayer& planned, PlanRun& run) {
     run.used.insert(extruder);
-    if (extruder == run.state.extruder)
-        return;
-    PlanStep change;
-    change.kind = PlanStep::Kind::SetExtruder;
-    change.extruder = extruder;
-    planned.steps.push_back(change);
-    run.state.extruder = extruder;
+    if (extruder != run.state.extruder)
+        switchTo(extruder, run.extruders, run.state, planned.steps);
 }
 
 /// Retraction at the layer start (not on the print's first layer), cooling and acceleration/jerk.
@@ -216,8 +337,7 @@ PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, boo
     return planned;
 }
 
-/// Model layer `i`: every extruder's prime tower, ooze shield, skirt/brim (layer 0), support and
-/// meshes.
+/// Model layer `i`: what each extruder prints on it (planExtruderOnLayer), the active one first.
 PlannedLayer planModelLayer(std::size_t i, bool after_first, PlanRun& run) {
     const GroupToolpaths& toolpaths = run.toolpaths;
     const LayerZ& height = toolpaths.heights[i];
@@ -229,16 +349,7 @@ PlannedLayer planModelLayer(std::size_t i, bool after_first, PlanRun& run) {
         useExtruder(extruder, planned, run);
         const LayerContext ctx{planned.index, planned.thickness, extruder,
                                &run.extruders[trainOf(extruder, run.extruders)], &comb};
-        if (i < toolpaths.prime_tower.size())
-            planNonMesh(toolpaths.prime_tower[i], ctx, run.state.head, planned);
-        if (i < toolpaths.ooze_shield.size())
-            planNonMesh(toolpaths.ooze_shield[i], ctx, run.state.head, planned);
-        if (i == 0)
-            planNonMesh(toolpaths.adhesion, ctx, run.state.head, planned);
-        if (i < toolpaths.support.size())
-            planNonMesh(toolpaths.support[i], ctx, run.state.head, planned);
-        for (std::size_t m = 0; m < toolpaths.meshes.size(); ++m)
-            planMeshLayer(toolpaths.meshes[m], static_cast<int>(m), ctx, run.state.head, planned);
+        planExtruderOnLayer(toolpaths, run.extruders, ctx, layer_extruder, run.state.head, planned);
     }
     finishLayer(planned, after_first, layer_extruder, layer_start, run.cooling, run);
     return planned;
@@ -252,6 +363,9 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
         collectExtruders(toolpaths.adhesion, used);
     if (layer < toolpaths.support.size())
         collectExtruders(toolpaths.support[layer], used);
+    if (static_cast<int>(layer) <= toolpaths.prime_tower_last_forced_layer &&
+        toolpaths.prime_tower_outermost >= 0)
+        used.insert(toolpaths.prime_tower_outermost);
     for (const MeshToolpaths& mesh : toolpaths.meshes) {
         const MeshLayerGroups& g = mesh.layers[layer];
         for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill, &g.ironing})
@@ -285,6 +399,7 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
     std::vector<const Settings*> mesh_settings;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         mesh_settings.push_back(mesh.settings);
+    const int start_extruder = state.extruder;
     PlanRun run{toolpaths,
                 extruders,
                 coolingParams(global),
@@ -300,9 +415,7 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
     }
     for (std::size_t i = 0; i < toolpaths.heights.size(); ++i)
         plan.layers.push_back(planModelLayer(i, !plan.layers.empty(), run));
-    const int only = run.used.size() == 1 ? *run.used.begin() : state.extruder;
-    const std::size_t train = std::min<std::size_t>(static_cast<std::size_t>(only), extruders.size() - 1);
-    planTemperatures(plan, temperatureParams(global, extruders[train]), run.used.size() == 1, print_start);
+    planNozzleTemperatures(plan, toolpaths, global, extruders, run.used, start_extruder, print_start);
     return plan;
 }
 

@@ -36,7 +36,12 @@ TemperatureParams temperatureParams(const Settings& global, const Settings& extr
     p.heated_bed = global.boolean("machine_heated_bed");
     p.bed_c = global.temperatureCelsius("material_bed_temperature");
     p.bed_layer0_c = global.temperatureCelsius("material_bed_temperature_layer_0");
-    NozzleTemperatureParams& n = p.nozzle;
+    p.nozzle = nozzleTemperatureParams(extruder);
+    return p;
+}
+
+NozzleTemperatureParams nozzleTemperatureParams(const Settings& extruder) {
+    NozzleTemperatureParams n;
     n.enabled = extruder.boolean("machine_nozzle_temp_enabled");
     n.print_c = extruder.temperatureCelsius("material_print_temperature");
     n.layer0_c = extruder.temperatureCelsius("material_print_temperature_layer_0");
@@ -46,7 +51,7 @@ TemperatureParams temperatureParams(const Settings& global, const Settings& extr
     n.heat_up_c_per_s = extruder.real("machine_nozzle_heat_up_speed");
     n.cool_down_c_per_s = extruder.real("machine_nozzle_cool_down_speed");
     n.extrusion_cool_c_per_s = extruder.real("material_extrusion_cool_down_speed");
-    return p;
+    return n;
 }
 
 double flowTemperature(const NozzleTemperatureParams& p, double flow_mm3_s) {
@@ -98,6 +103,7 @@ double wantedTemperature(const NozzleTemperatureParams& p, const PlannedLayer& l
 PlanStep temperatureStep(PlanStep::Kind kind, double celsius) {
     PlanStep step;
     step.kind = kind;
+    step.extruder = -1;  // the active nozzle
     step.temperature_c = celsius;
     return step;
 }

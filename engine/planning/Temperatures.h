@@ -45,6 +45,9 @@ struct TemperatureParams {
 
 TemperatureParams temperatureParams(const Settings& global, const Settings& extruder);
 
+/// The nozzle's values of one extruder train.
+NozzleTemperatureParams nozzleTemperatureParams(const Settings& extruder);
+
 /// material_flow_temp_graph text ("[[3.5, 200], [7.0, 240]]"); throws InputError naming the key.
 std::vector<FlowTemperature> parseFlowTemperatureGraph(const std::string& text);
 

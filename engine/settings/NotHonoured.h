@@ -25,6 +25,8 @@ struct NotHonouredEntry {
     std::string key;
     std::vector<std::string> values;  ///< empty: every value but the definitions' is not honoured
     std::string why;
+    bool multi_extruder_only =
+        false;  ///< "multi_extruder_only": true — only with two or more extruder trains
 };
 
 /// Parses the list's JSON text; throws InputError naming `origin` when it is malformed.
@@ -34,7 +36,8 @@ std::vector<NotHonouredEntry> parseNotHonoured(std::string_view json_text, const
 std::vector<NotHonouredEntry> embeddedNotHonoured();
 
 /// One line per listed key whose value, in the global scope or any extruder train, is not honoured:
-/// "setting 'KEY' has no effect in MixEngine yet (...)". Keys are reported once, in list order.
+/// "setting 'KEY' has no effect in MixEngine yet (...)". Keys are reported once, in list order; an
+/// entry marked multi_extruder_only only when `extruder_count` is 2 or more.
 std::vector<std::string> notHonouredWarnings(const std::vector<NotHonouredEntry>& list,
                                              const DefinitionSet& definitions, const UserSettings& user,
                                              int extruder_count);

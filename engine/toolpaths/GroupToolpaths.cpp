@@ -5,6 +5,7 @@
 #include "common/ParallelFor.h"
 #include "toolpaths/Adhesion.h"
 #include "toolpaths/EmptyLayers.h"
+#include "toolpaths/ExtruderSkirts.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/PrimeTower.h"
 #include "toolpaths/Support.h"
@@ -72,11 +73,11 @@ std::vector<RaftLayer> fillerLayers(const RaftLayout& layout, const std::vector<
 
 /// Everything on the first printed layer: the models, the support area and the prime tower.
 Paths firstLayerArea(const GroupToolpaths& result, const std::vector<Paths>& model, const Paths& support_area,
-                     const Settings& global) {
+                     const ToolpathInput& input) {
     Paths area = result.first_sliced_layer < model.size() ? model[result.first_sliced_layer] : Paths{};
     area.insert(area.end(), support_area.begin(), support_area.end());
     if (!result.prime_tower.empty() && !result.prime_tower[0].empty())
-        area.push_back(primeTowerOutline(global));
+        area.push_back(primeTowerOutline(*input.global, input.extruders));
     return area;
 }
 
@@ -95,6 +96,23 @@ void addRaft(const ToolpathInput& input, const RaftLayout& layout, const Paths& 
         result.heights[i].print_z += lift;
         result.heights[i].bottom_z += lift;
     }
+}
+
+/// The skirt or brim lines of the extruders other than the adhesion extruder (toolpaths/ExtruderSkirts.h),
+/// around the tower's own brim when it has one (CuraEngine makes that first), else around the adhesion.
+void addOtherExtruderSkirts(const ToolpathInput& input, const std::vector<std::set<int>>& per_layer,
+                            const std::vector<ExtrusionPath>& tower_brim,
+                            std::vector<ExtrusionPath>& adhesion) {
+    if (adhesion.empty())
+        return;
+    std::set<int> used{adhesion.front().extruder};
+    for (const std::set<int>& layer : per_layer)
+        used.insert(layer.begin(), layer.end());
+    const std::vector<ExtrusionPath>& around = tower_brim.empty() ? adhesion : tower_brim;
+    const std::vector<ExtrusionPath> others =
+        otherExtruderSkirts(*input.global, input.extruders, areaInsideOutermost(around),
+                            around.front().width_um, around.front().extruder, used);
+    adhesion.insert(adhesion.end(), others.begin(), others.end());
 }
 
 /// Drops the empty layers at the bottom (toolpaths/EmptyLayers.h) and says so in the notes.
@@ -131,23 +149,32 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
 
     std::vector<std::set<int>> used = extrudersPerLayer(result, input.heights.size());
     const TowerInput tower{input.global, input.extruders, &input.heights, used, &model};
-    result.prime_tower = generatePrimeTower(tower);
+    PrimeTowerResult prime_tower = generatePrimeTower(tower);
+    result.prime_tower = std::move(prime_tower.layers);
+    result.prime_tower_outermost = prime_tower.outermost;
+    result.prime_tower_last_forced_layer = prime_tower.last_forced_layer;
+    result.prime_tower_middle = prime_tower.middle;
     result.ooze_shield = generateOozeShield(tower);
 
     if (!model.empty() && !raft.enabled) {
-        // As CuraEngine, the brim goes around the support on layer 0 too.
+        // As CuraEngine, the brim goes around the support on layer 0 too, and around the prime tower
+        // unless the tower has a brim of its own.
         AdhesionInput adhesion{input.global, input.extruders,
                                unionOf(model[0], support_result.first_layer_area),
                                pointsOf(result.support[0])};
         const Paths tower_points = pointsOf(result.prime_tower[0]);
         adhesion.extras.insert(adhesion.extras.end(), tower_points.begin(), tower_points.end());
+        if (prime_tower.outermost >= 0 && prime_tower.brim.empty())
+            adhesion.models.push_back(primeTowerOutline(*input.global, input.extruders));
         AdhesionResult skirt = generateAdhesion(adhesion);
         result.adhesion = std::move(skirt.paths);
+        result.adhesion.insert(result.adhesion.end(), prime_tower.brim.begin(), prime_tower.brim.end());
         result.warnings = std::move(skirt.warnings);
+        addOtherExtruderSkirts(input, used, prime_tower.brim, result.adhesion);
     }
     dropEmptyBottomLayers(input, result);
     if (raft.enabled && !result.heights.empty())
-        addRaft(input, raft, firstLayerArea(result, model, support_result.first_layer_area, *input.global),
+        addRaft(input, raft, firstLayerArea(result, model, support_result.first_layer_area, input),
                 support_result.filler, result);
     return result;
 }

@@ -62,9 +62,13 @@ struct GroupToolpaths {
     std::vector<MeshToolpaths> meshes;
     std::vector<std::vector<ExtrusionPath>> support;  ///< [layer]; support and its interface
     std::vector<ExtrusionPath> adhesion;              ///< skirt or brim, printed first on layer 0
-    /// [layer]; the prime tower's paths for every extruder (ExtrusionPath::extruder), printed by
-    /// each extruder right after it becomes active on that layer. Empty without a prime tower.
+    /// [layer]; the prime tower's rings for every extruder (ExtrusionPath::extruder), printed by an
+    /// extruder right after it becomes active on that layer, and by prime_tower_outermost on every
+    /// layer up to prime_tower_last_forced_layer (toolpaths/PrimeTower.h). Empty without a tower.
     std::vector<std::vector<ExtrusionPath>> prime_tower;
+    int prime_tower_outermost = -1;
+    int prime_tower_last_forced_layer = -1;
+    Point2 prime_tower_middle{0, 0};  ///< where the wipe after a switch goes (prime_tower_wipe_enabled)
     std::vector<std::vector<ExtrusionPath>> ooze_shield;  ///< [layer]; empty without an ooze shield
     /// The layers printed below the model, in print order with CuraEngine's negative numbers: the
     /// raft's base, interface and surface layers, then its filler layers when the first layer has

@@ -206,3 +206,53 @@ TEST(GCodeExport, FanSpeedKeepsOneDecimalLikeCuraEngine) {
 
 }  // namespace
 }  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+// CuraEngine's retraction model: a longer retraction retracts the difference, a shorter one primes the
+// difference back at the speed of the one before, the extra prime of each retraction is primed at the next
+// unretraction (and counted as filament of that extruder).
+TEST(GCodeExport, RetractToChangesTheRetractedAmountBothWays) {
+    ExportParams p = marlin175();
+    p.prime_speed_mm_s = 15;
+    GCodeExport g(p);
+    g.retract();                      // 6.5 mm at 25 mm/s
+    g.retractTo({8.0, 20, 15, 0});    // a switch retraction: 1.5 mm more at 20 mm/s
+    g.retractTo({8.0, 20, 15, 0});    // nothing
+    g.retractTo({6.5, 25, 25, 1.0});  // primes 1.5 mm at the switch's 15 mm/s, owes 1 mm³ more
+    g.unretract();                    // 6.5 mm + 1 mm³ (0.41575 mm) at 25 mm/s
+    EXPECT_EQ(g.text(), "G1 F1500 E-6.5\nG1 F1200 E-8\nG1 F900 E-6.5\nG1 F1500 E0.41575\n");
+    EXPECT_NEAR(g.filamentPerExtruder().at(0), 0.41575, 1e-4);
+}
+
+// The z-hop of a switch is written again when the nozzle is up already; back down before extruding.
+TEST(GCodeExport, HopRewrittenOnRequestAndLoweredBeforeExtruding) {
+    ExportParams p = marlin175();
+    p.retraction_hop_um = 2000;
+    GCodeExport g(p);
+    g.moveZ(200, 10);
+    g.retract();
+    g.hopTo(2000);        // up already: nothing
+    g.hopTo(2000, true);  // the line again
+    g.extrude({1'000, 0}, 0.0, 20);
+    EXPECT_EQ(
+        g.text(),
+        "G0 F600 Z0.2\nG1 F1500 E-6.5\nG0 F600 Z2.2\nG0 Z2.2\nG0 Z0.2\nG1 F1500 E0\nG1 F1200 X1 Y0 E0\n");
+}
+
+// Each extruder's fan: P<n> when it is not fan 0, and the speed written again after a switch to another fan.
+TEST(GCodeExport, FanOfTheActiveExtruder) {
+    GCodeExport g(marlin175());
+    g.setFan(1.0);
+    ToolChange change;
+    change.extruder = 1;
+    change.fan_number = 1;
+    g.selectExtruder(change);
+    g.setFan(1.0);
+    g.setFan(0.0);
+    EXPECT_EQ(g.text(), "M106 S255\nT1\nG92 E0\nM106 S255 P1\nM107 P1\n");
+}
+
+}  // namespace
+}  // namespace mixengine

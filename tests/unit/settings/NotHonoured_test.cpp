@@ -108,3 +108,23 @@ TEST(NotHonoured, TheEmbeddedListParsesAndNamesRealSettings) {
 
 }  // namespace
 }  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+// "multi_extruder_only": the entry holds for prints with two or more extruder trains; a machine with one
+// train is not warned.
+TEST(NotHonoured, MultiExtruderOnlyEntriesNeedTwoTrains) {
+    const char* const list =
+        R"({"settings": {"ironing_enabled": {"why": "two nozzles", "multi_extruder_only": true}}})";
+    const std::vector<NotHonouredEntry> entries = parseNotHonoured(list, "test");
+    ASSERT_EQ(entries.size(), 1u);
+    EXPECT_TRUE(entries[0].multi_extruder_only);
+    EXPECT_TRUE(entries[0].values.empty());
+    const UserSettings user{{{"ironing_enabled", "True"}}, {}};
+    EXPECT_TRUE(notHonouredWarnings(entries, machine(), user, 1).empty());
+    EXPECT_EQ(notHonouredWarnings(entries, machine(), user, 2).size(), 1u);
+}
+
+}  // namespace
+}  // namespace mixengine

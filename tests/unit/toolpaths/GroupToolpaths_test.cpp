@@ -76,16 +76,58 @@ TEST(GroupToolpaths, PrimeTowerRingsPerExtruder) {
             EXPECT_EQ(tower[i].extruder, i < 3 ? 0 : 1) << layer;
             EXPECT_EQ(tower[i].feature, Feature::PrimeTower);
         }
-        // Centred at (150 − 10, 100 + 10) mm.
+        // Centred at (150 − 10, 100 + 10) mm, moved 8 mm towards the origin for its brim (20 lines of
+        // 0.4 mm): without adhesion prime_tower_brim_enable resolves to True (Cura's resolve formula).
         const ClipperLib::IntRect box = boundsOf({tower[0].points});
-        EXPECT_NEAR((box.left + box.right) / 2.0, 140'000, 2);
-        EXPECT_NEAR((box.top + box.bottom) / 2.0, 110'000, 2);
+        EXPECT_NEAR((box.left + box.right) / 2.0, 132'000, 2);
+        EXPECT_NEAR((box.top + box.bottom) / 2.0, 102'000, 2);
         EXPECT_NEAR(box.right - box.left, 19'600, 2);
     }
     // Layer 0: T0 fills the whole disc with loops 0.4 mm apart (24 or 25 of them), T1 prints none.
     EXPECT_GE(g.paths.prime_tower[0].size(), 24U);
     for (const ExtrusionPath& p : g.paths.prime_tower[0])
         EXPECT_EQ(p.extruder, 0);
+    // The tower's brim: 20 loops of T0 around it on layer 0, the outermost 8 mm out (diameter 36 mm);
+    // then T1's own lines just outside it until they reach skirt_brim_minimal_length (250 mm: 3 loops).
+    ASSERT_EQ(g.paths.adhesion.size(), 23U);
+    const ClipperLib::IntRect brim = boundsOf({g.paths.adhesion.front().points});
+    EXPECT_NEAR((brim.left + brim.right) / 2.0, 132'000, 2);
+    EXPECT_NEAR(brim.right - brim.left, 35'600, 100);
+    EXPECT_EQ(g.paths.adhesion.front().feature, Feature::Skirt);
+    double t1_mm = 0;
+    for (std::size_t i = 0; i < g.paths.adhesion.size(); ++i) {
+        const ExtrusionPath& p = g.paths.adhesion[i];
+        EXPECT_EQ(p.extruder, i < 20 ? 0 : 1) << i;
+        if (p.extruder == 1) {
+            EXPECT_GT(boundsOf({p.points}).right - boundsOf({p.points}).left, brim.right - brim.left);
+            t1_mm += lengthUm(p.points, true) / 1000.0;
+        }
+    }
+    EXPECT_GE(t1_mm, 250.0);
+    EXPECT_LT(t1_mm, 250.0 + 130.0);
+    // T0 is outermost and prints its rings on every layer up to the last with both extruders.
+    EXPECT_EQ(g.paths.prime_tower_outermost, 0);
+    EXPECT_EQ(g.paths.prime_tower_last_forced_layer, 29);
+}
+
+TEST(GroupToolpaths, PrimeTowerWithoutItsBrimStaysAndTheModelBrimGoesAroundIt) {
+    const Group g = twoMeshes({{"prime_tower_enable", "True"},
+                               {"prime_tower_size", "20"},
+                               {"prime_tower_position_x", "150"},
+                               {"prime_tower_position_y", "100"},
+                               {"adhesion_type", "brim"},
+                               {"brim_line_count", "2"},
+                               {"skirt_brim_minimal_length", "0"}});
+    const ClipperLib::IntRect box = boundsOf({g.paths.prime_tower[1].front().points});
+    EXPECT_NEAR((box.left + box.right) / 2.0, 140'000, 2);
+    EXPECT_NEAR((box.top + box.bottom) / 2.0, 110'000, 2);
+    // Brim loops around each mesh and around the tower (as CuraEngine's brim outline includes it).
+    bool around_tower = false;
+    for (const ExtrusionPath& p : g.paths.adhesion) {
+        const ClipperLib::IntRect b = boundsOf({p.points});
+        around_tower = around_tower || (b.left < 130'500 && b.right > 149'500 && b.top < 100'500);
+    }
+    EXPECT_TRUE(around_tower);
 }
 
 TEST(GroupToolpaths, OozeShieldAroundBothMeshes) {
