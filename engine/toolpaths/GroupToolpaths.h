@@ -10,7 +10,8 @@
 // Order of work: each mesh (toolpaths/MeshToolpaths.h), then the support around all meshes
 // (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
 // (toolpaths/PrimeTower.h), and last the skirt or brim around everything on layer 0
-// (toolpaths/Adhesion.h); last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
+// (toolpaths/Adhesion.h) with the other extruders' lines outside it (toolpaths/ExtruderSkirts.h);
+// last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
 // so layer 0 of the result is the first layer that prints. `threads` is used inside every step;
 // the result does not depend on it.
 #include <string>
