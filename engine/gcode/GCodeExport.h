@@ -1,6 +1,8 @@
 #pragma once
 // The G-code writer's core: turns moves into lines, keeping only what the text needs — the head
-// position, the feedrate last written, the extrusion axis and the retraction state. Formatting
+// position, the feedrate last written, the extrusion axis, each extruder's retracted filament (as
+// CuraEngine: a switch retraction longer than the travel one is primed back in part at the next
+// retraction), the z-hop in force, the fan and the nozzle temperatures set. Formatting
 // lives in NumberFormat, E bookkeeping in ExtrusionAxis, headers in Header, time in TimeEstimate
 // (acceleration and jerk). Coordinates are written relative to the active nozzle: a tool change
 // sets the nozzle offset that is subtracted from every X/Y (machine_use_extruder_offset_to_offset_coords).

@@ -124,7 +124,9 @@ void describeExtruders(const Scene& scene, bool volumetric, PrintSummary& summar
     for (std::size_t i = 0; i < scene.machine.extruders.size(); ++i) {
         const Settings& e = scene.machine.extruders[i];
         ExtruderHeader h;
-        h.initial_temperature_c = e.temperatureCelsius("material_print_temperature_layer_0");
+        // As CuraEngine: the first extruder starts at its first-layer temperature, the others at standby.
+        h.initial_temperature_c = i == 0 ? e.temperatureCelsius("material_print_temperature_layer_0")
+                                         : e.temperatureCelsius("material_standby_temperature");
         h.nozzle_diameter_mm = e.millimetres("machine_nozzle_size");
         if (e.has("machine_nozzle_id"))
             h.nozzle_name = e.text("machine_nozzle_id");

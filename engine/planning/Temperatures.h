@@ -11,6 +11,7 @@
 //     nozzle to get there before that layer ends (machine_nozzle_heat_up_speed /
 //     machine_nozzle_cool_down_speed, less / plus material_extrusion_cool_down_speed while
 //     printing), as CuraEngine's preheat model does. machine_nozzle_temp_enabled=false: none.
+//     With several extruders in the print: planning/SwitchTemperatures.h instead.
 // Layer times are the planner's distance / speed estimates (planning/Cooling.h), after cooling.
 #include <vector>
 

@@ -10,7 +10,8 @@
 // Order of work: each mesh (toolpaths/MeshToolpaths.h), then the support around all meshes
 // (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
 // (toolpaths/PrimeTower.h), and last the skirt or brim around everything on layer 0
-// (toolpaths/Adhesion.h); last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
+// (toolpaths/Adhesion.h) with the other extruders' lines outside it (toolpaths/ExtruderSkirts.h);
+// last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
 // so layer 0 of the result is the first layer that prints. With adhesion_type raft there is no
 // skirt or brim: the raft (toolpaths/Raft.h) goes under everything on that first layer, the
 // first layer's support moves to the raft's filler layers (toolpaths/Support.h) and the model's

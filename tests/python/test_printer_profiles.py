@@ -456,12 +456,17 @@ def test_dual_nozzle_offsets_the_second_nozzle(engine, tmp_path, report):
     assert tower1[0] + offset_x > tower0[0] and tower1[1] + offset_x < tower0[1]  # inside T0's rings
     assert 0 <= tower0[0] and tower0[1] + offset_x <= 220 and 0 <= tower0[2] and tower0[3] <= 220
     assert tower0[1] - tower0[0] == pytest.approx(15.0, abs=0.5)  # prime_tower_size of the profile
-    # The tool change carries the profile's extruder end/start code and standby temperature.
+    # The tool change carries the profile's extruder end/start code and, as CuraEngine writes it, after T1 and
+    # its start code: M109 for T1, then T0 left at a standby temperature no lower than the profile's 160 °C
+    # (as low as T0 can get and still be back in time: planning/SwitchTemperatures.h).
     lines = text.splitlines()
     first_t1 = lines.index("T1")
-    before, after = lines[first_t1 - 4:first_t1], lines[first_t1 + 1:first_t1 + 5]
-    assert ";left nozzle (T0) done" in before and "M104 T0 S160" in before
+    before, after = lines[first_t1 - 4:first_t1], lines[first_t1 + 1:first_t1 + 8]
+    assert ";left nozzle (T0) done" in before
     assert ";right nozzle (T1, 18 mm right of T0) in use" in after and "M117 Right nozzle" in after
+    wait = next(i for i, line in enumerate(after) if line.startswith("M109 S"))
+    standby = next(i for i, line in enumerate(after) if line.startswith("M104 T0 S"))
+    assert wait < standby and 160 <= float(after[standby].split("S")[1]) <= 210, after
     assert text.count("\nT1\n") == text.count("M117 Right nozzle") > 1
     report(f"profiles: dual nozzle T0 cube centre x {((a_box[0] + a_box[1]) / 2):.2f}, T1 cube written at "
            f"x {((b_box[0] + b_box[1]) / 2):.2f} (offset {offset_x} mm), tower x {tower0[0]:.1f}..{tower0[1]:.1f}")
