@@ -190,8 +190,12 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
             drawn.lines, drawn.loops, offsetArea(area, -outline_inset),
             {params.multiplier, w, params.connect_lines, params.pattern == InfillPattern::Concentric});
     }
-    for (int wall = 0; wall < params.wall_count; ++wall)
-        appendPaths(offsetMiter(area, -w / 2 - wall * w), true, params, result);
+    for (int wall = 0; wall < params.wall_count; ++wall) {
+        const Paths loop = offsetMiter(area, -w / 2 - coord_um(wall) * w);
+        if (loop.empty())
+            break;  // the area is used up: no further wall fits (a huge count must not spin)
+        appendPaths(loop, true, params, result);
+    }
     appendPaths(drawn.loops, true, params, result);
     appendPaths(drawn.lines, false, params, result);
     return result;
