@@ -1,5 +1,6 @@
 #include "planning/PathOrder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -122,6 +123,38 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
     appendPathWipe(path, start, params, before_end, head, steps);
 }
 
+/// Which paths the nearest-first search may pick: free paths and the first path of each sequence.
+std::vector<bool> entryPaths(const std::vector<ExtrusionPath>& paths) {
+    std::vector<bool> entry(paths.size(), true);
+    std::vector<std::uint32_t> seen;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        const std::uint32_t sequence = paths[i].sequence;
+        if (sequence == 0 || paths[i].points.size() < 2)
+            continue;
+        entry[i] = std::find(seen.begin(), seen.end(), sequence) == seen.end();
+        seen.push_back(sequence);
+    }
+    return entry;
+}
+
+/// The nearest path that may be picked, by its nearest end (open lines) or its first vertex (loops,
+/// to keep the search linear in the number of paths); paths.size() when none is left.
+std::size_t nearestEntry(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done,
+                         const std::vector<bool>& entry, const Point2& head) {
+    std::size_t best = paths.size();
+    double best_distance = std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        if (done[i] || !entry[i] || paths[i].points.size() < 2)
+            continue;
+        const double d = paths[i].closed ? distanceUm(head, paths[i].points.front())
+                                         : std::min(distanceUm(head, paths[i].points.front()),
+                                                    distanceUm(head, paths[i].points.back()));
+        if (d < best_distance)
+            best = i, best_distance = d;
+    }
+    return best;
+}
+
 }  // namespace
 
 double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um,
@@ -133,34 +166,29 @@ double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_u
 void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& params, Point2& head,
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps) {
     std::vector<bool> done(paths.size(), false);
-    for (std::size_t placed = 0; placed < paths.size(); ++placed) {
-        // Pick the nearest path by its nearest end (open lines) or its first vertex (loops, to keep
-        // the search linear in the number of paths); the loop's best start is chosen afterwards.
-        std::size_t best = paths.size();
-        double best_distance = std::numeric_limits<double>::max();
-        for (std::size_t i = 0; i < paths.size(); ++i) {
-            if (done[i] || paths[i].points.size() < 2)
-                continue;
-            const double d = paths[i].closed ? distanceUm(head, paths[i].points.front())
-                                             : std::min(distanceUm(head, paths[i].points.front()),
-                                                        distanceUm(head, paths[i].points.back()));
-            if (d < best_distance)
-                best = i, best_distance = d;
-        }
-        std::size_t best_start = 0;
-        if (best < paths.size())
-            best_start = bestStart(paths[best], head, best_distance);
-        if (best == paths.size())
-            break;
-        done[best] = true;
-        if (feature != paths[best].feature) {
+    const std::vector<bool> entry = entryPaths(paths);
+    auto print = [&](std::size_t index, std::size_t start) {
+        done[index] = true;
+        if (feature != paths[index].feature) {
             PlanStep marker;
             marker.kind = PlanStep::Kind::SetFeature;
-            marker.feature = paths[best].feature;
+            marker.feature = paths[index].feature;
             steps.push_back(marker);
-            feature = paths[best].feature;
+            feature = paths[index].feature;
         }
-        emitPath(paths[best], best_start, params, head, steps);
+        emitPath(paths[index], start, params, head, steps);
+    };
+    for (;;) {
+        const std::size_t best = nearestEntry(paths, done, entry, head);
+        if (best == paths.size())
+            break;
+        double unused = 0;
+        print(best, bestStart(paths[best], head, unused));
+        const std::uint32_t sequence = paths[best].sequence;
+        for (std::size_t j = best + 1; sequence != 0 && j < paths.size(); ++j) {
+            if (!done[j] && paths[j].sequence == sequence && paths[j].points.size() >= 2)
+                print(j, bestStart(paths[j], head, unused));
+        }
     }
 }
 

@@ -2,7 +2,9 @@
 // Orders the extrusion paths of one layer to keep travel short and turns them into plan steps.
 //
 // Greedy nearest neighbour from the current head position: a closed loop may start at any of its
-// vertices (the nearest is taken), an open line at either end. Travels longer than
+// vertices (the nearest is taken), an open line at either end. A sequence (ExtrusionPath::sequence)
+// is entered at its first path only and then printed in list order, each line from its end nearer
+// to the head. Travels longer than
 // retraction_min_travel retract when retraction is enabled, unless they stay inside the comb
 // boundary (combing).
 #include <optional>

@@ -1,6 +1,7 @@
 #include "toolpaths/MeshToolpaths.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
@@ -45,6 +46,7 @@ Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
 /// The skin's reference walls and the removal widths left over (toolpaths/Skin.h).
 struct SkinReferences {
     SkinReference top, bottom;
+    int roofing_wall = -1;  ///< min(2, wall_line_count) with roofing, else −1 (none)
 };
 
 SkinReferences skinReferences(const Settings& s) {
@@ -52,13 +54,15 @@ SkinReferences skinReferences(const Settings& s) {
     const coord_um w0 = s.lengthMicrons("wall_line_width_0"), wx = s.lengthMicrons("wall_line_width_x");
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
     return {skinReference(length("top_skin_preshrink"), walls, w0, wx),
-            skinReference(length("bottom_skin_preshrink"), walls, w0, wx)};
+            skinReference(length("bottom_skin_preshrink"), walls, w0, wx),
+            countOf(s, "roofing_layer_count") > 0 ? std::min(2, walls) : -1};
 }
 
 WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
     WallParams p;
     p.top_reference = refs.top.wall;
     p.bottom_reference = refs.bottom.wall;
+    p.roofing_reference = refs.roofing_wall;
     p.wall_count = countOf(s, "wall_line_count");
     if (layer % 2 == 1 && s.has("alternate_extra_perimeter") && s.boolean("alternate_extra_perimeter"))
         ++p.wall_count;  // one wall more on every other layer
@@ -90,18 +94,41 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     return p;
 }
 
-SkinFillParams skinFill(const Settings& s, int layer, coord_um z, const FeatureStyle& style, bool roofing) {
-    SkinFillParams p;
+bool flag(const Settings& s, std::string_view key) {
+    return s.has(key) && s.boolean(key);
+}
+
+/// The lines half a wall line wide that fill the gaps of concentric skin (fill_perimeter_gaps), in
+/// CuraEngine's perimeter-gap style: skin speed, inner-wall flow.
+std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
+    if ((s.has("fill_perimeter_gaps") && s.text("fill_perimeter_gaps") == "nowhere") ||
+        flag(s, "magic_spiralize"))
+        return std::nullopt;
+    FeatureStyle style = featureStyle(
+        s, {"wall_line_width_0", "speed_topbottom", "wall_x_material_flow", "top_bottom_extruder_nr"}, layer);
+    style.width_um = s.lengthMicrons("wall_line_width_0") / 2;
+    return style;
+}
+
+SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const MeshStyles& styles) {
+    SkinPathParams p;
     p.outline_count = countOf(s, "skin_outline_count");
-    const char* pattern_key = roofing && s.has("roofing_pattern") ? "roofing_pattern"
-                              : layer == 0                        ? "top_bottom_pattern_0"
-                                                                  : "top_bottom_pattern";
-    p.pattern = infillPatternOf(s.text(pattern_key), pattern_key);
-    const double skin_angle = angleFor(s, "skin_angles", layer, {45, 135});
-    p.angle_degrees = roofing ? angleFor(s, "roofing_angles", layer, {skin_angle}) : skin_angle;
-    p.overlap_um = s.has("skin_overlap_mm") ? s.lengthMicrons("skin_overlap_mm") : 0;
     p.z_um = z;
-    p.style = style;
+    p.first_layer = layer == 0;
+    const char* pattern_key = layer == 0 ? "top_bottom_pattern_0" : "top_bottom_pattern";
+    p.skin.pattern = infillPatternOf(s.text(pattern_key), pattern_key);
+    p.skin.angle_degrees = angleFor(s, "skin_angles", layer, {45, 135});
+    p.skin.overlap_um = s.has("skin_overlap_mm") ? s.lengthMicrons("skin_overlap_mm") : 0;
+    p.skin.style = styles.skin;
+    p.skin.monotonic = flag(s, "skin_monotonic");
+    p.roofing.pattern = s.has("roofing_pattern")
+                            ? infillPatternOf(s.text("roofing_pattern"), "roofing_pattern")
+                            : p.skin.pattern;
+    p.roofing.angle_degrees = angleFor(s, "roofing_angles", layer, {45, 135});
+    p.roofing.style = styles.roofing;
+    p.roofing.monotonic = flag(s, "roofing_monotonic");
+    p.gap_style = gapStyle(s, layer);
+    p.gap_angle_degrees = p.roofing.angle_degrees;  // as CuraEngine: perimeter gaps at the roofing angles
     return p;
 }
 
@@ -138,7 +165,8 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
                                                    const Settings& settings, int threads) {
     std::vector<MeshLayerGroups> result(layers.size());
-    std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size());
+    std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size()),
+        roofing_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
     std::vector<Paths> inner_areas(layers.size());
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
@@ -154,19 +182,19 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         inner_areas[i] = std::move(walls.inner_area);
         top_reference[i] = std::move(walls.top_reference);
         bottom_reference[i] = std::move(walls.bottom_reference);
+        roofing_reference[i] = std::move(walls.roofing_reference);
     });
 
-    const std::vector<SkinAreas> areas =
-        computeSkinAreas(top_reference, bottom_reference, inner_areas, skinParams(settings, refs), threads);
+    const std::vector<SkinAreas> areas = computeSkinAreas(
+        {&top_reference, &bottom_reference, refs.roofing_wall >= 0 ? &roofing_reference : nullptr},
+        inner_areas, skinParams(settings, refs), threads);
 
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         const coord_um z = layers[i].print_z;
         const MeshStyles styles = meshStyles(settings, layer);
-        result[i].skin = generateSkinPaths(areas[i].skin, skinFill(settings, layer, z, styles.skin, false));
-        for (ExtrusionPath& path :
-             generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
-            result[i].skin.push_back(std::move(path));
+        result[i].skin =
+            generateSkinPaths(areas[i].skin, areas[i].roofing, skinPathParams(settings, layer, z, styles));
         result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
     });
     return result;

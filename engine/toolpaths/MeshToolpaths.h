@@ -3,11 +3,13 @@
 // top/bottom skin and roofing (toolpaths/Skin.h) and sparse infill (toolpaths/InfillPatterns.h),
 // from the mesh's outlines and its resolved settings (Cura's keys and meanings):
 //   walls   — wall_line_count, wall_line_width_0/_x, wall_0_inset, z_seam_*;
-//   skin    — top_layers, bottom_layers, initial_bottom_layers, skin removal / expansion widths,
-//             skin_outline_count loops of skin_line_width, then lines (top_bottom_pattern, on layer
-//             0 top_bottom_pattern_0) at skin_angles[layer % n] (default 45°, 135°) reaching
-//             skin_overlap_mm beyond the skin area; roofing (roofing_layer_count) likewise with the
-//             roofing_* keys;
+//   skin    — top_layers, bottom_layers, initial_bottom_layers, skin removal / expansion widths;
+//             per skin part skin_outline_count loops of skin_line_width, inside them the roofing
+//             (roofing_layer_count: roofing_pattern at roofing_angles[layer % n], default 45°,
+//             135°, roofing_monotonic) and the skin (top_bottom_pattern, on layer 0
+//             top_bottom_pattern_0, at skin_angles[layer % n], default 45°, 135°, reaching
+//             skin_overlap_mm beyond its area, skin_monotonic), and with fill_perimeter_gaps the
+//             gaps of concentric skin (toolpaths/SkinPaths.h);
 //   infill  — infill_pattern at infill_line_distance inside the innermost wall, grown by
 //             infill_overlap_mm, at infill_angles[layer % n] (default 45° and 135° alternating for
 //             lines and zigzag, 45° otherwise); none when infill_line_distance is 0.

@@ -51,14 +51,17 @@ SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_w
     return ref;
 }
 
-std::vector<SkinAreas> computeSkinAreas(const std::vector<Paths>& top_reference,
-                                        const std::vector<Paths>& bottom_reference,
+std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                                         const std::vector<Paths>& inner_areas, const SkinParams& p,
                                         int threads) {
+    const std::vector<Paths>& top_reference = *references.top;
+    const std::vector<Paths>& bottom_reference = *references.bottom;
+    const std::vector<Paths>& roof_reference = references.roofing ? *references.roofing : top_reference;
     const int n = static_cast<int>(top_reference.size());
+    const int roofing_layers = std::min(p.roofing_layers, p.top_layers);
     const std::vector<Paths> above = windowIntersections(top_reference, p.top_layers, threads);
     const std::vector<Paths> below = windowIntersections(bottom_reference, p.bottom_layers, threads);
-    const std::vector<Paths> roof_above = windowIntersections(top_reference, p.roofing_layers, threads);
+    const std::vector<Paths> roof_above = windowIntersections(roof_reference, roofing_layers, threads);
     std::vector<SkinAreas> result(inner_areas.size());
     parallelFor(inner_areas.size(), threads, [&](std::size_t index) {
         const int i = static_cast<int>(index);
@@ -84,12 +87,11 @@ std::vector<SkinAreas> computeSkinAreas(const std::vector<Paths>& top_reference,
         out.skin = removeSmallIslands(unionOf(top, bottom), kMinSkinAreaUm2);
         out.infill = removeSmallIslands(differenceOf(inner, out.skin),
                                         std::max(kMinSkinAreaUm2, p.min_infill_area_um2));
-        if (p.roofing_layers > 0 && !out.skin.empty()) {
-            Paths covered = i + p.roofing_layers < n ? roof_above[index + 1] : Paths{};
+        if (roofing_layers > 0 && !out.skin.empty()) {
+            Paths covered = i + roofing_layers < n ? roof_above[index + 1] : Paths{};
             if (i > 0)
-                covered = unionOf(covered, differenceOf(top_reference[index], top_reference[index - 1]));
+                covered = unionOf(covered, differenceOf(roof_reference[index], roof_reference[index - 1]));
             out.roofing = differenceOf(out.skin, covered);
-            out.skin = intersectAll(out.skin, covered);
         }
     });
     return result;

@@ -33,6 +33,8 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     if (params.wall_count <= 0) {
         result.inner_area = outlines;
         result.top_reference = result.bottom_reference = outlines;
+        if (params.roofing_reference >= 0)
+            result.roofing_reference = outlines;
         return result;
     }
     std::vector<Paths> regions;    // centre region of each wall that exists somewhere
@@ -68,6 +70,8 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     result.bottom_reference = params.bottom_reference == params.top_reference
                                   ? result.top_reference
                                   : referenceRegion(outlines, regions, depths, params.bottom_reference);
+    if (params.roofing_reference >= 0)
+        result.roofing_reference = referenceRegion(outlines, regions, depths, params.roofing_reference);
     return result;
 }
 

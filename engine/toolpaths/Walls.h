@@ -30,6 +30,8 @@ struct WallParams {
     /// outline, k = the centre region of wall k (1 = outer wall).
     int top_reference = 2;
     int bottom_reference = 2;
+    /// The region roofing compares with (CuraEngine's min(2, wall count)); −1 = not wanted.
+    int roofing_reference = -1;
 };
 
 struct WallResult {
@@ -38,6 +40,7 @@ struct WallResult {
     /// The reference regions asked for in WallParams; a part with fewer walls than the reference
     /// uses its innermost wall's region (as CuraEngine 4.13 takes insets[min(k, count) − 1]).
     Paths top_reference, bottom_reference;
+    Paths roofing_reference;  ///< empty when WallParams::roofing_reference is −1
 };
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params);

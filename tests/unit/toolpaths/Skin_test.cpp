@@ -22,7 +22,7 @@ SkinParams layersOnly(int top, int bottom) {
 }
 
 std::vector<SkinAreas> skins(const std::vector<Paths>& areas, const SkinParams& p, int threads = 1) {
-    return computeSkinAreas(areas, areas, areas, p, threads);
+    return computeSkinAreas({&areas, &areas, nullptr}, areas, p, threads);
 }
 
 TEST(Skin, StackOfIdenticalSquares) {
@@ -109,8 +109,26 @@ TEST(Skin, RoofingIsTheSkinWithAirAbove) {
     p.roofing_layers = 1;
     const std::vector<SkinAreas> s = skins(areas, p);
     EXPECT_EQ(areaUm2(s[2].roofing), 400e6 - 100e6);  // nothing above the L-shaped part
-    EXPECT_EQ(areaUm2(s[2].skin), 100e6);             // covered by layer 3
+    EXPECT_EQ(areaUm2(s[2].skin), 400e6);             // the skin holds its roofing
     EXPECT_EQ(areaUm2(s[3].roofing), 100e6);
+}
+
+TEST(Skin, RoofingComparesWithItsOwnReferenceAndAtMostTopLayers) {
+    // The outline reference says layer 1 is covered, the roofing reference (a wall's centre region,
+    // smaller above) leaves a 1 mm band of layer 1 uncovered: roofing follows the roofing reference.
+    const std::vector<Paths> outlines{sq(0, 20'000), sq(0, 20'000)};
+    const std::vector<Paths> walls{sq(0, 20'000), sq(1'000, 18'000)};
+    SkinParams p = layersOnly(2, 0);
+    p.roofing_layers = 1;
+    const std::vector<SkinAreas> s = computeSkinAreas({&outlines, &outlines, &walls}, outlines, p, 1);
+    EXPECT_EQ(areaUm2(s[0].roofing), 400e6 - 18'000.0 * 18'000.0);
+    EXPECT_EQ(areaUm2(s[0].skin), 400e6);
+    // roofing_layer_count above top_layers counts as top_layers.
+    const std::vector<Paths> stack{sq(0, 20'000), sq(0, 20'000), sq(0, 20'000), sq(0, 20'000)};
+    SkinParams capped = layersOnly(1, 0);
+    capped.roofing_layers = 3;
+    EXPECT_TRUE(skins(stack, capped)[1].roofing.empty());  // layer 2 covers it
+    EXPECT_EQ(areaUm2(skins(stack, capped)[3].roofing), 400e6);
 }
 
 }  // namespace
