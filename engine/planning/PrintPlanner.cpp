@@ -57,17 +57,26 @@ struct LayerContext {
     const CombBoundary* comb = nullptr;
 };
 
-/// The order of a mesh's groups on a layer: walls (inner first, or outer first with
-/// outer_inset_first), skin, infill — infill first with infill_before_walls.
-std::vector<const std::vector<ExtrusionPath>*> groupOrder(const MeshLayerGroups& g, const Settings& s) {
-    const bool outer_first = s.has("outer_inset_first") && s.boolean("outer_inset_first");
-    std::vector<const std::vector<ExtrusionPath>*> order;
-    if (outer_first)
-        order = {&g.outer_walls, &g.inner_walls, &g.skin, &g.infill};
-    else
-        order = {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill};
+/// The order of a mesh's groups on a layer: walls (inner first, or outer first — outerWallFirst),
+/// skin, infill — infill first with infill_before_walls. Walls grouped by outline (sequences,
+/// optimize_wall_printing_order) are one group, so that each outline's loops print together.
+std::vector<std::vector<ExtrusionPath>> groupOrder(const MeshLayerGroups& g, const Settings& s, int layer) {
+    const bool outer_first = outerWallFirst(s, layer);
+    const std::vector<ExtrusionPath>& first = outer_first ? g.outer_walls : g.inner_walls;
+    const std::vector<ExtrusionPath>& second = outer_first ? g.inner_walls : g.outer_walls;
+    const auto grouped = [](const ExtrusionPath& p) { return p.sequence != 0; };
+    std::vector<std::vector<ExtrusionPath>> order;
+    if (std::any_of(first.begin(), first.end(), grouped) ||
+        std::any_of(second.begin(), second.end(), grouped)) {
+        order.push_back(first);
+        order.back().insert(order.back().end(), second.begin(), second.end());
+    } else {
+        order = {first, second};
+    }
+    order.push_back(g.skin);
+    order.push_back(g.infill);
     if (s.has("infill_before_walls") && s.boolean("infill_before_walls"))
-        std::rotate(order.begin(), order.begin() + 3, order.end());
+        std::rotate(order.begin(), order.end() - 1, order.end());
     return order;
 }
 
@@ -77,8 +86,8 @@ void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext
     const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb);
     std::optional<Feature> feature;
     bool marked = false;
-    for (const std::vector<ExtrusionPath>* group : groupOrder(groups, *mesh.settings)) {
-        std::vector<ExtrusionPath> selected = ofExtruder(*group, ctx.extruder);
+    for (const std::vector<ExtrusionPath>& group : groupOrder(groups, *mesh.settings, ctx.layer)) {
+        std::vector<ExtrusionPath> selected = ofExtruder(group, ctx.extruder);
         if (selected.empty())
             continue;
         if (!marked)

@@ -58,6 +58,10 @@ SkinReferences skinReferences(const Settings& s) {
             countOf(s, "roofing_layer_count") > 0 ? std::min(2, walls) : -1};
 }
 
+bool flag(const Settings& s, std::string_view key) {
+    return s.has(key) && s.boolean(key);
+}
+
 WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
     WallParams p;
     p.top_reference = refs.top.wall;
@@ -75,6 +79,8 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.inner_flow = styles.wall_x.flow;
     p.outer_extruder = styles.wall_0.extruder;
     p.inner_extruder = styles.wall_x.extruder;
+    p.group_by_outline = flag(s, "optimize_wall_printing_order");
+    p.outer_first = outerWallFirst(s, layer);
     return p;
 }
 
@@ -92,10 +98,6 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     p.roofing_layers = countOf(s, "roofing_layer_count");
     p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
     return p;
-}
-
-bool flag(const Settings& s, std::string_view key) {
-    return s.has(key) && s.boolean(key);
 }
 
 /// The lines half a wall line wide that fill the gaps of concentric skin (fill_perimeter_gaps), in
@@ -161,6 +163,11 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
 }
 
 }  // namespace
+
+bool outerWallFirst(const Settings& s, int layer) {
+    return flag(s, "outer_inset_first") ||
+           (layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim");
+}
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
                                                    const Settings& settings, int threads) {

@@ -2,7 +2,8 @@
 // Toolpaths of one mesh on every layer: walls (toolpaths/Walls.h, seams by toolpaths/Seam.h),
 // top/bottom skin and roofing (toolpaths/Skin.h) and sparse infill (toolpaths/InfillPatterns.h),
 // from the mesh's outlines and its resolved settings (Cura's keys and meanings):
-//   walls   — wall_line_count, wall_line_width_0/_x, wall_0_inset, z_seam_*;
+//   walls   — wall_line_count, wall_line_width_0/_x, wall_0_inset, z_seam_*; with
+//             optimize_wall_printing_order each outline's loops are one sequence (toolpaths/Walls.h);
 //   skin    — top_layers, bottom_layers, initial_bottom_layers, skin removal / expansion widths;
 //             per skin part skin_outline_count loops of skin_line_width, inside them the roofing
 //             (roofing_layer_count: roofing_pattern at roofing_angles[layer % n], default 45°,
@@ -30,6 +31,10 @@ struct MeshLayerGroups {
     std::vector<ExtrusionPath> skin;
     std::vector<ExtrusionPath> infill;
 };
+
+/// Whether the outer walls go before the inner ones on `layer`: outer_inset_first, and (as
+/// CuraEngine 4.13) always on layer 0 with a brim.
+bool outerWallFirst(const Settings& s, int layer);
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
                                                    const Settings& settings, int threads);

@@ -32,11 +32,18 @@ struct WallParams {
     int bottom_reference = 2;
     /// The region roofing compares with (CuraEngine's min(2, wall count)); −1 = not wanted.
     int roofing_reference = -1;
+    /// optimize_wall_printing_order: the loops of each outline (part outline or hole) form one
+    /// sequence (ExtrusionPath::sequence, toolpaths/WallOrder.h), its inner loops listed from the
+    /// innermost out — or from the outermost in with `outer_first` (outer_inset_first).
+    bool group_by_outline = false;
+    bool outer_first = false;
 };
 
 struct WallResult {
-    std::vector<ExtrusionPath> walls;  ///< outer walls first, then the inner ones, wall by wall
-    Paths inner_area;                  ///< the area inside the innermost wall (its inner edge)
+    /// Outer walls first, then the inner ones, wall by wall (with group_by_outline the inner ones
+    /// from the innermost wall out, unless outer_first).
+    std::vector<ExtrusionPath> walls;
+    Paths inner_area;  ///< the area inside the innermost wall (its inner edge)
     /// The reference regions asked for in WallParams; a part with fewer walls than the reference
     /// uses its innermost wall's region (as CuraEngine 4.13 takes insets[min(k, count) − 1]).
     Paths top_reference, bottom_reference;
