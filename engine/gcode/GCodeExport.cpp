@@ -30,6 +30,7 @@ void GCodeExport::selectExtruder(const ToolChange& change) {
     if (change.extruder == extruder_)
         return;
     retract();
+    pending_prime_mm3_ = 0;  // as CuraEngine: an extruder switch primes nothing extra
     line("T" + std::to_string(change.extruder));
     noteFilamentOfActiveExtruder();
     extruder_ = change.extruder;
@@ -116,6 +117,7 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
 void GCodeExport::retract() {
     if (retracted_ || params_.retraction_amount_mm <= 0)
         return;
+    pending_prime_mm3_ += params_.extra_prime_mm3;
     if (params_.firmware_retract) {
         line("G10");  // the firmware retracts; the E axis does not move
     } else {
@@ -147,6 +149,15 @@ void GCodeExport::unretract() {
                  TimeFeature::Retraction);
     }
     retracted_ = false;
+    if (pending_prime_mm3_ > 0) {
+        std::string before;
+        const std::string words = dialect_->extrude(volumeOnAxis(pending_prime_mm3_), mix_, before);
+        out_ += before;
+        line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + words);
+        timeMove(position_, z_, filamentMm(pending_prime_mm3_), params_.prime_speed_mm_s,
+                 TimeFeature::Retraction);
+    }
+    pending_prime_mm3_ = 0;
 }
 
 void GCodeExport::resetExtrusionAxis() {

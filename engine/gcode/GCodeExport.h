@@ -26,6 +26,9 @@ struct ExportParams {
     double prime_speed_mm_s = 25;
     coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
     bool firmware_retract = false;   ///< G10/G11 instead of E moves (machine_firmware_retract)
+    /// retraction_extra_prime_amount: material pushed out on top of the prime after each retraction
+    /// (not after an extruder switch), as its own E move at the prime speed; mm³.
+    double extra_prime_mm3 = 0;
     Kinematics kinematics;
     MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
     MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
@@ -48,7 +51,7 @@ class GCodeExport {
     void moveZ(coord_um z, double speed_mm_s);
     void extrude(const Point2& to, double volume_mm3, double speed_mm_s);
     void retract();
-    void unretract();
+    void unretract();           ///< primes what was retracted, then any extra prime (ExportParams)
     void resetExtrusionAxis();  ///< G92 E0 in absolute mode
     void setFan(double ratio);  ///< M106 S0..255 / M107
     /// Acceleration (mm/s²) and XY jerk (mm/s) of the following moves, 0 = unchanged: writes
@@ -105,6 +108,7 @@ class GCodeExport {
     std::vector<double> filament_by_extruder_;
     double total_at_last_change_ = 0;
     bool retracted_ = false;
+    double pending_prime_mm3_ = 0;  ///< extra prime owed by the retractions since the last prime
     double fan_ratio_ = -1;
     MotionCommands motion_;
 };

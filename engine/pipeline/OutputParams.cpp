@@ -1,5 +1,6 @@
 #include "pipeline/OutputParams.h"
 
+#include <algorithm>
 #include <numbers>
 
 #include "mixing/MixingSettings.h"
@@ -37,6 +38,8 @@ ExportParams exportParams(const Scene& scene) {
     p.prime_speed_mm_s = e0.velocityMmPerS("retraction_prime_speed");
     p.retraction_hop_um = e0.boolean("retraction_hop_enabled") ? e0.lengthMicrons("retraction_hop") : 0;
     p.firmware_retract = e0.has("machine_firmware_retract") && e0.boolean("machine_firmware_retract");
+    if (e0.has("retraction_extra_prime_amount"))
+        p.extra_prime_mm3 = std::max(0.0, e0.real("retraction_extra_prime_amount"));
     p.kinematics = kinematicsOf(global);
     p.mixing = parseMixingOutput(global);
     p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
