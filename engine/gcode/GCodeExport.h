@@ -51,9 +51,10 @@ class GCodeExport {
     void moveZ(coord_um z, double speed_mm_s);
     void extrude(const Point2& to, double volume_mm3, double speed_mm_s);
     void retract();
-    void unretract();           ///< primes what was retracted, then any extra prime (ExportParams)
-    void resetExtrusionAxis();  ///< G92 E0 in absolute mode
-    void setFan(double ratio);  ///< M106 S0..255 / M107
+    void unretract();            ///< primes what was retracted, then any extra prime (ExportParams)
+    void resetExtrusionAxis();   ///< G92 E0 in absolute mode
+    void dwell(double seconds);  ///< G4 P<milliseconds>, counted in the time estimate
+    void setFan(double ratio);   ///< M106 S0..255 / M107
     /// Acceleration (mm/s²) and XY jerk (mm/s) of the following moves, 0 = unchanged: writes
     /// M204/M205 (gcode/MotionCommands.h) when they change and uses them for the time estimate.
     void setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel);

@@ -66,6 +66,15 @@ TimeFeature timeFeature(Feature feature) {
     return TimeFeature::None;
 }
 
+/// cool_lift_head (planning/Cooling.h), written as CuraEngine 4.13 writes it.
+void liftHead(const PlanStep& step, GCodeExport& gcode) {
+    gcode.comment("Small layer, adding delay");
+    gcode.retract();
+    gcode.moveZ(gcode.z() + 3'000, step.speed_mm_s);
+    gcode.travel(step.to, step.speed_mm_s);
+    gcode.dwell(step.dwell_seconds);
+}
+
 void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterParams& params,
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
@@ -102,6 +111,9 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             break;
         case PlanStep::Kind::SetBedTemperature:
             gcode.line("M140 S" + formatDecimal(step.temperature_c, 1));
+            break;
+        case PlanStep::Kind::LiftHead:
+            liftHead(step, gcode);
             break;
     }
 }

@@ -20,6 +20,9 @@ struct PlanStep {
         SetExtruder,           ///< tool change to `extruder`
         SetNozzleTemperature,  ///< M104 `temperature_c` for the active extruder, without waiting
         SetBedTemperature,     ///< M140 `temperature_c`, without waiting
+        /// cool_lift_head on a layer too short even slowed down: retract, lift the head 3 mm, travel
+        /// to `to` at `speed_mm_s` and wait `dwell_seconds` (G4)
+        LiftHead,
     };
     Kind kind = Kind::Travel;
     Point2 to{};
@@ -31,6 +34,7 @@ struct PlanStep {
     double fan_ratio = 0;
     int extruder = 0;
     double temperature_c = 0;
+    double dwell_seconds = 0;       ///< LiftHead
     double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
     int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none

@@ -149,6 +149,13 @@ TEST(GCodeExport, ExtraPrimeAfterEachRetractionButNotAfterASwitch) {
     EXPECT_EQ(g.text().substr(before), "G1 E6.5\nG1 F1800 X0 Y0 E6.91575\n");  // no extra prime line
 }
 
+TEST(GCodeExport, DwellInMillisecondsCountsInTheTime) {
+    GCodeExport g(marlin175());
+    g.dwell(1.25);
+    EXPECT_EQ(g.text(), "G4 P1250\n");
+    EXPECT_NEAR(g.elapsedSeconds(), 1.25, 1e-12);
+}
+
 TEST(GCodeExport, NoRetractionWhenAmountIsZero) {
     ExportParams p = marlin175();
     p.retraction_amount_mm = 0;
