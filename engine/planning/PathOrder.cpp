@@ -33,26 +33,19 @@ std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& bes
     return to_front <= to_back ? 0 : path.points.size() - 1;
 }
 
-/// A combed travel (through the points of the comb route, no retraction) where the comb boundary
-/// allows one, else a straight travel that retracts when longer than retraction_min_travel.
+/// The travel to `to` (planning/TravelRoute.h): retracting first when it must.
 void appendTravel(const Point2& from, const Point2& to, const TravelParams& params,
                   std::vector<PlanStep>& steps) {
+    const TravelRoute route = planTravel(from, to, params);
     PlanStep travel;
     travel.kind = PlanStep::Kind::Travel;
     travel.speed_mm_s = params.travel_speed_mm_s;
-    const bool long_travel = distanceUm(from, to) > static_cast<double>(params.retraction_min_travel_um);
-    if (long_travel && params.comb) {
-        if (std::optional<Path> route = params.comb->route(from, to)) {
-            for (const Point2& point : *route) {
-                travel.to = point;
-                steps.push_back(travel);
-            }
-            return;
-        }
+    travel.retract = route.retract;
+    for (const Point2& point : route.points) {
+        travel.to = point;
+        steps.push_back(travel);
+        travel.retract = false;
     }
-    travel.to = to;
-    travel.retract = params.retraction_enable && long_travel;
-    steps.push_back(travel);
 }
 
 /// A travel (no retraction) from `head` along `points` for `distance_um`, as a nozzle wipe.

@@ -1,6 +1,7 @@
 #include "planning/PrintPlanner.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <set>
 
@@ -8,6 +9,7 @@
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
 #include "planning/Temperatures.h"
+#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 
@@ -27,10 +29,30 @@ std::vector<ExtrusionPath> ofExtruder(const std::vector<ExtrusionPath>& paths, i
     return selected;
 }
 
-TravelParams travelParams(const Settings& s, int layer, coord_um thickness, const CombBoundary* comb) {
+/// CuraEngine's reach for moving travel ends into the comb area: twice its comb offset, which is
+/// twice the innermost wall's width (× initial_layer_line_width_factor on layer 0).
+coord_um combMoveInside(const Settings& s, int layer) {
+    if (!s.has("wall_line_width_0"))
+        return 0;
+    const bool several = s.has("wall_line_count") && s.integer("wall_line_count") > 1;
+    double width = double(s.lengthMicrons(several ? "wall_line_width_x" : "wall_line_width_0"));
+    if (layer == 0 && s.has("initial_layer_line_width_factor"))
+        width *= s.ratio("initial_layer_line_width_factor");
+    return static_cast<coord_um>(std::llround(4 * width));
+}
+
+TravelParams travelParams(const Settings& s, int layer, coord_um thickness, const CombBoundary* comb,
+                          const CombBoundary* free) {
     TravelParams p;
     if (!s.has("retraction_combing") || s.text("retraction_combing") != "off")
         p.comb = comb;
+    if (!s.has("travel_avoid_other_parts") || s.boolean("travel_avoid_other_parts"))
+        p.free = free;
+    p.limit_support_retractions =
+        s.has("limit_support_retractions") && s.boolean("limit_support_retractions");
+    if (s.has("retraction_combing_max_distance"))
+        p.combing_max_distance_um = s.lengthMicrons("retraction_combing_max_distance");
+    p.comb_move_inside_um = combMoveInside(s, layer);
     p.travel_speed_mm_s = s.velocityMmPerS(layer == 0 ? "speed_travel_layer_0" : "speed_travel");
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
@@ -55,6 +77,7 @@ struct LayerContext {
     int extruder = 0;
     const Settings* extruder_settings = nullptr;
     const CombBoundary* comb = nullptr;
+    const CombBoundary* free = nullptr;  ///< outside the parts grown by travel_avoid_distance
 };
 
 /// The order of a mesh's groups on a layer: walls (inner first, or outer first — outerWallFirst),
@@ -83,7 +106,7 @@ std::vector<std::vector<ExtrusionPath>> groupOrder(const MeshLayerGroups& g, con
 void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
                    PlannedLayer& planned) {
     const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(ctx.layer)];
-    const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb);
+    const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb, ctx.free);
     std::optional<Feature> feature;
     bool marked = false;
     for (const std::vector<ExtrusionPath>& group : groupOrder(groups, *mesh.settings, ctx.layer)) {
@@ -105,8 +128,8 @@ void planNonMesh(const std::vector<ExtrusionPath>& paths, const LayerContext& ct
     addMeshMarker(-1, planned.steps);
     std::optional<Feature> feature;
     appendOrderedPaths(std::move(selected),
-                       travelParams(*ctx.extruder_settings, ctx.layer, ctx.thickness, nullptr), head, feature,
-                       planned.steps);
+                       travelParams(*ctx.extruder_settings, ctx.layer, ctx.thickness, nullptr, ctx.free),
+                       head, feature, planned.steps);
 }
 
 std::size_t trainOf(int extruder, const std::vector<Settings>& extruders) {
@@ -149,7 +172,7 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
     return order;
 }
 
-Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
+Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer) {
     Paths area;
     const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
     for (const MeshToolpaths& mesh : toolpaths.meshes) {
@@ -159,6 +182,34 @@ Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
         }
     }
     return area;
+}
+
+Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
+    Paths area;
+    const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        const Paths* part = nullptr;
+        if (layer < mesh.layers.size() && mesh.layers[layer].comb_area)
+            part = &*mesh.layers[layer].comb_area;
+        else if (mesh.sliced && sliced_layer < mesh.sliced->size())
+            part = &(*mesh.sliced)[sliced_layer].outlines;
+        if (part)
+            area.insert(area.end(), part->begin(), part->end());
+    }
+    return area;
+}
+
+Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um) {
+    if (outlines.empty())
+        return {};
+    Paths free = offsetPolygons(unionOf(outlines), avoid_distance_um);
+    const ClipperLib::IntRect box = boundsOf(free);
+    constexpr coord_um kMarginUm = 5'000;
+    free.insert(free.begin(), Path{{box.left - kMarginUm, box.top - kMarginUm},
+                                   {box.right + kMarginUm, box.top - kMarginUm},
+                                   {box.right + kMarginUm, box.bottom + kMarginUm},
+                                   {box.left - kMarginUm, box.bottom + kMarginUm}});
+    return free;
 }
 
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
@@ -174,9 +225,12 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         mesh_settings.push_back(mesh.settings);
     const MotionSources motion = motionSources(global, std::move(mesh_settings), extruders);
+    const coord_um avoid_distance_um =
+        global.has("travel_avoid_distance") ? global.lengthMicrons("travel_avoid_distance") : 0;
     for (std::size_t i = 0; i < heights.size(); ++i) {
         const Point2 layer_start = state.head;
         const CombBoundary comb(combArea(toolpaths, i));
+        const CombBoundary free(freeSpace(partOutlines(toolpaths, i), avoid_distance_um));
         const int layer_extruder = state.extruder;
         PlannedLayer planned;
         planned.index = static_cast<int>(i);
@@ -195,8 +249,9 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
             }
             const std::size_t train =
                 std::min<std::size_t>(static_cast<std::size_t>(extruder), extruders.size() - 1);
-            const LayerContext ctx{planned.index, heights[i].print_z - heights[i].bottom_z, extruder,
-                                   &extruders[train], &comb};
+            const LayerContext ctx{planned.index, heights[i].print_z - heights[i].bottom_z,
+                                   extruder,      &extruders[train],
+                                   &comb,         free.empty() ? nullptr : &free};
             if (i < toolpaths.prime_tower.size())
                 planNonMesh(toolpaths.prime_tower[i], ctx, state.head, planned);
             if (i < toolpaths.ooze_shield.size())

@@ -1,6 +1,7 @@
 #include "toolpaths/MeshToolpaths.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "common/ParallelFor.h"
@@ -49,13 +50,17 @@ struct SkinReferences {
     int roofing_wall = -1;  ///< min(2, wall_line_count) with roofing, else −1 (none)
 };
 
+bool outerSurfacesWanted(const Settings& s) {
+    return s.has("retraction_combing") && s.text("retraction_combing") == "no_outer_surfaces";
+}
+
 SkinReferences skinReferences(const Settings& s) {
     const int walls = countOf(s, "wall_line_count");
     const coord_um w0 = s.lengthMicrons("wall_line_width_0"), wx = s.lengthMicrons("wall_line_width_x");
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
     return {skinReference(length("top_skin_preshrink"), walls, w0, wx),
             skinReference(length("bottom_skin_preshrink"), walls, w0, wx),
-            countOf(s, "roofing_layer_count") > 0 ? std::min(2, walls) : -1};
+            countOf(s, "roofing_layer_count") > 0 || outerSurfacesWanted(s) ? std::min(2, walls) : -1};
 }
 
 bool flag(const Settings& s, std::string_view key) {
@@ -97,6 +102,7 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     p.min_width_for_expansion_um = length("min_skin_width_for_expansion");
     p.roofing_layers = countOf(s, "roofing_layer_count");
     p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
+    p.outer_surfaces = outerSurfacesWanted(s);
     return p;
 }
 
@@ -162,6 +168,18 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     return xy == 0 && hole == 0 ? outlines : offsetOutlines(outlines, xy, hole);
 }
 
+/// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "all" and "off").
+std::optional<Paths> combAreaFor(const Paths& outlines, const SkinAreas& areas, const Settings& s) {
+    const std::string mode = s.has("retraction_combing") ? s.text("retraction_combing") : "all";
+    if (mode == "noskin")
+        return differenceOf(outlines, areas.skin);
+    if (mode == "no_outer_surfaces")
+        return differenceOf(outlines, areas.outer_surfaces);
+    if (mode == "infill")
+        return areas.infill;
+    return std::nullopt;
+}
+
 }  // namespace
 
 bool outerWallFirst(const Settings& s, int layer) {
@@ -203,6 +221,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         result[i].skin =
             generateSkinPaths(areas[i].skin, areas[i].roofing, skinPathParams(settings, layer, z, styles));
         result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
+        result[i].comb_area = combAreaFor(layers[i].outlines, areas[i], settings);
     });
     return result;
 }

@@ -16,6 +16,7 @@
 //             lines and zigzag, 45° otherwise); none when infill_line_distance is 0.
 // Widths, speeds, flows and extruders per feature and layer: toolpaths/FeatureStyle.h.
 // Layers are processed in parallel (common/ParallelFor.h); the result does not depend on `threads`.
+#include <optional>
 #include <vector>
 
 #include "settings/Settings.h"
@@ -30,6 +31,10 @@ struct MeshLayerGroups {
     std::vector<ExtrusionPath> outer_walls;
     std::vector<ExtrusionPath> skin;
     std::vector<ExtrusionPath> infill;
+    /// Where travel may comb on this layer for the mesh's retraction_combing mode; none = its
+    /// sliced outlines ("all", "off"). noskin: the outlines less the skin; no_outer_surfaces: less
+    /// the skin with air directly above or below; infill: the infill area.
+    std::optional<Paths> comb_area;
 };
 
 /// Whether the outer walls go before the inner ones on `layer`: outer_inset_first, and (as

@@ -34,6 +34,18 @@ Paths prefixIntersection(const std::vector<Paths>& present, int i) {
     return result;
 }
 
+/// The skin of layer i with air directly above or below it (SkinAreas::outer_surfaces).
+Paths outerSurfaces(const Paths& skin, const std::vector<Paths>& reference, std::size_t i) {
+    if (skin.empty())
+        return {};
+    Paths above = i + 1 < reference.size() ? reference[i + 1] : Paths{};
+    if (i > 0)
+        above = unionOf(above, differenceOf(reference[i], reference[i - 1]));
+    const Paths top_most = differenceOf(skin, above);
+    const Paths bottom_most = i > 0 ? differenceOf(skin, reference[i - 1]) : skin;
+    return unionOf(top_most, bottom_most);
+}
+
 }  // namespace
 
 SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_width, coord_um inner_width) {
@@ -93,6 +105,8 @@ std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                 covered = unionOf(covered, differenceOf(roof_reference[index], roof_reference[index - 1]));
             out.roofing = differenceOf(out.skin, covered);
         }
+        if (p.outer_surfaces)
+            out.outer_surfaces = outerSurfaces(out.skin, roof_reference, index);
     });
     return result;
 }

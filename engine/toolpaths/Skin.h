@@ -45,6 +45,8 @@ struct SkinParams {
     coord_um min_width_for_expansion_um = 0;
     int roofing_layers = 0;
     double min_infill_area_um2 = 0;
+    /// Also find the outer surfaces (SkinAreas::outer_surfaces), against the roofing reference.
+    bool outer_surfaces = false;
 };
 
 struct SkinAreas {
@@ -53,6 +55,10 @@ struct SkinAreas {
     /// unless roofing_layers > 0); the rest of the skin is printed as skin.
     Paths roofing;
     Paths infill;  ///< sparse infill area
+    /// With SkinParams::outer_surfaces, the skin with air directly above (as roofing with one
+    /// layer) or directly below (nothing of the roofing reference on the layer below; all of it on
+    /// layer 0): CuraEngine's top- and bottom-most surfaces.
+    Paths outer_surfaces;
 };
 
 /// The regions each layer's skin is compared with (see above), index = layer.

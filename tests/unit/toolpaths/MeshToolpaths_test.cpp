@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
+#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 namespace {
@@ -100,6 +101,28 @@ TEST(MeshToolpaths, SameResultOnOneOrTwoThreads) {
 TEST(MeshToolpaths, NoInfillAtZeroDensity) {
     for (const MeshLayerGroups& g : toolpaths({{"infill_sparse_density", "0"}}))
         EXPECT_TRUE(g.infill.empty());
+}
+
+TEST(MeshToolpaths, CombAreaFollowsTheCombingMode) {
+    // Layer 29 is top skin all over, layer 15 is infill inside the walls.
+    const auto area = [](const std::string& mode, int layer) {
+        return toolpaths({{"retraction_combing", mode}})[static_cast<std::size_t>(layer)].comb_area;
+    };
+    EXPECT_FALSE(area("all", 15).has_value());  // the sliced outlines
+    EXPECT_FALSE(area("off", 15).has_value());
+    const double outline = 400e6;
+    // noskin: the outline less the skin — all of it on a top layer but the walls' 0.8 mm ring.
+    const double ring = outline - 18'400.0 * 18'400.0;
+    ASSERT_TRUE(area("noskin", 29).has_value());
+    EXPECT_NEAR(areaUm2(*area("noskin", 29)), ring, 1e6);
+    EXPECT_DOUBLE_EQ(areaUm2(*area("noskin", 15)), outline);
+    // infill: the infill area only (none on a top layer).
+    EXPECT_TRUE(area("infill", 29)->empty());
+    EXPECT_GT(areaUm2(*area("infill", 15)), 0.8 * outline);
+    EXPECT_LT(areaUm2(*area("infill", 15)), outline);
+    // no_outer_surfaces: the skin with air above (layer 29) is out, the skin under it (27) stays in.
+    EXPECT_NEAR(areaUm2(*area("no_outer_surfaces", 29)), ring, 1e6);
+    EXPECT_DOUBLE_EQ(areaUm2(*area("no_outer_surfaces", 27)), outline);
 }
 
 }  // namespace

@@ -131,5 +131,18 @@ TEST(Skin, RoofingComparesWithItsOwnReferenceAndAtMostTopLayers) {
     EXPECT_EQ(areaUm2(skins(stack, capped)[3].roofing), 400e6);
 }
 
+TEST(Skin, OuterSurfacesHaveAirDirectlyAboveOrBelow) {
+    // Four layers: a 20 mm square, then a 10 mm one on layers 2 and 3; all skin (2 top, 2 bottom).
+    const std::vector<Paths> areas{sq(0, 20'000), sq(0, 20'000), sq(0, 10'000), sq(0, 10'000)};
+    SkinParams p = layersOnly(2, 2);
+    p.outer_surfaces = true;
+    const std::vector<SkinAreas> s = skins(areas, p);
+    EXPECT_EQ(areaUm2(s[0].outer_surfaces), 400e6);          // layer 0: air below
+    EXPECT_EQ(areaUm2(s[1].outer_surfaces), 400e6 - 100e6);  // the L with nothing above
+    EXPECT_EQ(areaUm2(s[2].outer_surfaces), 0.0);            // covered, and standing on layer 1
+    EXPECT_EQ(areaUm2(s[3].outer_surfaces), 100e6);          // the top
+    EXPECT_TRUE(skins(areas, layersOnly(2, 2))[3].outer_surfaces.empty());  // not asked for
+}
+
 }  // namespace
 }  // namespace mixengine
