@@ -36,6 +36,8 @@ FeatureStyle levelStyle(const WallParams& p, std::size_t level) {
 std::vector<ExtrusionPath> wallPaths(const std::vector<Paths>& levels, const std::vector<coord_um>& depths,
                                      const WallParams& p) {
     std::vector<ExtrusionPath> out;
+    if (levels.empty())
+        return out;
     if (!p.group_by_outline) {
         for (std::size_t k = 0; k < levels.size(); ++k)
             appendStyledLoops(levels[k], k == 0 ? Feature::WallOuter : Feature::WallInner, levelStyle(p, k),

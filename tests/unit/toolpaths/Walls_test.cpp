@@ -129,6 +129,8 @@ TEST(Walls, GroupedByOutlineEachHoleAndOutlineIsOneSequence) {
     p.group_by_outline = false;
     for (const ExtrusionPath& w : generateWalls({square(0, 0, 40'000), left, right}, p).walls)
         EXPECT_EQ(w.sequence, 0U);
+    p.group_by_outline = true;  // too thin for any wall
+    EXPECT_TRUE(generateWalls({rect(0, 0, 10'000, 300)}, p).walls.empty());
 }
 
 TEST(Walls, ThinPartsGetFewerWallsNeverOverlapping) {
