@@ -180,6 +180,30 @@ std::optional<Paths> combAreaFor(const Paths& outlines, const SkinAreas& areas, 
     return std::nullopt;
 }
 
+/// magic_mesh_surface_mode "surface" (as CuraEngine 4.13): every loop of the outline, and every open
+/// piece of an unclosed mesh, printed once along itself as outer wall; no other walls, skin or infill.
+std::vector<MeshLayerGroups> surfaceToolpaths(const std::vector<SlicedLayer>& layers,
+                                              const Settings& settings, const SeamParams& seam, int threads) {
+    std::vector<MeshLayerGroups> result(layers.size());
+    parallelFor(layers.size(), threads, [&](std::size_t i) {
+        const int layer = static_cast<int>(i);
+        const FeatureStyle style = meshStyles(settings, layer).wall_0;
+        std::vector<ExtrusionPath>& walls = result[i].outer_walls;
+        appendStyledLoops(adjustedOutlines(layers[i].outlines, settings, layer), Feature::WallOuter, style,
+                          walls);
+        placeSeams(walls, seam, layer);
+        for (const Path& piece : layers[i].open_polylines) {
+            if (piece.size() >= 2)
+                walls.push_back(styledPath(piece, false, Feature::WallOuter, style));
+        }
+    });
+    return result;
+}
+
+bool surfaceOnly(const Settings& s) {
+    return s.has("magic_mesh_surface_mode") && s.text("magic_mesh_surface_mode") == "surface";
+}
+
 }  // namespace
 
 bool outerWallFirst(const Settings& s, int layer) {
@@ -195,6 +219,8 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
     const SkinReferences refs = skinReferences(settings);
     std::vector<Paths> inner_areas(layers.size());
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
+    if (surfaceOnly(settings))
+        return surfaceToolpaths(layers, settings, seam, threads);
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         WallResult walls = generateWalls(adjustedOutlines(layers[i].outlines, settings, layer),

@@ -14,6 +14,8 @@
 //   infill  — infill_pattern at infill_line_distance inside the innermost wall, grown by
 //             infill_overlap_mm, at infill_angles[layer % n] (default 45° and 135° alternating for
 //             lines and zigzag, 45° otherwise); none when infill_line_distance is 0.
+// With magic_mesh_surface_mode "surface" the outlines (and open pieces) are printed once along
+// themselves as outer wall, and nothing else.
 // Widths, speeds, flows and extruders per feature and layer: toolpaths/FeatureStyle.h.
 // Layers are processed in parallel (common/ParallelFor.h); the result does not depend on `threads`.
 #include <optional>

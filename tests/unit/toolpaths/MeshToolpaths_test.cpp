@@ -125,5 +125,16 @@ TEST(MeshToolpaths, CombAreaFollowsTheCombingMode) {
     EXPECT_DOUBLE_EQ(areaUm2(*area("no_outer_surfaces", 27)), outline);
 }
 
+TEST(MeshToolpaths, SurfaceModePrintsTheOutlineOnceAsOuterWall) {
+    const std::vector<MeshLayerGroups> layers = toolpaths({{"magic_mesh_surface_mode", "surface"}});
+    ASSERT_EQ(layers.size(), 30U);
+    for (const MeshLayerGroups& g : layers) {
+        ASSERT_EQ(g.outer_walls.size(), 1U);
+        EXPECT_TRUE(g.inner_walls.empty() && g.skin.empty() && g.infill.empty());
+        EXPECT_DOUBLE_EQ(std::abs(ClipperLib::Area(g.outer_walls[0].points)), 400e6);  // along the outline
+        EXPECT_TRUE(g.outer_walls[0].fixed_start);                                     // seam placed
+    }
+}
+
 }  // namespace
 }  // namespace mixengine
