@@ -67,6 +67,12 @@ bool flag(const Settings& s, std::string_view key) {
     return s.has(key) && s.boolean(key);
 }
 
+/// fill_perimeter_gaps (not in spiralize mode).
+bool fillsPerimeterGaps(const Settings& s) {
+    return !(s.has("fill_perimeter_gaps") && s.text("fill_perimeter_gaps") == "nowhere") &&
+           !flag(s, "magic_spiralize");
+}
+
 WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
     WallParams p;
     p.top_reference = refs.top.wall;
@@ -85,6 +91,8 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.outer_extruder = styles.wall_0.extruder;
     p.inner_extruder = styles.wall_x.extruder;
     p.group_by_outline = flag(s, "optimize_wall_printing_order");
+    p.perimeter_gaps = fillsPerimeterGaps(s);
+    p.filter_tiny_gaps = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
     p.outer_first = outerWallFirst(s, layer);
     return p;
 }
@@ -103,14 +111,14 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     p.roofing_layers = countOf(s, "roofing_layer_count");
     p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
     p.outer_surfaces = outerSurfacesWanted(s);
+    p.infill_opening_um = s.has("infill_line_width") ? s.lengthMicrons("infill_line_width") : 0;
     return p;
 }
 
 /// The lines half a wall line wide that fill the gaps of concentric skin (fill_perimeter_gaps), in
 /// CuraEngine's perimeter-gap style: skin speed, inner-wall flow.
 std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
-    if ((s.has("fill_perimeter_gaps") && s.text("fill_perimeter_gaps") == "nowhere") ||
-        flag(s, "magic_spiralize"))
+    if (!fillsPerimeterGaps(s))
         return std::nullopt;
     FeatureStyle style = featureStyle(
         s, {"wall_line_width_0", "speed_topbottom", "wall_x_material_flow", "top_bottom_extruder_nr"}, layer);
@@ -168,6 +176,27 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     return xy == 0 && hole == 0 ? outlines : offsetOutlines(outlines, xy, hole);
 }
 
+/// As CuraEngine 4.13: the gaps between the walls, and between the innermost wall and the skin and
+/// infill — the latter unless there is no infill, its overlap is negative, or concentric infill
+/// would not line up with the walls (alternate_extra_perimeter, a wider first layer).
+Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const SkinAreas& areas,
+                    const Settings& s, int layer) {
+    const bool concentric = s.has("infill_pattern") && s.text("infill_pattern") == "concentric";
+    const bool wider_first = layer == 0 && s.has("initial_layer_line_width_factor") &&
+                             s.ratio("initial_layer_line_width_factor") > 1.0;
+    const bool inner_gaps = s.lengthMicrons("infill_line_distance") > 0 &&
+                            (!s.has("infill_overlap_mm") || s.lengthMicrons("infill_overlap_mm") >= 0) &&
+                            !(concentric && (flag(s, "alternate_extra_perimeter") || wider_first));
+    if (!inner_gaps || inner_area.empty())
+        return between_walls;
+    Paths gaps = differenceOf(offsetMiter(inner_area, -15), unionOf(areas.skin, areas.infill));
+    if (!s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps")) {
+        const double width = double(s.lengthMicrons("infill_line_width"));
+        gaps = removeSmallIslands(gaps, 2 * width * width);
+    }
+    return unionOf(between_walls, gaps);
+}
+
 /// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "all" and "off").
 std::optional<Paths> combAreaFor(const Paths& outlines, const SkinAreas& areas, const Settings& s) {
     const std::string mode = s.has("retraction_combing") ? s.text("retraction_combing") : "all";
@@ -217,7 +246,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
     std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size()),
         roofing_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
-    std::vector<Paths> inner_areas(layers.size());
+    std::vector<Paths> inner_areas(layers.size()), wall_gaps(layers.size());
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
     if (surfaceOnly(settings))
         return surfaceToolpaths(layers, settings, seam, threads);
@@ -234,6 +263,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         top_reference[i] = std::move(walls.top_reference);
         bottom_reference[i] = std::move(walls.bottom_reference);
         roofing_reference[i] = std::move(walls.roofing_reference);
+        wall_gaps[i] = std::move(walls.perimeter_gaps);
     });
 
     const std::vector<SkinAreas> areas = computeSkinAreas(
@@ -244,8 +274,13 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         const int layer = static_cast<int>(i);
         const coord_um z = layers[i].print_z;
         const MeshStyles styles = meshStyles(settings, layer);
-        result[i].skin =
-            generateSkinPaths(areas[i].skin, areas[i].roofing, skinPathParams(settings, layer, z, styles));
+        const SkinPathParams skin_params = skinPathParams(settings, layer, z, styles);
+        result[i].skin = generateSkinPaths(areas[i].skin, areas[i].roofing, skin_params);
+        if (fillsPerimeterGaps(settings)) {
+            for (ExtrusionPath& line : perimeterGapLines(
+                     perimeterGaps(wall_gaps[i], inner_areas[i], areas[i], settings, layer), skin_params))
+                result[i].skin.push_back(std::move(line));
+        }
         result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
         result[i].comb_area = combAreaFor(layers[i].outlines, areas[i], settings);
     });

@@ -97,8 +97,10 @@ std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                          p.min_width_for_expansion_um, inner);
         SkinAreas& out = result[index];
         out.skin = removeSmallIslands(unionOf(top, bottom), kMinSkinAreaUm2);
-        out.infill = removeSmallIslands(differenceOf(inner, out.skin),
-                                        std::max(kMinSkinAreaUm2, p.min_infill_area_um2));
+        Paths infill = differenceOf(inner, out.skin);
+        if (p.infill_opening_um > 0)
+            infill = openPolygons(infill, p.infill_opening_um / 2);
+        out.infill = removeSmallIslands(infill, std::max(kMinSkinAreaUm2, p.min_infill_area_um2));
         if (roofing_layers > 0 && !out.skin.empty()) {
             Paths covered = i + roofing_layers < n ? roof_above[index + 1] : Paths{};
             if (i > 0)

@@ -10,8 +10,9 @@
 // each skin then loses its parts narrower than what is left of the removal width, is
 // grown by the expand distance (top/bottom_skin_expand_distance; only the parts at least
 // min_skin_width_for_expansion wide when that is set) and clipped to inner_area[i]. The union is
-// the skin; pieces under 0.16 mm² are dropped. The infill area is inner_area[i] minus the skin
-// (pieces under 0.16 mm² and under min_infill_area dropped). With roofing_layer_count > 0 (at most
+// the skin; pieces under 0.16 mm² are dropped. The infill area is inner_area[i] minus the skin,
+// less its parts narrower than infill_line_width (pieces under 0.16 mm² and under min_infill_area
+// dropped). With roofing_layer_count > 0 (at most
 // top_layers), the part of the skin with air within roofing_layer_count layers above is roofing, as
 // CuraEngine 4.13 finds it: "no air above" is the roofing reference region (the centre region of
 // wall min(2, wall count)) of every layer up to roofing_layer_count above, plus where that region
@@ -47,6 +48,8 @@ struct SkinParams {
     double min_infill_area_um2 = 0;
     /// Also find the outer surfaces (SkinAreas::outer_surfaces), against the roofing reference.
     bool outer_surfaces = false;
+    /// As CuraEngine: the infill area loses what is narrower than this (infill_line_width).
+    coord_um infill_opening_um = 0;
 };
 
 struct SkinAreas {

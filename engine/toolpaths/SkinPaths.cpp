@@ -145,4 +145,10 @@ std::vector<ExtrusionPath> generateSkinPaths(const Paths& skin_area, const Paths
     return paths;
 }
 
+std::vector<ExtrusionPath> perimeterGapLines(const Paths& gaps, const SkinPathParams& params) {
+    std::vector<ExtrusionPath> lines;
+    appendGapLines(gaps, params, lines);
+    return lines;
+}
+
 }  // namespace mixengine

@@ -49,4 +49,7 @@ struct SkinPathParams {
 std::vector<ExtrusionPath> generateSkinPaths(const Paths& skin_area, const Paths& roofing_area,
                                              const SkinPathParams& params);
 
+/// Lines filling `gaps` (fill_perimeter_gaps), as step 4 above; none without a gap style.
+std::vector<ExtrusionPath> perimeterGapLines(const Paths& gaps, const SkinPathParams& params);
+
 }  // namespace mixengine

@@ -63,6 +63,26 @@ std::vector<ExtrusionPath> wallPaths(const std::vector<Paths>& levels, const std
     return out;
 }
 
+/// The gaps between consecutive walls (WallResult::perimeter_gaps); inside the innermost wall too
+/// when no part has all its walls (nothing else fills it then).
+Paths gapsBetweenWalls(const std::vector<Paths>& levels, const WallParams& p) {
+    constexpr coord_um kSlackUm = 15;  // CuraEngine's: no gaps everywhere from rounding
+    const bool walls_missing = static_cast<int>(levels.size()) < p.wall_count;
+    Paths gaps;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        const bool last = k + 1 == levels.size();
+        if (last && !walls_missing)
+            break;  // inside the innermost wall: skin and infill, and their gaps (MeshToolpaths)
+        const coord_um width = k == 0 ? p.outer_width_um : p.inner_width_um;
+        const Paths outer = offsetMiter(levels[k], -width / 2 - kSlackUm);
+        gaps = unionOf(gaps,
+                       last ? outer : differenceOf(outer, offsetMiter(levels[k + 1], p.inner_width_um / 2)));
+    }
+    if (p.filter_tiny_gaps)
+        gaps = removeSmallIslands(gaps, 2.0 * double(p.outer_width_um) * double(p.outer_width_um));
+    return gaps;
+}
+
 }  // namespace
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params) {
@@ -95,6 +115,8 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
         last_half = params.inner_width_um / 2;
     }
     result.walls = wallPaths(regions, depths, params);
+    if (params.perimeter_gaps)
+        result.perimeter_gaps = gapsBetweenWalls(regions, params);
     result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half);
     result.top_reference = referenceRegion(outlines, regions, depths, params.top_reference);
     result.bottom_reference = params.bottom_reference == params.top_reference

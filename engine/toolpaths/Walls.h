@@ -37,6 +37,10 @@ struct WallParams {
     /// innermost out — or from the outermost in with `outer_first` (outer_inset_first).
     bool group_by_outline = false;
     bool outer_first = false;
+    /// fill_perimeter_gaps: find the gaps between consecutive walls (WallResult::perimeter_gaps),
+    /// less the pieces under 2 outer wall widths squared with `filter_tiny_gaps`.
+    bool perimeter_gaps = false;
+    bool filter_tiny_gaps = true;
 };
 
 struct WallResult {
@@ -48,6 +52,10 @@ struct WallResult {
     /// uses its innermost wall's region (as CuraEngine 4.13 takes insets[min(k, count) − 1]).
     Paths top_reference, bottom_reference;
     Paths roofing_reference;  ///< empty when WallParams::roofing_reference is −1
+    /// As CuraEngine 4.13 finds them: wall k's centre region less half its width and 15 µm, less
+    /// wall k+1's centre region grown by half its width — where a part lacks wall k+1, all of its
+    /// inside (WallParams::perimeter_gaps).
+    Paths perimeter_gaps;
 };
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params);

@@ -136,5 +136,21 @@ TEST(MeshToolpaths, SurfaceModePrintsTheOutlineOnceAsOuterWall) {
     }
 }
 
+TEST(MeshToolpaths, PerimeterGapsAreFilledWithHalfWidthSkinLines) {
+    // A 1.4 mm wide wall of a part: room for the outer wall only, the 0.57 mm left inside is a gap
+    // filled with lines half an outer wall wide (fill_perimeter_gaps), unless that is off.
+    test::Stack strip = test::prismStack(10);
+    test::fill(strip, 0, 10, {test::rect(10'000, 10'000, 30'000, 11'400)});
+    const auto gapLines = [&](const std::string& mode) {
+        const ResolvedMachine m = test::fdmMachine({{"fill_perimeter_gaps", mode}}, {{1, {}}});
+        std::size_t count = 0;
+        for (const ExtrusionPath& p : generateMeshToolpaths(strip.layers, m.global, 2)[5].skin)
+            count += p.width_um == 200 && p.feature == Feature::Skin ? 1 : 0;
+        return count;
+    };
+    EXPECT_GT(gapLines("everywhere"), 10U);
+    EXPECT_EQ(gapLines("nowhere"), 0U);
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -144,5 +144,22 @@ TEST(Skin, OuterSurfacesHaveAirDirectlyAboveOrBelow) {
     EXPECT_TRUE(skins(areas, layersOnly(2, 2))[3].outer_surfaces.empty());  // not asked for
 }
 
+TEST(Skin, InfillLosesWhatIsNarrowerThanItsLine) {
+    // Inside the walls: a 10 mm square with a 0.3 mm wide, 5 mm long tongue; no skin.
+    const Paths inner{{{0, 0},
+                       {10'000, 0},
+                       {10'000, 4'850},
+                       {15'000, 4'850},
+                       {15'000, 5'150},
+                       {10'000, 5'150},
+                       {10'000, 10'000},
+                       {0, 10'000}}};
+    const std::vector<Paths> areas(5, inner);
+    SkinParams p = layersOnly(0, 0);
+    EXPECT_EQ(areaUm2(skins(areas, p)[2].infill), areaUm2(inner));
+    p.infill_opening_um = 400;  // infill_line_width: the tongue goes
+    EXPECT_NEAR(areaUm2(skins(areas, p)[2].infill), 100e6, 1e3);
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -133,6 +133,23 @@ TEST(Walls, GroupedByOutlineEachHoleAndOutlineIsOneSequence) {
     EXPECT_TRUE(generateWalls({rect(0, 0, 10'000, 300)}, p).walls.empty());
 }
 
+TEST(Walls, PerimeterGapsWhereTheNextWallIsMissing) {
+    // Walls touch where they all exist: a 20 mm square has no gaps.
+    WallParams p;
+    p.perimeter_gaps = true;
+    EXPECT_TRUE(generateWalls({square(0, 0, 20'000)}, p).perimeter_gaps.empty());
+    // A 1.4 mm strip fits the outer wall (centre region 1.0 mm wide) but no inner wall: what the
+    // outer wall leaves, 1.0 − 0.4 − 2 × 15 µm = 0.57 mm across, is a gap (11 mm², over the filter's
+    // two outer wall widths squared).
+    const WallResult strip = generateWalls({rect(0, 0, 20'000, 1'400)}, p);
+    const ClipperLib::IntRect box = boundsOf(strip.perimeter_gaps);
+    EXPECT_EQ(box.top, 415);
+    EXPECT_EQ(box.bottom, 985);
+    EXPECT_NEAR(areaUm2(strip.perimeter_gaps), 19'170.0 * 570.0, 1e3);  // 0.415 mm in from each end
+    p.perimeter_gaps = false;
+    EXPECT_TRUE(generateWalls({rect(0, 0, 20'000, 1'400)}, p).perimeter_gaps.empty());
+}
+
 TEST(Walls, ThinPartsGetFewerWallsNeverOverlapping) {
     // A loop of width w needs a centre region at least w wide: the outer wall needs a strip of
     // 2 × 0.4 mm, the second wall 0.8 + 2 × 0.4 mm. Narrower parts lose those walls entirely.
