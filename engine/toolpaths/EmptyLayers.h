@@ -19,13 +19,6 @@ namespace mixengine {
 /// nothing prints).
 std::size_t leadingEmptyLayers(const GroupToolpaths& toolpaths, const ToolpathInput& input);
 
-/// The number of layers at the top of `toolpaths` where nothing prints (e.g. the last layer with
-/// slicing_tolerance exclusive); CuraEngine writes no layer for them.
-std::size_t trailingEmptyLayers(const GroupToolpaths& toolpaths);
-
-/// Removes the last `count` layers of every per-layer list of `toolpaths` (and of heights).
-void dropTrailingLayers(std::size_t count, GroupToolpaths& toolpaths);
-
 /// Removes the first `count` layers of every per-layer list of `toolpaths`; toolpaths.heights
 /// keeps its first entries (the print starts at the first layer's height) and
 /// toolpaths.first_sliced_layer grows by `count`.

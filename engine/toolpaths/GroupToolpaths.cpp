@@ -103,7 +103,6 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         result.warnings = std::move(skirt.warnings);
     }
     dropEmptyBottomLayers(input, result);
-    dropTrailingLayers(trailingEmptyLayers(result), result);
     return result;
 }
 
