@@ -118,26 +118,11 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
     }
 }
 
-/// The number of layers up to and including the last one that extrudes.
-std::size_t printedLayers(const PrintPlan& plan) {
-    std::size_t count = plan.layers.size();
-    const auto extrudes = [](const PlanStep& step) { return step.kind == PlanStep::Kind::Extrude; };
-    while (count > 0 &&
-           std::none_of(plan.layers[count - 1].steps.begin(), plan.layers[count - 1].steps.end(), extrudes))
-        --count;
-    return count;
-}
-
 }  // namespace
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode) {
     WrittenLayers out;
-    const std::size_t printed = printedLayers(plan);
     for (const PlannedLayer& layer : plan.layers) {
-        if (out.chunks.size() >= printed) {
-            out.chunks.emplace_back();
-            continue;
-        }
         gcode.takeText();  // start a fresh chunk
         gcode.comment("LAYER:" + std::to_string(layer.index));
         if (params.reset_e_each_layer && !gcode.retracted())

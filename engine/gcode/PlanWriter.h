@@ -12,10 +12,7 @@
 namespace mixengine {
 
 struct WrittenLayers {
-    /// One per layer, ";LAYER:n" first — empty for the layers at the top where nothing is
-    /// extruded (e.g. the last one with slicing_tolerance exclusive): CuraEngine writes nothing for
-    /// them but counts them in ;LAYER_COUNT:.
-    std::vector<std::string> chunks;
+    std::vector<std::string> chunks;  ///< one per layer, ";LAYER:n" first
     Point3 min{INT64_MAX, INT64_MAX, INT64_MAX};
     Point3 max{INT64_MIN, INT64_MIN, INT64_MIN};
 };

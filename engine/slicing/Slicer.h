@@ -20,7 +20,8 @@
 //     inclusive, at max(0, layer_height_0 − layer_height) for exclusive) and take the union /
 //     intersection; the last layer is its bottom cut alone (inclusive) or empty (exclusive). As in
 //     CuraEngine 4.13, a body standing on z = 0 is then missing from layer 0 with exclusive (the
-//     empty bottom layer is dropped later, toolpaths/EmptyLayers.h);
+//     empty bottom layer is dropped later, toolpaths/EmptyLayers.h; the empty last layer is written,
+//     where CuraEngine counts it in ;LAYER_COUNT: but writes no ;LAYER: for it);
 //   - only facets whose z-range contains a plane are cut there (slicing/FacetBuckets.h); layers are
 //     sliced in parallel (common/ParallelFor.h); the result does not depend on the thread count.
 // Errors: InputError for a mesh beyond ±1 km (the exact 64-bit interpolation's range), InternalError

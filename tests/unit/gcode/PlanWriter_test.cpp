@@ -105,27 +105,6 @@ TEST(GCodePlanWriter, LayerFirstTimeLastInEveryChunk) {
     EXPECT_NE(written.chunks[1].find("G0 F600 Z0.5\n"), std::string::npos) << written.chunks[1];
 }
 
-TEST(GCodePlanWriter, NothingForTheLayersAtTheTopThatExtrudeNothing) {
-    // Two empty layers on top (one with a fan change only): their chunks are empty, but there is
-    // one per layer, so ;LAYER_COUNT: counts them as CuraEngine's does.
-    PrintPlan plan = twoLayerPlan();
-    PlannedLayer fan_only;
-    fan_only.index = 2;
-    fan_only.z = 700;
-    fan_only.steps = {step(PlanStep::Kind::SetFan)};
-    PlannedLayer empty;
-    empty.index = 3;
-    empty.z = 900;
-    plan.layers.push_back(fan_only);
-    plan.layers.push_back(empty);
-    GCodeExport gcode(params());
-    const WrittenLayers written = writePlan(plan, PlanWriterParams{}, gcode);
-    ASSERT_EQ(written.chunks.size(), 4U);
-    EXPECT_EQ(written.chunks[1].rfind(";LAYER:1\n", 0), 0U);
-    EXPECT_TRUE(written.chunks[2].empty());
-    EXPECT_TRUE(written.chunks[3].empty());
-}
-
 TEST(GCodePlanWriter, BoundsOfExtrudedMoves) {
     GCodeExport gcode(params());
     const WrittenLayers written = writePlan(twoLayerPlan(), PlanWriterParams{}, gcode);
