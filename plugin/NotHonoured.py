@@ -33,15 +33,23 @@ def normalised(value):
         return text
 
 
+def multiExtruderOnly(entry):
+    """True for an entry that holds only for prints with two or more extruders ("multi_extruder_only")."""
+    return isinstance(entry, dict) and bool(entry.get("multi_extruder_only", False))
+
+
 def reason(entry):
     return entry.get("why", "") if isinstance(entry, dict) else str(entry)
 
 
 def notHonoured(entry, value, default):
-    """True when `value` of a setting with this list entry has no effect in MixEngine."""
+    """True when `value` of a setting with this list entry has no effect in MixEngine: the engine's rule,
+    a value other than the definitions' default that the entry lists (every value, or its "values")."""
+    if normalised(value) == normalised(default):
+        return False
     if isinstance(entry, dict) and "values" in entry:
         return normalised(value) in [normalised(v) for v in entry["values"]]
-    return normalised(value) != normalised(default)
+    return True
 
 
 def offending(entries, found):

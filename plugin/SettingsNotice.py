@@ -73,8 +73,11 @@ class SettingsNotice:
     def _found(self, stack):
         definition = stack.definition
         extruders = [e for e in stack.extruderList if e.isEnabled]
-        keys = [k for k in self._entries if definition.findDefinitions(key=k)]
+        keys = [k for k in self._entries if definition.findDefinitions(key=k)
+                and (len(extruders) > 1 or not NotHonoured.multiExtruderOnly(self._entries[k]))]
         for key in keys:
+            if stack.getProperty(key, "enabled") is False:
+                continue  # hidden in Cura: neither engine reads it (the engine's rule too)
             yield key, stack.getProperty(key, "value"), self._default(definition, stack, key), "global"
             for extruder in extruders:
                 # one extruder (a mixing printer): its values are the print's, named without a place

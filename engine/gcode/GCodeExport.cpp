@@ -12,7 +12,21 @@ GCodeExport::GCodeExport(const ExportParams& params)
       dialect_(makeMixDialect(params.mixing, params.relative_extrusion)),
       mix_(MixVector::only(0, params.mixing.channels)),
       time_(params.kinematics),
-      motion_(params.motion_flavor) {}
+      retraction_{params.retraction_amount_mm, params.retraction_speed_mm_s, params.prime_speed_mm_s,
+                  params.retraction_extra_prime_mm3},
+      retraction_hop_um_(params.retraction_hop_um),
+      fan_number_(params.fan_number),
+      motion_(params.motion_flavor),
+      temperatures_(params.temperatures) {
+    state().prime_speed_mm_s = params.prime_speed_mm_s;
+}
+
+GCodeExport::ExtruderState& GCodeExport::state() {
+    const auto index = static_cast<std::size_t>(extruder_);
+    if (states_.size() <= index)
+        states_.resize(index + 1, ExtruderState{0, retraction_.prime_speed_mm_s, 0, 0, false});
+    return states_[index];
+}
 
 void GCodeExport::timeMove(const Point2& to, coord_um z, double filament_mm, double speed_mm_s,
                            TimeFeature feature) {
@@ -29,28 +43,39 @@ std::string GCodeExport::xyWords(const Point2& to) const {
 void GCodeExport::selectExtruder(const ToolChange& change) {
     if (change.extruder == extruder_)
         return;
-    retract();
-    pending_prime_mm3_ = 0;  // as CuraEngine: an extruder switch primes nothing extra
     line("T" + std::to_string(change.extruder));
-    noteFilamentOfActiveExtruder();
     extruder_ = change.extruder;
     params_.filament_diameter_mm = change.filament_diameter_mm;
     offset_ = change.nozzle_offset_um;
+    retraction_ = change.retraction;
+    retraction_hop_um_ = change.retraction_hop_um;
+    if (change.fan_number != fan_number_) {  // another fan: its speed is written again
+        fan_number_ = change.fan_number;
+        fan_ratio_ = -1;
+    }
+    state();  // a first use starts with nothing retracted, primed at its own prime speed
     resetExtrusionAxis();
 }
 
-void GCodeExport::noteFilamentOfActiveExtruder() {
-    const std::size_t index = static_cast<std::size_t>(extruder_);
-    if (filament_by_extruder_.size() <= index)
-        filament_by_extruder_.resize(index + 1, 0.0);
-    const double total = dialect_->totalExtruded();
-    filament_by_extruder_[index] += total - total_at_last_change_;
-    total_at_last_change_ = total;
+bool GCodeExport::markPrimed() {
+    const bool was = state().primed;
+    state().primed = true;
+    return !was;
 }
 
-std::vector<double> GCodeExport::filamentPerExtruder() {
-    noteFilamentOfActiveExtruder();
-    return filament_by_extruder_;
+void GCodeExport::assumePrimed(int extruder, double retracted_mm) {
+    const int active = extruder_;
+    extruder_ = extruder;
+    state().primed = true;
+    state().retracted_mm = retracted_mm;
+    extruder_ = active;
+}
+
+std::vector<double> GCodeExport::filamentPerExtruder() const {
+    std::vector<double> out;
+    for (const ExtruderState& s : states_)
+        out.push_back(s.extruded);
+    return out;
 }
 
 void GCodeExport::line(std::string_view text) {
@@ -70,11 +95,11 @@ std::string GCodeExport::feedrateWord(double speed_mm_s) {
     return " F" + formatFeedrate(speed_mm_s);
 }
 
-double GCodeExport::retractionOnAxis() const {
+double GCodeExport::filamentOnAxis(double filament_mm) const {
     if (!params_.volumetric)
-        return params_.retraction_amount_mm;
+        return filament_mm;
     const double radius = params_.filament_diameter_mm / 2.0;
-    return params_.retraction_amount_mm * std::numbers::pi * radius * radius;
+    return filament_mm * std::numbers::pi * radius * radius;
 }
 
 double GCodeExport::filamentMm(double volume_mm3) const {
@@ -95,6 +120,7 @@ void GCodeExport::travel(const Point2& to, double speed_mm_s) {
 }
 
 void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
+    layer_z_ = z - hop_um_;
     if (z == z_)
         return;
     timeMove(position_, z, 0, speed_mm_s, moveFeature());
@@ -102,10 +128,23 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
     z_ = z;
 }
 
+void GCodeExport::hopTo(coord_um hop_um, bool rewrite) {
+    if (hop_um == hop_um_ && !(rewrite && hop_um > 0))
+        return;
+    const coord_um layer = layer_z_;
+    hop_um_ = hop_um;
+    if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
+        line("G0" + feedrateWord(params_.z_hop_speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z_)));
+        return;
+    }
+    moveZ(layer + hop_um, params_.z_hop_speed_mm_s);
+}
+
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {
-    if (retracted_)
+    if (retracted() || hop_um_ > 0 || state().extra_prime_mm3 > 0)
         unretract();
     const double e = volumeOnAxis(volume_mm3);
+    state().extruded += e;
     std::string before;
     const std::string words = dialect_->extrude(e, mix_, before);
     out_ += before;
@@ -115,49 +154,52 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
 }
 
 void GCodeExport::retract() {
-    if (retracted_ || params_.retraction_amount_mm <= 0)
+    const bool was_retracted = retracted();
+    retractTo(retraction_);
+    if (!was_retracted && retracted() && retraction_hop_um_ > 0)
+        hopTo(retraction_hop_um_);
+}
+
+void GCodeExport::retractTo(const RetractionConfig& config) {
+    ExtruderState& s = state();
+    const double change_mm = config.amount_mm - s.retracted_mm;
+    if (std::abs(change_mm) < 1e-6)
         return;
-    pending_prime_mm3_ += params_.extra_prime_mm3;
     if (params_.firmware_retract) {
-        line("G10");  // the firmware retracts; the E axis does not move
+        if (s.retracted_mm <= 0)
+            line("G10");  // the firmware retracts; the E axis does not move
     } else {
+        const double speed = change_mm > 0 ? config.retract_speed_mm_s : s.prime_speed_mm_s;
         std::string before;
-        const std::string words = dialect_->retract(retractionOnAxis(), before);
+        const std::string words = change_mm > 0 ? dialect_->retract(filamentOnAxis(change_mm), before)
+                                                : dialect_->prime(filamentOnAxis(-change_mm), before);
         out_ += before;
-        line("G1" + feedrateWord(params_.retraction_speed_mm_s) + " " + words);
-        timeMove(position_, z_, -params_.retraction_amount_mm, params_.retraction_speed_mm_s,
-                 TimeFeature::Retraction);
+        line("G1" + feedrateWord(speed) + " " + words);
+        timeMove(position_, z_, -change_mm, speed, TimeFeature::Retraction);
     }
-    retracted_ = true;
-    if (params_.retraction_hop_um > 0)
-        moveZ(z_ + params_.retraction_hop_um, params_.retraction_speed_mm_s);
+    s.retracted_mm = config.amount_mm;
+    s.prime_speed_mm_s = config.prime_speed_mm_s;
+    s.extra_prime_mm3 += config.extra_prime_mm3;
 }
 
 void GCodeExport::unretract() {
-    if (!retracted_)
-        return;
-    if (params_.retraction_hop_um > 0)
-        moveZ(z_ - params_.retraction_hop_um, params_.retraction_speed_mm_s);
-    if (params_.firmware_retract) {
+    hopTo(0);
+    ExtruderState& s = state();
+    const double prime_mm = s.retracted_mm + filamentMm(s.extra_prime_mm3);
+    if (params_.firmware_retract && s.retracted_mm > 0)
         line("G11");
-    } else {
+    const double moved_mm = params_.firmware_retract ? filamentMm(s.extra_prime_mm3) : prime_mm;
+    if (moved_mm > 0) {
         std::string before;
-        const std::string words = dialect_->prime(retractionOnAxis(), before);
+        const std::string words = dialect_->prime(filamentOnAxis(moved_mm), before);
         out_ += before;
-        line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + words);
-        timeMove(position_, z_, params_.retraction_amount_mm, params_.prime_speed_mm_s,
-                 TimeFeature::Retraction);
+        line("G1" + feedrateWord(s.prime_speed_mm_s) + " " + words);
     }
-    retracted_ = false;
-    if (pending_prime_mm3_ > 0) {
-        std::string before;
-        const std::string words = dialect_->extrude(volumeOnAxis(pending_prime_mm3_), mix_, before);
-        out_ += before;
-        line("G1" + feedrateWord(params_.prime_speed_mm_s) + " " + words);
-        timeMove(position_, z_, filamentMm(pending_prime_mm3_), params_.prime_speed_mm_s,
-                 TimeFeature::Retraction);
-    }
-    pending_prime_mm3_ = 0;
+    if (prime_mm > 0)
+        timeMove(position_, z_, prime_mm, s.prime_speed_mm_s, TimeFeature::Retraction);
+    s.extruded += volumeOnAxis(s.extra_prime_mm3);  // material out of the nozzle
+    s.retracted_mm = 0;
+    s.extra_prime_mm3 = 0;
 }
 
 void GCodeExport::dwell(double seconds) {
@@ -182,14 +224,23 @@ void GCodeExport::setMotion(double acceleration_mm_s2, double jerk_mm_s, bool tr
         time_.setJerkXy(jerk_mm_s);
 }
 
+void GCodeExport::setNozzleTemperature(int extruder, double celsius, bool wait) {
+    for (const std::string& text :
+         temperatures_.set(extruder < 0 ? extruder_ : extruder, celsius, wait, extruder_))
+        line(text);
+}
+
 void GCodeExport::setFan(double ratio) {
     if (ratio == fan_ratio_)
         return;
     fan_ratio_ = ratio;
-    if (ratio <= 0) {
-        line("M107");
+    const std::string fan = fan_number_ != 0 ? " P" + std::to_string(fan_number_) : "";
+    if (params_.makerbot_fan) {
+        line(ratio > 0 ? "M126 T0" : "M127 T0");  // Makerbot: the fan is on or off, no speed
+    } else if (ratio <= 0) {
+        line("M107" + fan);
     } else {
-        line("M106 S" + formatDecimal(std::min(ratio, 1.0) * 255.0, 1));
+        line("M106 S" + formatDecimal(std::min(ratio, 1.0) * 255.0, 1) + fan);
     }
 }
 

@@ -12,33 +12,49 @@
 #include "gcode/ExtrusionAxis.h"
 #include "gcode/MixDialect.h"
 #include "gcode/MotionCommands.h"
+#include "gcode/TemperatureCommands.h"
 #include "gcode/TimeEstimate.h"
 #include "geometry/Point.h"
 
 namespace mixengine {
 
+/// A retraction (CuraEngine's RetractionConfig): how much filament is pulled back, how fast it goes
+/// back and forth, and the material primed in addition when it goes forward again.
+struct RetractionConfig {
+    double amount_mm = 6.5;  ///< filament pulled back (0: no retraction)
+    double retract_speed_mm_s = 25;
+    double prime_speed_mm_s = 25;  ///< of the prime that undoes this retraction
+    double extra_prime_mm3 = 0;    ///< primed in addition after it (retraction_extra_prime_amount)
+};
+
 struct ExportParams {
     double filament_diameter_mm = 2.85;
-    bool volumetric = false;          ///< E in mm³ of material (RepRap (Volumetric), UltiGCode)
-    bool relative_extrusion = false;  ///< M83
-    double retraction_amount_mm = 6.5;
+    bool volumetric = false;            ///< E in mm³ of material (RepRap (Volumetric), UltiGCode)
+    bool relative_extrusion = false;    ///< M83
+    double retraction_amount_mm = 6.5;  ///< the first extruder's retraction (ToolChange for the others)
     double retraction_speed_mm_s = 25;
     double prime_speed_mm_s = 25;
+    double retraction_extra_prime_mm3 = 0;
     coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
+    double z_hop_speed_mm_s = 10;    ///< speed_z_hop: the lifts and lowerings of z-hops
     bool firmware_retract = false;   ///< G10/G11 instead of E moves (machine_firmware_retract)
-    /// retraction_extra_prime_amount: material pushed out on top of the prime after each retraction
-    /// (not after an extruder switch), as its own E move at the prime speed; mm³.
-    double extra_prime_mm3 = 0;
+    bool makerbot_fan = false;       ///< M126 T0 / M127 T0 instead of M106 / M107 (Makerbot flavor)
     Kinematics kinematics;
     MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
     MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
+    TemperatureCommandParams temperatures;  ///< nozzle temperature commands (gcode/TemperatureCommands.h)
+    int fan_number = 0;  ///< the first extruder's machine_extruder_cooling_fan_number (P<n> when not 0)
 };
 
-/// A tool change: the new extruder's filament diameter and nozzle offset (subtracted from X/Y).
+/// A tool change: the new extruder's filament diameter, nozzle offset (subtracted from X/Y) and its
+/// own retraction and z-hop for travel.
 struct ToolChange {
     int extruder = 0;
     double filament_diameter_mm = 2.85;
     Point2 nozzle_offset_um{0, 0};
+    RetractionConfig retraction;
+    coord_um retraction_hop_um = 0;
+    int fan_number = 0;  ///< machine_extruder_cooling_fan_number: M106/M107 P<n> when not 0
 };
 
 class GCodeExport {
@@ -48,19 +64,50 @@ class GCodeExport {
     void line(std::string_view text);     ///< a raw line
     void comment(std::string_view text);  ///< ";text"
     void travel(const Point2& to, double speed_mm_s);
+    /// A Z move to `z`, which (less the z-hop in force) becomes the layer's height.
     void moveZ(coord_um z, double speed_mm_s);
+    /// A new layer at `z`: Z goes there (plus the z-hop in force, kept until the next prime).
+    void startLayer(coord_um z, double speed_mm_s) { moveZ(z + hop_um_, speed_mm_s); }
     void extrude(const Point2& to, double volume_mm3, double speed_mm_s);
+    /// The active extruder's own retraction for travel (and its z-hop).
     void retract();
-    void unretract();            ///< primes what was retracted, then any extra prime (ExportParams)
+    /// Changes the retracted filament of the active extruder to `config.amount_mm`, as CuraEngine
+    /// does: retracting the difference at the retraction speed when more, priming it back at the
+    /// speed of the retraction before when less; nothing when equal. Every retraction made adds its
+    /// extra prime for the next prime.
+    void retractTo(const RetractionConfig& config);
+    /// Lifts the nozzle `hop_um` above the layer (0: back down); nothing when already there, unless
+    /// `rewrite` (CuraEngine writes the lift of a switch even when the nozzle is up already).
+    void hopTo(coord_um hop_um, bool rewrite = false);
+    /// The active extruder's retraction for travel.
+    const RetractionConfig& retraction() const { return retraction_; }
+    /// Notes that the active extruder is primed; false when it was already.
+    bool markPrimed();
+    /// Extruder `extruder` starts with `retracted_mm` of filament pulled back and primed
+    /// (machine_extruders_share_nozzle: the start code leaves every filament so).
+    void assumePrimed(int extruder, double retracted_mm);
+    /// Primes what is retracted, plus the extra prime owed (after lowering a z-hop).
+    void unretract();
+    /// Material primed in addition at the next prime of the active extruder
+    /// (switch_extruder_extra_prime_amount).
+    void addExtraPrime(double volume_mm3) { state().extra_prime_mm3 += volume_mm3; }
     void resetExtrusionAxis();   ///< G92 E0 in absolute mode
     void dwell(double seconds);  ///< G4 P<milliseconds>, counted in the time estimate
-    void setFan(double ratio);   ///< M106 S0..255 / M107
+    void setFan(double ratio);   ///< M106 S0..255 / M107 (P<n> for the active extruder's fan n ≠ 0)
     /// Acceleration (mm/s²) and XY jerk (mm/s) of the following moves, 0 = unchanged: writes
     /// M204/M205 (gcode/MotionCommands.h) when they change and uses them for the time estimate.
     void setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel);
+    /// Nozzle `extruder` (−1: the active one) to `celsius`, M109 when `wait`; nothing when that changes
+    /// nothing (gcode/TemperatureCommands.h).
+    void setNozzleTemperature(int extruder, double celsius, bool wait);
+    /// What the start code set: nozzle `extruder` at `celsius`, waited for or not.
+    void assumeNozzleTemperature(int extruder, double celsius, bool waited) {
+        temperatures_.assume(extruder, celsius, waited);
+    }
     /// The mix of the following extrusions (mixing dialects only; ignored in single mode).
     void setMix(const MixVector& mix) { mix_ = mix; }
-    /// Retracts, writes T<n>, resets E (absolute mode); filament is then counted for the new one.
+    /// Writes T<n> and resets E (absolute mode); filament is then counted for the new one, which
+    /// keeps its own retracted filament from when it was last used (the caller retracts before).
     void selectExtruder(const ToolChange& change);
     /// Plans buffered moves to a stop (at layer ends) so the time read next is final.
     void flushTime() { time_.flush(); }
@@ -77,23 +124,34 @@ class GCodeExport {
     /// Per mixing channel (one entry in single mode), length or mm³ when volumetric.
     std::vector<double> filamentPerChannel() const { return dialect_->channelTotals(); }
     /// Filament per extruder (index = extruder_nr), length or mm³ when volumetric.
-    std::vector<double> filamentPerExtruder();
+    std::vector<double> filamentPerExtruder() const;
     int extruder() const { return extruder_; }
+    Point2 position() const { return position_; }  ///< of the active nozzle, in plan coordinates
     coord_um z() const { return z_; }
-    bool retracted() const { return retracted_; }
+    bool retracted() const { return states_[static_cast<std::size_t>(extruder_)].retracted_mm > 0; }
+    /// Filament of the active extruder pulled back now (mm).
+    double retractedMm() const { return states_[static_cast<std::size_t>(extruder_)].retracted_mm; }
 
   private:
     std::string feedrateWord(double speed_mm_s);
     double filamentMm(double volume_mm3) const;  ///< length of the active filament holding the volume
     double volumeOnAxis(
-        double volume_mm3) const;     ///< the volume in the axis unit (mm, or mm³ when volumetric)
-    double retractionOnAxis() const;  ///< the retraction in the axis unit
+        double volume_mm3) const;  ///< the volume in the axis unit (mm, or mm³ when volumetric)
     /// Adds a move to the time estimate, whose E axis is always mm of filament (as CuraEngine's
     /// estimate and the firmware's E limits: machine_max_feedrate_e, _jerk_e, _acceleration_e).
     void timeMove(const Point2& to, coord_um z, double filament_mm, double speed_mm_s, TimeFeature feature);
-    TimeFeature moveFeature() const { return retracted_ ? TimeFeature::Retraction : TimeFeature::Travel; }
-    std::string xyWords(const Point2& to) const;  ///< " X.. Y..", relative to the active nozzle
-    void noteFilamentOfActiveExtruder();
+    TimeFeature moveFeature() const { return retracted() ? TimeFeature::Retraction : TimeFeature::Travel; }
+    /// What an extruder keeps across tool changes.
+    struct ExtruderState {
+        double retracted_mm = 0;
+        double prime_speed_mm_s = 25;  ///< of the next prime: that of the last retraction
+        double extra_prime_mm3 = 0;
+        double extruded = 0;  ///< forward filament in the axis unit (extra primes included)
+        bool primed = false;
+    };
+    ExtruderState& state();
+    double filamentOnAxis(double filament_mm) const;  ///< filament in the axis unit
+    std::string xyWords(const Point2& to) const;      ///< " X.. Y..", relative to the active nozzle
 
     ExportParams params_;
     std::unique_ptr<MixDialect> dialect_;  ///< extrusion words, retraction, resets, mix commands
@@ -106,12 +164,15 @@ class GCodeExport {
     TimeFeature extrusion_feature_ = TimeFeature::None;
     int extruder_ = 0;
     Point2 offset_{0, 0};
-    std::vector<double> filament_by_extruder_;
-    double total_at_last_change_ = 0;
-    bool retracted_ = false;
-    double pending_prime_mm3_ = 0;  ///< extra prime owed by the retractions since the last prime
+    RetractionConfig retraction_;  ///< of the active extruder
+    coord_um retraction_hop_um_ = 0;
+    std::vector<ExtruderState> states_;  ///< by extruder_nr
+    coord_um layer_z_ = 0;
+    coord_um hop_um_ = 0;  ///< the nozzle is this far above layer_z_
     double fan_ratio_ = -1;
+    int fan_number_ = 0;
     MotionCommands motion_;
+    TemperatureCommands temperatures_;
 };
 
 }  // namespace mixengine

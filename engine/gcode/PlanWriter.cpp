@@ -25,10 +25,12 @@ void changeExtruder(int extruder, const PlanWriterParams& params, GCodeExport& g
     const auto current = static_cast<std::size_t>(gcode.extruder());
     if (current < params.extruders.size()) {
         const ExtruderOutput& old = params.extruders[current];
+        if (old.retraction_enabled)
+            gcode.retractTo(old.switch_retraction);
+        if (old.switch_hop_um > 0)
+            gcode.hopTo(old.switch_hop_um, true);
+        gcode.resetExtrusionAxis();
         writeCode(old.end_code, gcode);
-        if (old.standby_temperature_c > 0)
-            gcode.line("M104 T" + std::to_string(current) + " S" +
-                       formatDecimal(old.standby_temperature_c, 1));
     }
     ToolChange change;
     change.extruder = extruder;
@@ -37,15 +39,16 @@ void changeExtruder(int extruder, const PlanWriterParams& params, GCodeExport& g
     gcode.selectExtruder(change);
     if (index < params.extruders.size()) {
         const ExtruderOutput& next = params.extruders[index];
-        if (next.print_temperature_c > 0)
-            gcode.line("M109 S" + formatDecimal(next.print_temperature_c, 1));
         writeCode(next.start_code, gcode);
+        if (next.retraction_enabled)
+            gcode.addExtraPrime(next.switch_extra_prime_mm3);
     }
 }
 
-/// CuraEngine 4.13's time bucket of a feature (support infill is PrintFeatureType::Support there).
+/// CuraEngine 4.13's time bucket of a feature (support infill is PrintFeatureType::Support there;
+/// ironing and the raft are booked as the type they are marked with).
 TimeFeature timeFeature(Feature feature) {
-    switch (feature) {
+    switch (markedFeature(feature)) {
         case Feature::WallOuter:
             return TimeFeature::OuterWall;
         case Feature::WallInner:
@@ -62,8 +65,9 @@ TimeFeature timeFeature(Feature feature) {
             return TimeFeature::SkirtBrim;
         case Feature::PrimeTower:
             return TimeFeature::PrimeTower;
+        default:
+            return TimeFeature::None;
     }
-    return TimeFeature::None;
 }
 
 /// cool_lift_head (planning/Cooling.h), written as CuraEngine 4.13 writes it.
@@ -79,6 +83,8 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
+            if (!step.retract && step.to == gcode.position())
+                break;  // as CuraEngine: no move, so no acceleration or jerk change either
             gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, true);
             if (step.retract)
                 gcode.retract();
@@ -107,7 +113,12 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             changeExtruder(step.extruder, params, gcode);
             break;
         case PlanStep::Kind::SetNozzleTemperature:
-            gcode.line("M104 S" + formatDecimal(step.temperature_c, 1));
+            gcode.setNozzleTemperature(step.extruder, step.temperature_c, step.wait);
+            break;
+        case PlanStep::Kind::Prime:
+            if (static_cast<std::size_t>(gcode.extruder()) < params.extruders.size())
+                writePrimeTrain(params.extruders[static_cast<std::size_t>(gcode.extruder())].prime,
+                                params.griffin, gcode);
             break;
         case PlanStep::Kind::SetBedTemperature:
             gcode.line("M140 S" + formatDecimal(step.temperature_c, 1));
@@ -127,7 +138,7 @@ WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, G
         gcode.comment("LAYER:" + std::to_string(layer.index));
         if (params.reset_e_each_layer && !gcode.retracted())
             gcode.resetExtrusionAxis();
-        gcode.moveZ(layer.z, params.layer_change_speed_mm_s);
+        gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
         for (const PlanStep& step : layer.steps)
             writeStep(step, plan, params, gcode, out);
         gcode.flushTime();

@@ -1,12 +1,15 @@
 #pragma once
 // Writes the layers of a PrintPlan through a GCodeExport: ;LAYER:n, the plan's steps, and
-// ;TIME_ELAPSED: at the end of each layer. Returns one text chunk per layer (Cura's socket sends
+// ;TIME_ELAPSED: at the end of each layer. Every layer is written, an empty one too (where CuraEngine
+// leaves out a layer with nothing to print but still counts it in ;LAYER_COUNT:), so that the
+// ;LAYER: lines of the model match ;LAYER_COUNT:. Returns one text chunk per layer (Cura's socket sends
 // them one by one; the CLI joins them).
 #include <string>
 #include <vector>
 
 #include "gcode/GCodeExport.h"
 #include "gcode/Header.h"
+#include "gcode/StartEndCode.h"
 #include "planning/LayerPlan.h"
 
 namespace mixengine {
@@ -17,19 +20,27 @@ struct WrittenLayers {
     Point3 max{INT64_MIN, INT64_MIN, INT64_MIN};
 };
 
-/// What a tool change needs of one extruder train.
+/// What a tool change needs of one extruder train. Switching away from it, as CuraEngine 4.13: its
+/// switch retraction (when retraction_enable), the z-hop after a switch, E reset, its end code;
+/// then T<n> of the new one, E reset, the new one's start code, and the new one's extra prime owed
+/// for its next prime (when retraction_enable). Temperatures are plan steps (planning/SwitchTemperatures.h).
 struct ExtruderOutput {
     ToolChange change;
-    std::string start_code;            ///< machine_extruder_start_code, written after T<n>
-    std::string end_code;              ///< machine_extruder_end_code, written before switching away
-    double print_temperature_c = 0;    ///< waited for after switching to this extruder (0 = none)
-    double standby_temperature_c = 0;  ///< set when switching away from it (0 = none)
+    std::string start_code;          ///< machine_extruder_start_code, written after T<n>
+    std::string end_code;            ///< machine_extruder_end_code, written before switching away
+    bool retraction_enabled = true;  ///< retraction_enable
+    /// switch_extruder_retraction_amount, switch_extruder_retraction_speed, switch_extruder_prime_speed
+    RetractionConfig switch_retraction;
+    coord_um switch_hop_um = 0;         ///< retraction_hop_after_extruder_switch(_height) (0 = none)
+    double switch_extra_prime_mm3 = 0;  ///< switch_extruder_extra_prime_amount
+    PrimeTrain prime;                   ///< its first use (Prime steps)
 };
 
 struct PlanWriterParams {
     double layer_change_speed_mm_s = 10;    ///< Z moves
     bool reset_e_each_layer = true;         ///< G92 E0 at each layer start in absolute mode
     std::vector<ExtruderOutput> extruders;  ///< index = extruder_nr (needed for SetExtruder steps)
+    bool griffin = false;                   ///< machine_gcode_flavor Griffin: primes with G280
 };
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode);

@@ -26,17 +26,20 @@ double initialNozzleTemperature(const Settings& extruder0) {
     return first != 0 ? first : extruder0.temperatureCelsius("material_print_temperature");
 }
 
-/// The temperature lines Cura prepends; RepRap firmware gets no M105 and no M140 before M190.
-std::string prependedTemperatures(const Settings& global, const Settings& extruder0, bool reprap) {
+/// The temperature lines Cura prepends, as CuraEngine writes them per flavor: only Marlin sets the
+/// target with M140 and asks M105 before waiting; Makerbot waits for the nozzle with M104 + M116.
+std::string prependedTemperatures(const Settings& global, const Settings& extruder0,
+                                  const std::string& flavor) {
+    const bool marlin = flavor == "RepRap (Marlin/Sprinter)";
     std::string out;
     const bool heated_bed = global.has("machine_heated_bed") && global.boolean("machine_heated_bed");
     const double bed = global.temperatureCelsius("material_bed_temperature_layer_0");
     if (heated_bed && bed != 0 && global.boolean("material_bed_temp_prepend")) {
         const bool wait = global.boolean("material_bed_temp_wait");
-        if (!reprap || !wait)
+        if (marlin || !wait)
             appendLine(out, "M140 S" + formatDecimal(bed, 1));
         if (wait) {
-            if (!reprap)
+            if (marlin)
                 appendLine(out, "M105");
             appendLine(out, "M190 S" + formatDecimal(bed, 1));
         }
@@ -47,9 +50,10 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
         const double nozzle = initialNozzleTemperature(extruder0);
         appendLine(out, "M104 S" + formatDecimal(nozzle, 1));
         if (global.boolean("material_print_temp_wait")) {
-            if (!reprap)
+            if (marlin)
                 appendLine(out, "M105");
-            appendLine(out, "M109 S" + formatDecimal(nozzle, 1));
+            appendLine(out, flavor == "Makerbot" ? "M104 S" + formatDecimal(nozzle, 1) + "\nM116"
+                                                 : "M109 S" + formatDecimal(nozzle, 1));
         }
     }
     return out;
@@ -86,6 +90,17 @@ std::string nozzlesOff(const std::vector<Settings>& extruders, int active) {
 
 }  // namespace
 
+StartTemperature startNozzleTemperature(const Settings& global, const Settings& extruder0) {
+    const std::string flavor = flavorText(global);
+    const bool nozzle_control =
+        !extruder0.has("machine_nozzle_temp_enabled") || extruder0.boolean("machine_nozzle_temp_enabled");
+    if (flavor == "Griffin")
+        return {true, initialNozzleTemperature(extruder0), true};
+    if (flavor == "UltiGCode" || !nozzle_control || !global.boolean("material_print_temp_prepend"))
+        return {};
+    return {true, initialNozzleTemperature(extruder0), global.boolean("material_print_temp_wait")};
+}
+
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion) {
     const std::string flavor = flavorText(global);
     const bool reprap = flavor == "RepRap (RepRap)";
@@ -95,7 +110,7 @@ std::string startCode(const Settings& global, const Settings& extruder0, bool re
         appendLine(out,
                    "T" + std::to_string(extruder0.has("extruder_nr") ? extruder0.integer("extruder_nr") : 0));
     if (!griffin && flavor != "UltiGCode")
-        out += prependedTemperatures(global, extruder0, reprap);
+        out += prependedTemperatures(global, extruder0, flavor);
     appendLine(out, "M82 ;absolute extrusion mode");
     appendLine(out, global.text("machine_start_gcode"));
     if (heatedBuildVolume(global) && flavor != "UltiGCode" && !griffin)
@@ -126,6 +141,31 @@ std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::v
     out += gcode.takeText();
     return out + endCode(global, relative_extrusion) + nozzlesOff(extruders, gcode.extruder()) +
            ";End of Gcode\n";
+}
+
+namespace {
+
+/// The prime itself (see writePrimeTrain).
+void primeOnce(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+    if (prime.blob) {
+        const Point2 here = gcode.position();
+        const Point2 to = prime.absolute ? prime.position_um
+                                         : Point2{here.X + prime.position_um.X, here.Y + prime.position_um.Y};
+        gcode.travel(to, prime.travel_speed_mm_s);
+    }
+    if (griffin) {
+        gcode.line(prime.blob ? "G280" : "G280 S1");
+        if (!prime.blob)
+            gcode.line("G0 Z" + formatCoordMm(micronsToMm(gcode.z())));
+    }
+}
+
+}  // namespace
+
+void writePrimeTrain(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+    if (gcode.markPrimed())
+        primeOnce(prime, griffin, gcode);
+    gcode.retractTo(gcode.retraction());
 }
 
 std::string endCode(const Settings& global, bool relative_extrusion) {

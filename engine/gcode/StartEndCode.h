@@ -14,6 +14,28 @@ namespace mixengine {
 /// The start: temperatures, M82, machine_start_gcode, the heated build volume (M141), M83.
 std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion);
 
+/// The temperature startCode() leaves the first nozzle at, and whether it waited for it (set = false:
+/// the start code sets none).
+struct StartTemperature {
+    bool set = false;
+    double celsius = 0;
+    bool waited = false;
+};
+StartTemperature startNozzleTemperature(const Settings& global, const Settings& extruder0);
+
+/// An extruder's prime train (CuraEngine's writePrimeTrain), at its first use: with prime_blob_enable
+/// a travel to extruder_prime_pos_x/_y (absolute, or from where the head is); on Griffin `G280`
+/// (`G280 S1` without a blob, then Z written again, as the firmware may move it); then the
+/// extruder's retraction (without z-hop). Nothing when the extruder is primed already
+/// (machine_extruders_share_nozzle: the start code primes them all).
+struct PrimeTrain {
+    bool blob = false;  ///< prime_blob_enable
+    Point2 position_um{0, 0};
+    bool absolute = true;  ///< extruder_prime_pos_abs
+    double travel_speed_mm_s = 150;
+};
+void writePrimeTrain(const PrimeTrain& prime, bool griffin, GCodeExport& gcode);
+
 /// machine_end_gcode between the extrusion-mode lines CuraEngine writes.
 std::string endCode(const Settings& global, bool relative_extrusion);
 

@@ -61,6 +61,28 @@ MixVector scheduledMix(const ScopeSchedule& s, coord_um layer_z) {
     return targetMix(s.mixing, micronsToMm(layer_z - s.bottom_um), micronsToMm(s.top_um - s.bottom_um));
 }
 
+/// The scope of the raft's extrusions in a layer's mix table (meshes are ≥ 0, non-mesh −1).
+constexpr int kRaftScope = -2;
+
+bool isRaft(Feature feature) {
+    return feature == Feature::RaftBase || feature == Feature::RaftInterface ||
+           feature == Feature::RaftSurface;
+}
+
+/// The schedules of one group: each mesh's, the non-mesh extrusions' and the raft's fixed mix.
+struct GroupSchedules {
+    std::vector<ScopeSchedule> meshes;
+    ScopeSchedule nonmesh;
+    MixVector raft;
+
+    MixVector mixOf(int scope, coord_um layer_z) const {
+        if (scope == kRaftScope)
+            return raft;
+        const bool own = scope >= 0 && static_cast<std::size_t>(scope) < meshes.size();
+        return scheduledMix(own ? meshes[static_cast<std::size_t>(scope)] : nonmesh, layer_z);
+    }
+};
+
 void warnAboutDialect(const MixingOutput& output, const Settings& global, Log& log) {
     if (output.dialect == MixDialectKind::RrfColon && !global.boolean("relative_extrusion"))
         log.warning(
@@ -74,8 +96,10 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     const MixingOutput output = parseMixingOutput(*group.settings);
     if (!output.enabled())
         return;
-    const std::vector<ScopeSchedule> meshes = meshSchedules(group, output);
-    const ScopeSchedule nonmesh = groupSchedule(group, output, meshes);
+    GroupSchedules schedules;
+    schedules.meshes = meshSchedules(group, output);
+    schedules.nonmesh = groupSchedule(group, output, schedules.meshes);
+    schedules.raft = parseRaftMix(*group.settings, output);
     const double chamber_mm3 = parseChamberVolumeMm3(*group.settings);
     warnAboutDialect(output, *group.settings, log);
 
@@ -84,18 +108,20 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     std::vector<double> volume;
     for (const PlannedLayer& layer : plan.layers) {
         int mesh = -1;
-        std::map<int, int> layer_mix;  // scope (mesh index, -1 = non-mesh) → mix index on this layer
+        Feature feature = Feature::Fill;
+        std::map<int, int>
+            layer_mix;  // scope (mesh index, -1 = non-mesh, -2 = raft) → mix index on this layer
         for (const PlanStep& step : layer.steps) {
             if (step.kind == PlanStep::Kind::SetMesh)
                 mesh = step.mesh_index;
+            if (step.kind == PlanStep::Kind::SetFeature)
+                feature = step.feature;
             if (step.kind != PlanStep::Kind::Extrude)
                 continue;
-            auto [it, added] = layer_mix.emplace(mesh, 0);
-            if (added) {
-                const bool own = mesh >= 0 && static_cast<std::size_t>(mesh) < meshes.size();
-                it->second = table.indexOf(
-                    scheduledMix(own ? meshes[static_cast<std::size_t>(mesh)] : nonmesh, layer.z));
-            }
+            const int scope = isRaft(feature) ? kRaftScope : mesh;
+            auto [it, added] = layer_mix.emplace(scope, 0);
+            if (added)
+                it->second = table.indexOf(schedules.mixOf(scope, layer.z));
             target.push_back(it->second);
             volume.push_back(step.volume_mm3);
         }

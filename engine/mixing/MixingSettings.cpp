@@ -43,6 +43,8 @@ const char* defaultText(std::string_view key) {
         return "100";
     if (key == "mixing_ratio")
         return "0.5:0.5";
+    if (key == "mixing_raft_ratio")
+        return "1";
     if (key == "mixing_chamber_volume")
         return "0";
     if (key == "mixing_channel_colors")
@@ -238,6 +240,10 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output) {
     if (m.stops.empty())
         fail("mixing_gradient_stops", "no stop in '" + stops + "'");
     return m;
+}
+
+MixVector parseRaftMix(const Settings& global, const MixingOutput& output) {
+    return parseMixRatio("mixing_raft_ratio", textOf(global, "mixing_raft_ratio"), output.channels);
 }
 
 double parseChamberVolumeMm3(const Settings& global) {

@@ -7,6 +7,8 @@
 // Formats:
 //   mixing_ratio            "0.3:0.7" — one share per channel (fractions, colon-separated,
 //                           missing channels are 0); they must add up to 1.
+//   mixing_raft_ratio       the same form, for the raft (adhesion_type raft); default "1":
+//                           filament A only.
 //   mixing_gradient_stops   "0=1:0; 50=0:1; 100=0.5:0.5" — height (in mixing_gradient_unit)
 //                           = ratios; heights must not decrease. Empty: the seed's two-stop
 //                           gradient from mixing_gradient_start (A only) to mixing_gradient_end
@@ -52,6 +54,9 @@ bool relativeExtrusion(const Settings& global);
 
 /// One scope's schedule (mesh view, or the group's view for non-mesh extrusions).
 MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output);
+
+/// mixing_raft_ratio: the mix the raft is printed with (mixing on).
+MixVector parseRaftMix(const Settings& global, const MixingOutput& output);
 
 /// mixing_chamber_volume in mm³ (0 = no delay compensation); negative values are an error.
 double parseChamberVolumeMm3(const Settings& global);

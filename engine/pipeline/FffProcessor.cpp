@@ -9,6 +9,7 @@
 #include "planning/PrintPlanner.h"
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/GroupToolpaths.h"
+#include "toolpaths/RaftLayout.h"
 
 namespace mixengine {
 namespace {
@@ -29,7 +30,10 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     input.extruders = &scene.machine.extruders;
     input.heights = sliced.heights;
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
-        input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m]});
+        const AABB3 box = group.meshes[m].mesh.bounds();
+        const Point2 middle{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
+        input.meshes.push_back(
+            {&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m], middle});
     }
     const GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
     for (const std::string& warning : toolpaths.warnings)
@@ -39,13 +43,33 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     return planPrint(toolpaths, group.settings, scene.machine.extruders, state);
 }
 
-MixingGroup mixingInput(const SceneGroup& group) {
+/// The mixing stage's view of the group: each mesh's height span as printed, i.e. lifted by the
+/// raft (toolpaths/RaftLayout.h) like the layers whose z the schedules are read at.
+MixingGroup mixingInput(const Scene& scene, const SceneGroup& group) {
     MixingGroup input{&group.settings, {}};
+    const coord_um lift = raftLayout(group.settings, &scene.machine.extruders).modelLiftUm(1);
     for (const SceneMesh& m : group.meshes) {
         const AABB3 box = m.mesh.bounds();
-        input.meshes.push_back({&m.settings, box.min.z, box.max.z});
+        input.meshes.push_back({&m.settings, box.min.z + lift, box.max.z + lift});
     }
     return input;
+}
+
+/// Numbers the plan's layers on from `next_index` (the first group keeps CuraEngine's numbers,
+/// negative raft layers included); returns the index after the last layer.
+int renumber(PrintPlan& plan, int next_index, bool first_group) {
+    if (plan.layers.empty())
+        return next_index;
+    const int offset = first_group ? 0 : next_index - plan.layers.front().index;
+    for (PlannedLayer& layer : plan.layers)
+        layer.index += offset;
+    return plan.layers.back().index + 1;
+}
+
+/// The layers of the model (not the raft's): CuraEngine's ;LAYER_COUNT:.
+int modelLayers(const PrintPlan& plan) {
+    return static_cast<int>(std::count_if(plan.layers.begin(), plan.layers.end(),
+                                          [](const PlannedLayer& layer) { return layer.index >= 0; }));
 }
 
 /// "a.stl", "a.stl, b.stl", or "a.stl, b.stl and 3 more meshes" for messages.
@@ -60,6 +84,22 @@ std::string meshNames(const Scene& scene) {
     if (names.size() > 2)
         text += " and " + std::to_string(names.size() - 2) + " more meshes";
     return text.empty() ? "the scene" : text;
+}
+
+/// As CuraEngine's start: with machine_extruders_share_nozzle every filament is primed and pulled back
+/// machine_extruders_shared_nozzle_initial_retraction; on Griffin the first extruder is primed
+/// (gcode/StartEndCode.h writePrimeTrain). Returns the text for the end of the start code.
+std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& writer, GCodeExport& gcode) {
+    if (scene.machine.global.boolean("machine_extruders_share_nozzle")) {
+        for (std::size_t e = 0; e < scene.machine.extruders.size(); ++e)
+            gcode.assumePrimed(
+                static_cast<int>(e),
+                scene.machine.extruders[e].millimetres("machine_extruders_shared_nozzle_initial_retraction"));
+    }
+    if (!writer.griffin || writer.extruders.empty())
+        return "";
+    writePrimeTrain(writer.extruders.front().prime, true, gcode);
+    return gcode.takeText();
 }
 
 }  // namespace
@@ -101,13 +141,22 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     const Settings& global = scene.machine.global;
     const ExportParams export_params = exportParams(scene);
     GCodeExport gcode(export_params);
+    const StartTemperature start = startNozzleTemperature(global, scene.machine.extruders.front());
+    if (start.set)
+        gcode.assumeNozzleTemperature(0, start.celsius, start.waited);
     const PlanWriterParams writer = writerParams(scene);
+    const std::string prime = primeFirstExtruder(scene, writer, gcode);
     PlannerState state;
+    // As CuraEngine, the first layer is planned from layer_start_x/_y of the first extruder (later
+    // layers go on from where the one before ended).
+    const Settings& first = scene.machine.extruders.front();
+    state.head = {first.lengthMicrons("layer_start_x"), first.lengthMicrons("layer_start_y")};
 
     GCodeOutput output;
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
     output.summary.max = {INT64_MIN, INT64_MIN, INT64_MIN};
-    int layer_offset = 0;
+    int next_index = 0;
+    int model_layers = 0;
     for (const SceneGroup& group : scene.groups) {
         if (group.meshes.empty())
             continue;
@@ -115,12 +164,11 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         SlicedGroup sliced = sliceGroup(group, threads, log);
         log.progress(ProgressStage::Toolpaths, 0.3);
         PrintPlan plan = planGroup(scene, group, sliced, threads, state, log);
-        assignMixes(plan, mixingInput(group), log);
+        assignMixes(plan, mixingInput(scene, group), log);
+        model_layers += modelLayers(plan);
+        next_index = renumber(plan, next_index, output.layer_chunks.empty());
         if (on_plan)
             on_plan(plan);
-        for (PlannedLayer& layer : plan.layers)
-            layer.index += layer_offset;
-        layer_offset += static_cast<int>(plan.layers.size());
         log.progress(ProgressStage::GCode, 0.8);
         WrittenLayers written = writePlan(plan, writer, gcode);
         output.summary.min = {std::min(output.summary.min.x, written.min.x),
@@ -151,7 +199,8 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     output.start = startCode(global, scene.machine.extruders.front(), relative);
     if (!relative)
         output.start += "G92 E0\n";
-    output.start += ";LAYER_COUNT:" + std::to_string(output.layer_chunks.size()) + "\n";
+    output.start += prime;
+    output.start += ";LAYER_COUNT:" + std::to_string(model_layers) + "\n";  // as CuraEngine: not the raft's
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
     log.progress(ProgressStage::Done, 1.0);
     return output;

@@ -19,10 +19,13 @@ struct SlicedGroup {
 };
 
 struct GCodeOutput {
-    std::string header;                     ///< ;FLAVOR: … or the Griffin block (Cura's GCodePrefix)
-    std::string start;                      ///< start code + ;LAYER_COUNT: (the first layer chunk)
-    std::vector<std::string> layer_chunks;  ///< one per layer, ";LAYER:n" first
-    std::string suffix;                     ///< end code
+    std::string header;  ///< ;FLAVOR: … or the Griffin block (Cura's GCodePrefix)
+    /// Start code + ;LAYER_COUNT: — the model's layers, without the raft's, as CuraEngine counts.
+    std::string start;
+    /// One per layer, ";LAYER:n" first; under a raft the first group's raft layers are numbered
+    /// below 0 as CuraEngine numbers them, and later groups' layers number on.
+    std::vector<std::string> layer_chunks;
+    std::string suffix;  ///< end code
     PrintSummary summary;
 
     std::string joined() const;

@@ -37,19 +37,61 @@ ExportParams exportParams(const Scene& scene) {
     p.retraction_speed_mm_s = e0.velocityMmPerS("retraction_retract_speed");
     p.prime_speed_mm_s = e0.velocityMmPerS("retraction_prime_speed");
     p.retraction_hop_um = e0.boolean("retraction_hop_enabled") ? e0.lengthMicrons("retraction_hop") : 0;
+    p.retraction_extra_prime_mm3 = e0.real("retraction_extra_prime_amount");
+    p.z_hop_speed_mm_s = e0.velocityMmPerS("speed_z_hop");
     p.firmware_retract = e0.has("machine_firmware_retract") && e0.boolean("machine_firmware_retract");
-    if (e0.has("retraction_extra_prime_amount"))
-        p.extra_prime_mm3 = std::max(0.0, e0.real("retraction_extra_prime_amount"));
+    p.temperatures = temperatureCommandParams(scene);
+    p.fan_number = static_cast<int>(e0.integer("machine_extruder_cooling_fan_number"));
     p.kinematics = kinematicsOf(global);
     p.mixing = parseMixingOutput(global);
     p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
+    p.makerbot_fan = global.text("machine_gcode_flavor") == "Makerbot";
     return p;
+}
+
+TemperatureCommandParams temperatureCommandParams(const Scene& scene) {
+    const Settings& global = scene.machine.global;
+    TemperatureCommandParams t;
+    t.m105_before_wait = global.text("machine_gcode_flavor") == "RepRap (Marlin/Sprinter)";
+    t.share_heater = global.boolean("machine_extruders_share_heater");
+    t.always_write_active_tool = global.boolean("machine_always_write_active_tool");
+    for (const Settings& e : scene.machine.extruders)
+        t.controlled.push_back(e.boolean("machine_nozzle_temp_enabled"));
+    return t;
+}
+
+RetractionConfig travelRetraction(const Settings& e) {
+    return {e.boolean("retraction_enable") ? e.millimetres("retraction_amount") : 0.0,
+            e.velocityMmPerS("retraction_retract_speed"), e.velocityMmPerS("retraction_prime_speed"),
+            e.real("retraction_extra_prime_amount")};
+}
+
+PrimeTrain primeTrain(const Settings& e) {
+    PrimeTrain prime;
+    prime.blob = e.boolean("prime_blob_enable");
+    prime.position_um = {e.lengthMicrons("extruder_prime_pos_x"), e.lengthMicrons("extruder_prime_pos_y")};
+    prime.absolute = e.boolean("extruder_prime_pos_abs");
+    prime.travel_speed_mm_s = e.velocityMmPerS("speed_travel");
+    return prime;
+}
+
+/// What switching away from / to train `e` does besides the tool change itself.
+void switchParams(const Settings& e, ExtruderOutput& out) {
+    out.retraction_enabled = e.boolean("retraction_enable");
+    out.switch_retraction = {e.millimetres("switch_extruder_retraction_amount"),
+                             e.velocityMmPerS("switch_extruder_retraction_speed"),
+                             e.velocityMmPerS("switch_extruder_prime_speed"), 0.0};
+    if (e.boolean("retraction_hop_after_extruder_switch"))
+        out.switch_hop_um = e.lengthMicrons("retraction_hop_after_extruder_switch_height");
+    out.switch_extra_prime_mm3 = e.real("switch_extruder_extra_prime_amount");
+    out.prime = primeTrain(e);
 }
 
 PlanWriterParams writerParams(const Scene& scene) {
     const Settings& global = scene.machine.global;
     PlanWriterParams writer;
     writer.layer_change_speed_mm_s = global.velocityMmPerS("speed_z_hop");
+    writer.griffin = global.text("machine_gcode_flavor") == "Griffin";
     const bool offset_coords = !global.has("machine_use_extruder_offset_to_offset_coords") ||
                                global.boolean("machine_use_extruder_offset_to_offset_coords");
     for (std::size_t i = 0; i < scene.machine.extruders.size(); ++i) {
@@ -61,12 +103,13 @@ PlanWriterParams writerParams(const Scene& scene) {
             out.change.nozzle_offset_um = {e.lengthMicrons("machine_nozzle_offset_x"),
                                            e.lengthMicrons("machine_nozzle_offset_y")};
         }
+        out.change.retraction = travelRetraction(e);
+        out.change.retraction_hop_um =
+            e.boolean("retraction_hop_enabled") ? e.lengthMicrons("retraction_hop") : 0;
+        out.change.fan_number = static_cast<int>(e.integer("machine_extruder_cooling_fan_number"));
         out.start_code = e.text("machine_extruder_start_code");
         out.end_code = e.text("machine_extruder_end_code");
-        if (scene.machine.extruders.size() > 1) {
-            out.print_temperature_c = e.temperatureCelsius("material_print_temperature");
-            out.standby_temperature_c = e.temperatureCelsius("material_standby_temperature");
-        }
+        switchParams(e, out);
         writer.extruders.push_back(std::move(out));
     }
     return writer;

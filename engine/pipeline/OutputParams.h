@@ -14,7 +14,13 @@ Kinematics kinematicsOf(const Settings& global);
 
 ExportParams exportParams(const Scene& scene);
 
+/// How nozzle temperature commands are written (flavor, shared heater, active tool, nozzle control).
+TemperatureCommandParams temperatureCommandParams(const Scene& scene);
+
 PlanWriterParams writerParams(const Scene& scene);
+
+/// An extruder's prime train (prime_blob_enable, extruder_prime_pos_*, speed_travel).
+PrimeTrain primeTrain(const Settings& extruder);
 
 /// Fills summary.machine_name, build plate and summary.extruders (Griffin / UltiGCode headers);
 /// summary.filament_per_extruder must already hold one value per extruder train.

@@ -51,7 +51,7 @@ double fanRatio(const CoolingParams& p, int layer, double seconds) {
     const int full = p.fan_full_layer - 1;  // 0-based layer at full speed
     if (layer >= full || full <= 0)
         return regular;
-    return p.fan_first_ratio + (regular - p.fan_first_ratio) * double(layer) / double(full);
+    return p.fan_first_ratio + (regular - p.fan_first_ratio) * double(std::max(layer, 0)) / double(full);
 }
 
 /// The lift at the end of a layer `extra_s` too short: 20 mm from the head's last position towards
@@ -77,6 +77,18 @@ PlanStep liftHead(const PlannedLayer& layer, Point2 head, const CoolingParams& p
 }
 
 }  // namespace
+
+CoolingParams raftCooling(const CoolingParams& model, double raft_fan_ratio) {
+    CoolingParams p = model;
+    if (!p.fan_enabled) {  // CuraEngine zeroes the fan speeds, then sets the raft's
+        p.fan_enabled = true;
+        p.fan_max_ratio = 0;
+    }
+    p.fan_min_ratio = raft_fan_ratio;
+    p.fan_first_ratio = raft_fan_ratio;
+    p.fan_full_layer = 0;
+    return p;
+}
 
 std::vector<double> stepSeconds(const PlannedLayer& layer, Point2 head) {
     std::vector<double> seconds(layer.steps.size(), 0.0);

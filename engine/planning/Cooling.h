@@ -5,7 +5,10 @@
 //     cool_min_speed (travel keeps its speed);
 //   - fan: from cool_fan_full_layer on, cool_fan_speed_min for layers that take at least
 //     cool_min_layer_time_fan_speed_max, cool_fan_speed_max for layers at or under
-//     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0;
+//     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0
+//     (layers below the model — raft filler layers — count as layer 0);
+//   - raft layers (raftCooling): their raft_*_fan_speed replaces cool_fan_speed_min and there is no
+//     ramp, as CuraEngine 4.13 cools them; the minimum layer time and cool_fan_speed_max still apply;
 //   - cool_lift_head: when the layer still takes more than 0.1 s less than cool_min_layer_time once
 //     slowed down, the layer ends with a LiftHead step (as CuraEngine 4.13: retract, lift 3 mm, move
 //     20 mm towards the middle of the bed, wait out the rest).
@@ -32,6 +35,9 @@ struct CoolingParams {
 };
 
 CoolingParams coolingParams(const Settings& settings);
+
+/// The model's cooling for a raft layer printed with `raft_fan_ratio` (0..1).
+CoolingParams raftCooling(const CoolingParams& model, double raft_fan_ratio);
 
 /// Seconds each step takes at its planned speed (index = step; 0 for markers), the head at `start`.
 std::vector<double> stepSeconds(const PlannedLayer& layer, Point2 start);

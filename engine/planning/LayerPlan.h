@@ -18,11 +18,12 @@ struct PlanStep {
         SetMesh,               ///< ;MESH: marker (mesh_index −1 = NONMESH)
         SetFan,                ///< fan to `fan_ratio` (0..1)
         SetExtruder,           ///< tool change to `extruder`
-        SetNozzleTemperature,  ///< M104 `temperature_c` for the active extruder, without waiting
+        SetNozzleTemperature,  ///< `temperature_c` for nozzle `extruder` (−1: the active one); `wait`: M109
         SetBedTemperature,     ///< M140 `temperature_c`, without waiting
         /// cool_lift_head on a layer too short even slowed down: retract, lift the head 3 mm, travel
         /// to `to` at `speed_mm_s` and wait `dwell_seconds` (G4)
         LiftHead,
+        Prime,  ///< first use of the active extruder: its prime (G280 on Griffin), then a retraction
     };
     Kind kind = Kind::Travel;
     Point2 to{};
@@ -32,17 +33,21 @@ struct PlanStep {
     Feature feature = Feature::Fill;
     int mesh_index = -1;
     double fan_ratio = 0;
-    int extruder = 0;
+    int extruder = 0;  ///< SetExtruder: the new one; SetNozzleTemperature: the nozzle (−1 = active)
     double temperature_c = 0;
     double dwell_seconds = 0;       ///< LiftHead
+    bool wait = false;              ///< SetNozzleTemperature: wait until it is reached (M109)
     double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
     int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
 };
 
 struct PlannedLayer {
+    /// CuraEngine's layer number: 0 is the model's first layer; raft and raft filler layers below
+    /// it are negative (;LAYER:-6 … ;LAYER:-1).
     int index = 0;
-    coord_um z = 0;  ///< nozzle height
+    coord_um z = 0;          ///< nozzle height
+    coord_um thickness = 0;  ///< height of the extruded lines (0 = the distance to the layer below)
     std::vector<PlanStep> steps;
 };
 

@@ -1,43 +1,51 @@
 #include "planning/Motion.h"
 
 #include <algorithm>
+#include <map>
 #include <string>
 
 namespace mixengine {
 namespace {
 
-/// The key suffix of a feature: acceleration_<suffix>, jerk_<suffix>.
-const char* featureSuffix(Feature feature) {
+/// The acceleration (`kind` "acceleration") or jerk ("jerk") key of an extrusion of `feature`:
+/// <kind>_<feature> (acceleration_wall_0, …, acceleration_ironing), raft_<layer>_<kind> for the raft.
+std::string featureKey(Feature feature, const std::string& kind) {
     switch (feature) {
-        case Feature::WallOuter:
-            return "wall_0";
-        case Feature::WallInner:
-            return "wall_x";
-        case Feature::Skin:
-            return "topbottom";
-        case Feature::Fill:
-            return "infill";
-        case Feature::Support:
-            return "support_infill";
-        case Feature::SupportInterface:
-            return "support_roof";
-        case Feature::Skirt:
-            return "skirt_brim";
-        case Feature::PrimeTower:
-            return "prime_tower";
+        case Feature::RaftBase:
+            return "raft_base_" + kind;
+        case Feature::RaftInterface:
+            return "raft_interface_" + kind;
+        case Feature::RaftSurface:
+            return "raft_surface_" + kind;
+        default:
+            break;
     }
-    return "print";
+    static const std::map<Feature, std::string> suffix{
+        {Feature::WallOuter, "wall_0"},       {Feature::WallInner, "wall_x"},
+        {Feature::Skin, "topbottom"},         {Feature::Fill, "infill"},
+        {Feature::Support, "support_infill"}, {Feature::SupportInterface, "support_roof"},
+        {Feature::Skirt, "skirt_brim"},       {Feature::PrimeTower, "prime_tower"},
+        {Feature::Ironing, "ironing"}};
+    const auto it = suffix.find(feature);
+    return kind + "_" + (it != suffix.end() ? it->second : std::string("print"));
 }
 
-/// `prefix`_`suffix` on `layer`, blended from `prefix`_`first` over the slow-down layers.
-double layerValue(const Settings& s, const std::string& prefix, const std::string& suffix,
-                  const std::string& first, int layer, bool smooth) {
-    const double value = s.real(prefix + "_" + suffix);
-    if (!smooth)
+/// True for the raft's features, which keep their own values on every layer.
+bool isRaft(Feature feature) {
+    return feature == Feature::RaftBase || feature == Feature::RaftInterface ||
+           feature == Feature::RaftSurface;
+}
+
+/// `key` on `layer`, blended from `first_key` over the slow-down layers (`smooth`); layers below
+/// the model (negative) take `key` itself, as CuraEngine does not slow them down.
+double layerValue(const Settings& s, const std::string& key, const std::string& first_key, int layer,
+                  bool smooth) {
+    const double value = s.real(key);
+    if (!smooth || layer < 0)
         return value;
-    const double initial = s.real(prefix + "_" + first);
+    const double initial = s.real(first_key);
     const long long slowdown = s.has("speed_slowdown_layers") ? s.integer("speed_slowdown_layers") : 0;
-    if (layer <= 0)
+    if (layer == 0)
         return initial;
     if (layer >= slowdown)
         return value;
@@ -62,13 +70,15 @@ const Settings& sourceOf(const MotionSources& sources, const Tracker& at, bool t
 void setMotion(PlanStep& step, const MotionSources& sources, const Tracker& at, int layer) {
     const bool travel = step.kind == PlanStep::Kind::Travel;
     const Settings& s = sourceOf(sources, at, travel);
-    const std::string suffix = travel ? "travel" : featureSuffix(at.feature);
-    const std::string first = travel ? "travel_layer_0" : "print_layer_0";
-    const bool smooth = travel || at.feature != Feature::Skirt;
-    if (sources.acceleration_enabled)
-        step.acceleration_mm_s2 = layerValue(s, "acceleration", suffix, first, layer, smooth);
-    if (sources.jerk_enabled)
-        step.jerk_mm_s = layerValue(s, "jerk", suffix, first, layer, smooth);
+    const std::string first = travel ? "_travel_layer_0" : "_print_layer_0";
+    const bool smooth = travel || (at.feature != Feature::Skirt && !isRaft(at.feature));
+    for (const std::string kind : {"acceleration", "jerk"}) {
+        if (!(kind == "acceleration" ? sources.acceleration_enabled : sources.jerk_enabled))
+            continue;
+        const std::string key = travel ? kind + "_travel" : featureKey(at.feature, kind);
+        const double value = layerValue(s, key, kind + first, layer, smooth);
+        (kind == "acceleration" ? step.acceleration_mm_s2 : step.jerk_mm_s) = value;
+    }
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ double distanceUm(const Point2& a, const Point2& b) {
 std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& best_distance) {
     best_distance = std::numeric_limits<double>::max();
     std::size_t best = 0;
-    if (path.closed && path.fixed_start) {
+    if (path.fixed_start) {
         best_distance = distanceUm(head, path.points.front());
         return 0;
     }
@@ -130,22 +130,72 @@ std::vector<bool> entryPaths(const std::vector<ExtrusionPath>& paths) {
     return entry;
 }
 
-/// The nearest path that may be picked, by its nearest end (open lines) or its first vertex (loops,
-/// to keep the search linear in the number of paths); paths.size() when none is left.
+/// The travel length the search compares: straight, or along the comb route when asked for and the
+/// straight travel leaves the comb boundary (100 × straight without a route).
+double orderDistance(const Point2& from, const Point2& to, const TravelParams& params) {
+    const double straight = distanceUm(from, to);
+    if (!params.comb_aware_order || params.comb == nullptr || params.comb->empty() || straight <= 0 ||
+        params.comb->straightInside(from, to))
+        return straight;
+    const std::optional<Path> route = params.comb->route(from, to);
+    if (!route)
+        return straight * 100;
+    double length = 0;
+    Point2 at = from;
+    for (const Point2& p : *route) {
+        length += distanceUm(at, p);
+        at = p;
+    }
+    return length;
+}
+
+/// The distance to a path's nearest end (open lines) or its first vertex (loops, to keep the search
+/// linear in the number of paths); `bound`: the best so far (the comb route is only looked for when
+/// the straight distance beats it).
+double pathDistance(const ExtrusionPath& path, const Point2& from, const TravelParams& params, double bound) {
+    double best = std::numeric_limits<double>::max();
+    const Point2* ends[2] = {&path.points.front(), &path.points.back()};
+    for (std::size_t e = 0; e < (path.closed ? 1U : 2U); ++e) {
+        const double straight = distanceUm(from, *ends[e]);
+        if (straight < std::min(best, bound))
+            best = std::min(best, params.comb_aware_order ? orderDistance(from, *ends[e], params) : straight);
+    }
+    return best;
+}
+
+/// Index of the nearest path not done yet that may be picked (paths.size() when none is left).
 std::size_t nearestEntry(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done,
-                         const std::vector<bool>& entry, const Point2& head) {
+                         const std::vector<bool>& entry, const Point2& from, const TravelParams& params) {
     std::size_t best = paths.size();
     double best_distance = std::numeric_limits<double>::max();
     for (std::size_t i = 0; i < paths.size(); ++i) {
         if (done[i] || !entry[i] || paths[i].points.size() < 2)
             continue;
-        const double d = paths[i].closed ? distanceUm(head, paths[i].points.front())
-                                         : std::min(distanceUm(head, paths[i].points.front()),
-                                                    distanceUm(head, paths[i].points.back()));
+        const double d = pathDistance(paths[i], from, params, best_distance);
         if (d < best_distance)
             best = i, best_distance = d;
     }
     return best;
+}
+
+/// The first path not done yet with at least two points (keep_order), paths.size() when none.
+std::size_t nextInOrder(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done) {
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        if (!done[i] && paths[i].points.size() >= 2)
+            return i;
+    }
+    return paths.size();
+}
+
+/// Where to start `path` seen from `from`: bestStart(), or for an open line with comb-aware order
+/// the end nearer along the comb routes.
+std::size_t startOf(const ExtrusionPath& path, const Point2& from, const TravelParams& params) {
+    double unused = 0;
+    if (!params.comb_aware_order || path.closed || path.fixed_start)
+        return bestStart(path, from, unused);
+    const bool front =
+        orderDistance(from, path.points.front(), params) <= orderDistance(from, path.points.back(), params);
+    return front ? 0 : path.points.size() - 1;
 }
 
 }  // namespace
@@ -160,7 +210,11 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps) {
     std::vector<bool> done(paths.size(), false);
     const std::vector<bool> entry = entryPaths(paths);
-    auto print = [&](std::size_t index, std::size_t start) {
+    const bool keep_order = !paths.empty() && paths.front().keep_order;
+    bool first = true;
+    auto print = [&](std::size_t index) {
+        const Point2 from = first && params.order_from ? *params.order_from : head;
+        first = false;
         done[index] = true;
         if (feature != paths[index].feature) {
             PlanStep marker;
@@ -169,18 +223,19 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
             steps.push_back(marker);
             feature = paths[index].feature;
         }
-        emitPath(paths[index], start, params, head, steps);
+        emitPath(paths[index], startOf(paths[index], from, params), params, head, steps);
     };
     for (;;) {
-        const std::size_t best = nearestEntry(paths, done, entry, head);
+        const Point2 from = first && params.order_from ? *params.order_from : head;
+        const std::size_t best =
+            keep_order ? nextInOrder(paths, done) : nearestEntry(paths, done, entry, from, params);
         if (best == paths.size())
             break;
-        double unused = 0;
-        print(best, bestStart(paths[best], head, unused));
+        print(best);
         const std::uint32_t sequence = paths[best].sequence;
         for (std::size_t j = best + 1; sequence != 0 && j < paths.size(); ++j) {
             if (!done[j] && paths[j].sequence == sequence && paths[j].points.size() >= 2)
-                print(j, bestStart(paths[j], head, unused));
+                print(j);
         }
     }
 }

@@ -4,7 +4,9 @@
 // Greedy nearest neighbour from the current head position: a closed loop may start at any of its
 // vertices (the nearest is taken), an open line at either end. A sequence (ExtrusionPath::sequence)
 // is entered at its first path only and then printed in list order, each line from its end nearer
-// to the head. How each travel goes and whether it retracts: planning/TravelRoute.h.
+// to the head; a group whose paths have keep_order (monotonic ironing) is printed in its own order,
+// only each path's start is chosen. TravelParams can move the first search's starting point and make
+// distances follow the comb routes. How each travel goes and whether it retracts: planning/TravelRoute.h.
 #include <optional>
 #include <vector>
 

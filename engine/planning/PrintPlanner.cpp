@@ -8,6 +8,7 @@
 #include "planning/Cooling.h"
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
+#include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 #include "toolpaths/PolygonOps.h"
 
@@ -80,27 +81,43 @@ struct LayerContext {
     const CombBoundary* free = nullptr;  ///< outside the parts grown by travel_avoid_distance
 };
 
+/// One group of a mesh's paths on a layer, printed together.
+struct OrderedGroup {
+    std::vector<ExtrusionPath> paths;
+    bool infill = false;  ///< ordered as infill (infillTravel)
+};
+
 /// The order of a mesh's groups on a layer: walls (inner first, or outer first — outerWallFirst),
-/// skin, infill — infill first with infill_before_walls. Walls grouped by outline (sequences,
-/// optimize_wall_printing_order) are one group, so that each outline's loops print together.
-std::vector<std::vector<ExtrusionPath>> groupOrder(const MeshLayerGroups& g, const Settings& s, int layer) {
+/// skin, infill — infill first with infill_before_walls — and ironing last. Walls grouped by outline
+/// (sequences, optimize_wall_printing_order) are one group, so that each outline's loops print together.
+std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s, int layer) {
     const bool outer_first = outerWallFirst(s, layer);
     const std::vector<ExtrusionPath>& first = outer_first ? g.outer_walls : g.inner_walls;
     const std::vector<ExtrusionPath>& second = outer_first ? g.inner_walls : g.outer_walls;
     const auto grouped = [](const ExtrusionPath& p) { return p.sequence != 0; };
-    std::vector<std::vector<ExtrusionPath>> order;
+    std::vector<OrderedGroup> order;
     if (std::any_of(first.begin(), first.end(), grouped) ||
         std::any_of(second.begin(), second.end(), grouped)) {
-        order.push_back(first);
-        order.back().insert(order.back().end(), second.begin(), second.end());
+        order.push_back({first});
+        order.back().paths.insert(order.back().paths.end(), second.begin(), second.end());
     } else {
-        order = {first, second};
+        order = {{first}, {second}};
     }
-    order.push_back(g.skin);
-    order.push_back(g.infill);
+    order.push_back({g.skin});
+    order.push_back({g.infill, true});
     if (s.has("infill_before_walls") && s.boolean("infill_before_walls"))
         std::rotate(order.begin(), order.end() - 1, order.end());
+    order.push_back({g.ironing});
     return order;
+}
+
+/// The infill's ordering: from its random start (infill_randomize_start_location), by comb
+/// distances (infill_enable_travel_optimization).
+TravelParams infillTravel(TravelParams travel, const MeshLayerGroups& groups, const Settings& s) {
+    travel.order_from = groups.infill_start;
+    travel.comb_aware_order =
+        s.has("infill_enable_travel_optimization") && s.boolean("infill_enable_travel_optimization");
+    return travel;
 }
 
 void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
@@ -109,14 +126,16 @@ void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext
     const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb, ctx.free);
     std::optional<Feature> feature;
     bool marked = false;
-    for (const std::vector<ExtrusionPath>& group : groupOrder(groups, *mesh.settings, ctx.layer)) {
-        std::vector<ExtrusionPath> selected = ofExtruder(group, ctx.extruder);
+    for (const OrderedGroup& group : groupOrder(groups, *mesh.settings, ctx.layer)) {
+        std::vector<ExtrusionPath> selected = ofExtruder(group.paths, ctx.extruder);
         if (selected.empty())
             continue;
         if (!marked)
             addMeshMarker(mesh_index, planned.steps);
         marked = true;
-        appendOrderedPaths(std::move(selected), travel, head, feature, planned.steps);
+        appendOrderedPaths(std::move(selected),
+                           group.infill ? infillTravel(travel, groups, *mesh.settings) : travel, head,
+                           feature, planned.steps);
     }
 }
 
@@ -152,6 +171,230 @@ void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
     }
 }
 
+/// Per extruder: the last layer on which it prints a model, support or adhesion (−1: none).
+std::vector<int> lastPrintLayers(const GroupToolpaths& toolpaths, std::size_t extruder_count) {
+    std::vector<int> last(extruder_count, -1);
+    auto note = [&](const std::vector<ExtrusionPath>& paths, std::size_t layer) {
+        for (const ExtrusionPath& path : paths) {
+            const auto e = static_cast<std::size_t>(std::max(path.extruder, 0));
+            if (e < last.size())
+                last[e] = std::max(last[e], static_cast<int>(layer));
+        }
+    };
+    note(toolpaths.adhesion, 0);
+    for (std::size_t l = 0; l < toolpaths.support.size(); ++l)
+        note(toolpaths.support[l], l);
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        for (std::size_t l = 0; l < mesh.layers.size(); ++l) {
+            const MeshLayerGroups& g = mesh.layers[l];
+            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+                note(*group, l);
+        }
+    }
+    return last;
+}
+
+void planNozzleTemperatures(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings& global,
+                            const std::vector<Settings>& extruders, const std::set<int>& used,
+                            int start_extruder, Point2 start) {
+    const int only = used.size() == 1 ? *used.begin() : start_extruder;
+    planTemperatures(plan, temperatureParams(global, extruders[trainOf(only, extruders)]), used.size() == 1,
+                     start);
+    if (used.size() <= 1)
+        return;
+    SwitchTemperatureParams params;
+    params.trains = trainTemperatureParams(extruders);
+    params.share_heater = global.boolean("machine_extruders_share_heater");
+    params.last_layer = lastPrintLayers(toolpaths, extruders.size());
+    planSwitchTemperatures(plan, params, start_extruder, start);
+}
+
+/// The outermost extruder of the prime tower prints its rings on every layer up to the last one on
+/// which two or more extruders print, any extruder when it is switched to on the layer (as CuraEngine).
+bool printsTower(const GroupToolpaths& t, const LayerContext& ctx, bool switched) {
+    const auto i = static_cast<std::size_t>(ctx.layer);
+    if (i >= t.prime_tower.size() || t.prime_tower[i].empty())
+        return false;
+    return switched ||
+           (ctx.extruder == t.prime_tower_outermost && ctx.layer <= t.prime_tower_last_forced_layer);
+}
+
+/// prime_tower_wipe_enabled of the extruder switched away from: a travel to the tower's middle,
+/// where the old nozzle would be (CuraEngine's post-wipe point).
+void wipeOnTower(const GroupToolpaths& t, const std::vector<Settings>& extruders, int previous,
+                 const LayerContext& ctx, Point2& head, PlannedLayer& planned) {
+    const Settings& old = extruders[trainOf(previous, extruders)];
+    if (ctx.layer == 0 || previous == ctx.extruder || !old.boolean("prime_tower_wipe_enabled"))
+        return;
+    const Settings& now = *ctx.extruder_settings;
+    PlanStep travel;
+    travel.kind = PlanStep::Kind::Travel;
+    travel.to = {t.prime_tower_middle.X - old.lengthMicrons("machine_nozzle_offset_x") +
+                     now.lengthMicrons("machine_nozzle_offset_x"),
+                 t.prime_tower_middle.Y - old.lengthMicrons("machine_nozzle_offset_y") +
+                     now.lengthMicrons("machine_nozzle_offset_y")};
+    travel.speed_mm_s = travelParams(now, ctx.layer, ctx.thickness, nullptr, nullptr).travel_speed_mm_s;
+    planned.steps.push_back(travel);
+    head = travel.to;
+}
+
+/// What one extruder prints on a layer, in CuraEngine's order: on layer 0 the skirt or brim, the
+/// ooze shield, its prime tower rings (and the wipe), its support, then every mesh.
+void planExtruderOnLayer(const GroupToolpaths& t, const std::vector<Settings>& extruders,
+                         const LayerContext& ctx, int previous, Point2& head, PlannedLayer& planned) {
+    const auto i = static_cast<std::size_t>(ctx.layer);
+    if (i == 0)
+        planNonMesh(t.adhesion, ctx, head, planned);
+    if (i < t.ooze_shield.size())
+        planNonMesh(t.ooze_shield[i], ctx, head, planned);
+    const bool switched = ctx.extruder != previous;
+    if (printsTower(t, ctx, switched)) {
+        planNonMesh(t.prime_tower[i], ctx, head, planned);
+        if (switched)
+            wipeOnTower(t, extruders, previous, ctx, head, planned);
+    }
+    if (i < t.support.size())
+        planNonMesh(t.support[i], ctx, head, planned);
+    for (std::size_t m = 0; m < t.meshes.size(); ++m)
+        planMeshLayer(t.meshes[m], static_cast<int>(m), ctx, head, planned);
+}
+
+/// machine_extruder_end_pos_* / _start_pos_* of train `s` (_abs: a head position, so plus the
+/// train's nozzle offset; else relative to `from`).
+Point2 extruderPosition(const Settings& s, const char* which, Point2 from) {
+    const std::string key = std::string("machine_extruder_") + which + "_pos_";
+    const Point2 pos{s.lengthMicrons(key + "x"), s.lengthMicrons(key + "y")};
+    if (!s.boolean(key + "abs"))
+        return {from.X + pos.X, from.Y + pos.Y};
+    return {pos.X + s.lengthMicrons("machine_nozzle_offset_x"),
+            pos.Y + s.lengthMicrons("machine_nozzle_offset_y")};
+}
+
+/// A SetExtruder step, and a Prime step when the extruder was not used before in the print. As
+/// CuraEngine, the old extruder first travels to its end position and the new one starts planning
+/// from its start position.
+void switchTo(int extruder, const std::vector<Settings>& extruders, PlannerState& state,
+              std::vector<PlanStep>& steps) {
+    const Settings& old = extruders[trainOf(state.extruder, extruders)];
+    PlanStep end;
+    end.kind = PlanStep::Kind::Travel;
+    end.to = extruderPosition(old, "end", state.head);
+    end.speed_mm_s = old.velocityMmPerS("speed_travel");
+    end.retract = old.boolean("retraction_enable") && end.to != state.head;
+    steps.push_back(end);
+    state.head = extruderPosition(extruders[trainOf(extruder, extruders)], "start", end.to);
+    PlanStep change;
+    change.kind = PlanStep::Kind::SetExtruder;
+    change.extruder = extruder;
+    steps.push_back(change);
+    state.extruder = extruder;
+    if (state.primed.insert(extruder).second) {
+        PlanStep prime;
+        prime.kind = PlanStep::Kind::Prime;
+        prime.extruder = extruder;
+        steps.push_back(prime);
+    }
+}
+
+/// What every layer of one planPrint call shares.
+struct PlanRun {
+    const GroupToolpaths& toolpaths;
+    const std::vector<Settings>& extruders;
+    CoolingParams cooling;
+    MotionSources motion;
+    std::set<int> used;
+    PlannerState& state;
+    coord_um avoid_distance_um = 0;  ///< travel_avoid_distance
+};
+
+/// Starts `planned` with its fan step.
+PlannedLayer startLayer(int index, coord_um z, coord_um thickness) {
+    PlannedLayer planned;
+    planned.index = index;
+    planned.z = z;
+    planned.thickness = thickness;
+    PlanStep fan;
+    fan.kind = PlanStep::Kind::SetFan;
+    planned.steps.push_back(fan);
+    return planned;
+}
+
+/// Switches to `extruder` (switchTo() when it is not the active one).
+void useExtruder(int extruder, PlannedLayer& planned, PlanRun& run) {
+    run.used.insert(extruder);
+    if (extruder != run.state.extruder)
+        switchTo(extruder, run.extruders, run.state, planned.steps);
+}
+
+/// Retraction at the layer start (not on the print's first layer), cooling and acceleration/jerk.
+void finishLayer(PlannedLayer& planned, bool after_first, int layer_extruder, Point2 layer_start,
+                 const CoolingParams& cooling, PlanRun& run) {
+    if (after_first)
+        retractAtLayerStart(planned, run.extruders[trainOf(layer_extruder, run.extruders)]);
+    applyCooling(planned, layer_start, cooling);
+    assignMotion(planned, run.motion, layer_extruder);
+}
+
+/// As CuraEngine: travel on the raft combs inside its outline grown by 0.1 mm unless combing is off.
+constexpr coord_um kRaftCombMarginUm = 100;
+
+bool combsOnRaft(const Settings& global) {
+    return !global.has("retraction_combing") || global.text("retraction_combing") != "off";
+}
+
+/// A raft or filler layer: its paths, extruder by extruder (the active one first), loops before
+/// lines (the raft base's outline, then its lines, as CuraEngine), without mesh markers; the
+/// raft's own fan.
+PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, bool after_first, PlanRun& run) {
+    const Point2 layer_start = run.state.head;
+    const int layer_extruder = run.state.extruder;
+    PlannedLayer planned = startLayer(layer.index, layer.z_um, layer.thickness_um);
+    std::set<int> extruders;
+    collectExtruders(layer.paths, extruders);
+    std::vector<int> order;
+    if (extruders.erase(run.state.extruder))
+        order.push_back(run.state.extruder);
+    order.insert(order.end(), extruders.begin(), extruders.end());
+    for (int extruder : order) {
+        useExtruder(extruder, planned, run);
+        const Settings& train = run.extruders[trainOf(extruder, run.extruders)];
+        const TravelParams travel =
+            travelParams(train, layer.index, layer.thickness_um, comb.empty() ? nullptr : &comb, nullptr);
+        std::vector<ExtrusionPath> loops = ofExtruder(layer.paths, extruder), lines;
+        const auto open = std::stable_partition(loops.begin(), loops.end(),
+                                                [](const ExtrusionPath& path) { return path.closed; });
+        lines.assign(std::make_move_iterator(open), std::make_move_iterator(loops.end()));
+        loops.erase(open, loops.end());
+        std::optional<Feature> feature;
+        appendOrderedPaths(std::move(loops), travel, run.state.head, feature, planned.steps);
+        appendOrderedPaths(std::move(lines), travel, run.state.head, feature, planned.steps);
+    }
+    const CoolingParams cooling =
+        layer.fan_ratio >= 0 ? raftCooling(run.cooling, layer.fan_ratio) : run.cooling;
+    finishLayer(planned, after_first, layer_extruder, layer_start, cooling, run);
+    return planned;
+}
+
+/// Model layer `i`: what each extruder prints on it (planExtruderOnLayer), the active one first.
+PlannedLayer planModelLayer(std::size_t i, bool after_first, PlanRun& run) {
+    const GroupToolpaths& toolpaths = run.toolpaths;
+    const LayerZ& height = toolpaths.heights[i];
+    const Point2 layer_start = run.state.head;
+    const CombBoundary comb(combArea(toolpaths, i));
+    const CombBoundary free(freeSpace(partOutlines(toolpaths, i), run.avoid_distance_um));
+    const int layer_extruder = run.state.extruder;
+    PlannedLayer planned = startLayer(static_cast<int>(i), height.print_z, height.print_z - height.bottom_z);
+    for (int extruder : extruderOrder(toolpaths, i, run.state.extruder)) {
+        useExtruder(extruder, planned, run);
+        const LayerContext ctx{planned.index, planned.thickness,
+                               extruder,      &run.extruders[trainOf(extruder, run.extruders)],
+                               &comb,         free.empty() ? nullptr : &free};
+        planExtruderOnLayer(toolpaths, run.extruders, ctx, layer_extruder, run.state.head, planned);
+    }
+    finishLayer(planned, after_first, layer_extruder, layer_start, run.cooling, run);
+    return planned;
+}
+
 }  // namespace
 
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active) {
@@ -160,9 +403,12 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
         collectExtruders(toolpaths.adhesion, used);
     if (layer < toolpaths.support.size())
         collectExtruders(toolpaths.support[layer], used);
+    if (static_cast<int>(layer) <= toolpaths.prime_tower_last_forced_layer &&
+        toolpaths.prime_tower_outermost >= 0)
+        used.insert(toolpaths.prime_tower_outermost);
     for (const MeshToolpaths& mesh : toolpaths.meshes) {
         const MeshLayerGroups& g = mesh.layers[layer];
-        for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+        for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill, &g.ironing})
             collectExtruders(*group, used);
     }
     std::vector<int> order;
@@ -214,64 +460,31 @@ Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um) {
 
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                     const std::vector<Settings>& extruders, PlannerState& state) {
-    const std::vector<LayerZ>& heights = toolpaths.heights;
     PrintPlan plan;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         plan.mesh_names.push_back(mesh.name);
-    const CoolingParams cooling = coolingParams(global);
     const Point2 print_start = state.head;
-    std::set<int> used;
     std::vector<const Settings*> mesh_settings;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         mesh_settings.push_back(mesh.settings);
-    const MotionSources motion = motionSources(global, std::move(mesh_settings), extruders);
-    const coord_um avoid_distance_um =
-        global.has("travel_avoid_distance") ? global.lengthMicrons("travel_avoid_distance") : 0;
-    for (std::size_t i = 0; i < heights.size(); ++i) {
-        const Point2 layer_start = state.head;
-        const CombBoundary comb(combArea(toolpaths, i));
-        const CombBoundary free(freeSpace(partOutlines(toolpaths, i), avoid_distance_um));
-        const int layer_extruder = state.extruder;
-        PlannedLayer planned;
-        planned.index = static_cast<int>(i);
-        planned.z = heights[i].print_z;
-        PlanStep fan;
-        fan.kind = PlanStep::Kind::SetFan;
-        planned.steps.push_back(fan);
-        for (int extruder : extruderOrder(toolpaths, i, state.extruder)) {
-            used.insert(extruder);
-            if (extruder != state.extruder) {
-                PlanStep change;
-                change.kind = PlanStep::Kind::SetExtruder;
-                change.extruder = extruder;
-                planned.steps.push_back(change);
-                state.extruder = extruder;
-            }
-            const std::size_t train =
-                std::min<std::size_t>(static_cast<std::size_t>(extruder), extruders.size() - 1);
-            const LayerContext ctx{planned.index, heights[i].print_z - heights[i].bottom_z,
-                                   extruder,      &extruders[train],
-                                   &comb,         free.empty() ? nullptr : &free};
-            if (i < toolpaths.prime_tower.size())
-                planNonMesh(toolpaths.prime_tower[i], ctx, state.head, planned);
-            if (i < toolpaths.ooze_shield.size())
-                planNonMesh(toolpaths.ooze_shield[i], ctx, state.head, planned);
-            if (i == 0)
-                planNonMesh(toolpaths.adhesion, ctx, state.head, planned);
-            if (i < toolpaths.support.size())
-                planNonMesh(toolpaths.support[i], ctx, state.head, planned);
-            for (std::size_t m = 0; m < toolpaths.meshes.size(); ++m)
-                planMeshLayer(toolpaths.meshes[m], static_cast<int>(m), ctx, state.head, planned);
-        }
-        if (i > 0)
-            retractAtLayerStart(planned, extruders[trainOf(layer_extruder, extruders)]);
-        applyCooling(planned, layer_start, cooling);
-        assignMotion(planned, motion, layer_extruder);
-        plan.layers.push_back(std::move(planned));
+    const int start_extruder = state.extruder;
+    PlanRun run{toolpaths,
+                extruders,
+                coolingParams(global),
+                motionSources(global, std::move(mesh_settings), extruders),
+                {},
+                state,
+                global.has("travel_avoid_distance") ? global.lengthMicrons("travel_avoid_distance") : 0};
+    if (!toolpaths.raft.empty()) {
+        const Paths comb_area =
+            combsOnRaft(global) ? offsetPolygons(toolpaths.raft_outline, kRaftCombMarginUm) : Paths{};
+        const CombBoundary raft_comb(comb_area);
+        for (const RaftLayer& layer : toolpaths.raft)
+            plan.layers.push_back(planRaftLayer(layer, raft_comb, !plan.layers.empty(), run));
     }
-    const int only = used.size() == 1 ? *used.begin() : state.extruder;
-    const std::size_t train = std::min<std::size_t>(static_cast<std::size_t>(only), extruders.size() - 1);
-    planTemperatures(plan, temperatureParams(global, extruders[train]), used.size() == 1, print_start);
+    for (std::size_t i = 0; i < toolpaths.heights.size(); ++i)
+        plan.layers.push_back(planModelLayer(i, !plan.layers.empty(), run));
+    planNozzleTemperatures(plan, toolpaths, global, extruders, run.used, start_extruder, print_start);
     return plan;
 }
 

@@ -1,11 +1,18 @@
 #pragma once
-// Planning: the toolpaths of a mesh group become ordered steps per layer. On each layer the
+// Planning: the toolpaths of a mesh group become ordered steps per layer. The layers below the
+// model come first (GroupToolpaths::raft: raft and filler layers, with their negative numbers, own
+// thickness and — raft layers — own fan, planning/Cooling.h); travel on them combs inside the raft's
+// outline grown by 0.1 mm (unless retraction_combing is off), as CuraEngine. On each layer the
 // extruders print one after the other, the one already active first (fewest tool changes); each
-// extruder prints its prime tower and ooze shield, the skirt/brim (layer 0), its support, then
-// every mesh in order — inner walls, outer walls, skin, infill — with travel, retraction and the fan.
+// extruder prints the skirt/brim (layer 0), the ooze shield, its prime tower rings — when it was
+// switched to on the layer, or as the tower's outermost extruder, then (prime_tower_wipe_enabled of
+// the extruder left) a travel to the tower's middle — its support, then every mesh in order —
+// inner walls, outer walls, skin, infill — with travel, retraction and the fan.
+// The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).
 // Travel combs inside the layer's comb area (combArea: per mesh by its retraction_combing mode),
 // even-odd (planning/CombBoundary.h), and goes around the parts through the air with
 // travel_avoid_other_parts (freeSpace; planning/TravelRoute.h).
+#include <set>
 #include <vector>
 
 #include "planning/LayerPlan.h"
@@ -15,12 +22,13 @@
 namespace mixengine {
 
 struct PlannerState {
-    Point2 head{0, 0};
-    int extruder = 0;  ///< the active extruder (carried from group to group)
+    Point2 head{0, 0};        ///< where planning goes on from (at the start: layer_start_x/_y)
+    int extruder = 0;         ///< the active extruder (carried from group to group)
+    std::set<int> primed{0};  ///< extruders primed already (the start code primes the first)
 };
 
-/// One PlannedLayer per toolpaths.heights entry. retraction_combing "off" (or a layer without
-/// outlines) → every long travel retracts.
+/// One PlannedLayer per toolpaths.raft entry, then one per toolpaths.heights entry.
+/// retraction_combing "off" (or a layer without outlines) → every long travel retracts.
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                     const std::vector<Settings>& extruders, PlannerState& state);
 

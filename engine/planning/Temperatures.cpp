@@ -36,7 +36,12 @@ TemperatureParams temperatureParams(const Settings& global, const Settings& extr
     p.heated_bed = global.boolean("machine_heated_bed");
     p.bed_c = global.temperatureCelsius("material_bed_temperature");
     p.bed_layer0_c = global.temperatureCelsius("material_bed_temperature_layer_0");
-    NozzleTemperatureParams& n = p.nozzle;
+    p.nozzle = nozzleTemperatureParams(extruder);
+    return p;
+}
+
+NozzleTemperatureParams nozzleTemperatureParams(const Settings& extruder) {
+    NozzleTemperatureParams n;
     n.enabled = extruder.boolean("machine_nozzle_temp_enabled");
     n.print_c = extruder.temperatureCelsius("material_print_temperature");
     n.layer0_c = extruder.temperatureCelsius("material_print_temperature_layer_0");
@@ -46,7 +51,7 @@ TemperatureParams temperatureParams(const Settings& global, const Settings& extr
     n.heat_up_c_per_s = extruder.real("machine_nozzle_heat_up_speed");
     n.cool_down_c_per_s = extruder.real("machine_nozzle_cool_down_speed");
     n.extrusion_cool_c_per_s = extruder.real("material_extrusion_cool_down_speed");
-    return p;
+    return n;
 }
 
 double flowTemperature(const NozzleTemperatureParams& p, double flow_mm3_s) {
@@ -76,9 +81,11 @@ double secondsBetween(const NozzleTemperatureParams& p, double from_c, double to
     return speed > 0 ? std::abs(to_c - from_c) / speed : 0.0;
 }
 
-/// The temperature a layer wants: its average flow through the graph (layer 0: the layer-0 value).
-double wantedTemperature(const NozzleTemperatureParams& p, const PlannedLayer& layer, Point2 start) {
-    if (layer.index == 0 && p.layer0_c != 0)
+/// The temperature a layer wants: its average flow through the graph (the plan's first layer — the
+/// raft's base under a raft — the layer-0 value).
+double wantedTemperature(const NozzleTemperatureParams& p, const PlannedLayer& layer, Point2 start,
+                         bool first) {
+    if (first && p.layer0_c != 0)
         return p.layer0_c;
     if (!p.flow_dependent)
         return p.print_c;
@@ -96,6 +103,7 @@ double wantedTemperature(const NozzleTemperatureParams& p, const PlannedLayer& l
 PlanStep temperatureStep(PlanStep::Kind kind, double celsius) {
     PlanStep step;
     step.kind = kind;
+    step.extruder = -1;  // the active nozzle
     step.temperature_c = celsius;
     return step;
 }
@@ -128,9 +136,9 @@ void planNozzle(PrintPlan& plan, const NozzleTemperatureParams& p, Point2 start)
         starts.push_back(start);
         start = lastPosition(layer, start);
     }
-    double current = plan.layers.empty() ? 0 : wantedTemperature(p, plan.layers[0], starts[0]);
+    double current = plan.layers.empty() ? 0 : wantedTemperature(p, plan.layers[0], starts[0], true);
     for (std::size_t i = 1; i < plan.layers.size(); ++i) {
-        const double wanted = wantedTemperature(p, plan.layers[i], starts[i]);
+        const double wanted = wantedTemperature(p, plan.layers[i], starts[i], false);
         if (wanted == current)
             continue;
         PlannedLayer& before = plan.layers[i - 1];

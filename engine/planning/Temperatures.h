@@ -1,8 +1,9 @@
 #pragma once
 // Temperatures during the print, as CuraEngine 4.13 changes them after the start code:
-//   - bed: at the start of layer 1, material_bed_temperature when it differs from the layer-0
-//     value (machine_heated_bed only), without waiting;
-//   - nozzle (one extruder in the print): every layer wants a temperature — layer 0
+//   - bed: at the start of the plan's second layer, material_bed_temperature when it differs from
+//     the layer-0 value (machine_heated_bed only), without waiting;
+//   - nozzle (one extruder in the print): every layer wants a temperature — the plan's first layer
+//     (under a raft: the raft's base, as CuraEngine's "initial layer")
 //     material_print_temperature_layer_0 (when not 0), later layers material_print_temperature, or
 //     with material_flow_dependent_temperature the temperature material_flow_temp_graph gives for
 //     the layer's average flow (mm³/s of extruded volume over the time spent extruding). When the
@@ -43,6 +44,9 @@ struct TemperatureParams {
 };
 
 TemperatureParams temperatureParams(const Settings& global, const Settings& extruder);
+
+/// The nozzle's values of one extruder train.
+NozzleTemperatureParams nozzleTemperatureParams(const Settings& extruder);
 
 /// material_flow_temp_graph text ("[[3.5, 200], [7.0, 240]]"); throws InputError naming the key.
 std::vector<FlowTemperature> parseFlowTemperatureGraph(const std::string& text);

@@ -34,6 +34,13 @@ struct TravelParams {
     coord_um combing_max_distance_um = 0;  ///< 0 = a combed travel never retracts
     coord_um wall_0_wipe_um = 0;           ///< wall_0_wipe_dist: travel on along an outer wall loop's start
     coord_um infill_wipe_um = 0;           ///< infill_wipe_dist: travel on past the end of an infill line
+    /// The nearest path is first looked for from here instead of the head (the travel still starts
+    /// at the head): infill_randomize_start_location.
+    std::optional<Point2> order_from;
+    /// infill_enable_travel_optimization: a path whose end cannot be reached straight inside the
+    /// comb boundary counts at the length of its comb route (100 × the straight distance when there
+    /// is none), as CuraEngine's line order optimizer with a combing boundary.
+    bool comb_aware_order = false;
 };
 
 struct TravelRoute {

@@ -65,6 +65,8 @@ void applyProperties(SettingDefinition& def, const json& node) {
         def.resolve_formula = v;
     if (auto v = optionalText(node, "limit_to_extruder"))
         def.limit_to_extruder = v;
+    if (auto v = optionalText(node, "enabled"))
+        def.enabled_formula = v;
     if (auto v = optionalText(node, "minimum_value"))
         def.minimum_value = v;
     if (auto v = optionalText(node, "maximum_value"))

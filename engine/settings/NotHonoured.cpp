@@ -20,13 +20,17 @@ constexpr std::string_view kEmbeddedList =
 NotHonouredEntry parseEntry(const std::string& key, const nlohmann::json& entry, const std::string& origin) {
     if (entry.is_string())
         return {key, {}, entry.get<std::string>()};
-    if (!entry.is_object() || !entry.contains("values") || !entry["values"].is_array() ||
-        !entry.contains("why"))
+    const bool values_ok = !entry.contains("values") || entry["values"].is_array();
+    if (!entry.is_object() || !values_ok || !entry.contains("why") ||
+        (!entry.contains("values") && !entry.contains("multi_extruder_only")))
         throw InputError(origin + ": entry '" + key +
                          "' must be a reason or {\"values\": [...], \"why\": ...}");
     NotHonouredEntry out{key, {}, entry["why"].get<std::string>()};
-    for (const nlohmann::json& value : entry["values"])
-        out.values.push_back(value.is_string() ? value.get<std::string>() : value.dump());
+    if (entry.contains("values")) {
+        for (const nlohmann::json& value : entry["values"])
+            out.values.push_back(value.is_string() ? value.get<std::string>() : value.dump());
+    }
+    out.multi_extruder_only = entry.value("multi_extruder_only", false);
     return out;
 }
 
@@ -50,8 +54,8 @@ bool sameText(std::string_view a, std::string_view b) {
 std::optional<std::string> offending(const NotHonouredEntry& entry, StackEvaluator& given,
                                      StackEvaluator& stock, int scope) {
     const std::optional<formula::Value> value = given.value(scope, entry.key);
-    if (!value)
-        return std::nullopt;
+    if (!value || !given.enabled(scope, entry.key))
+        return std::nullopt;  // not there, or hidden in Cura: it acts in neither engine
     const std::optional<formula::Value> reference = stock.value(scope, entry.key);
     if (reference && formula::pythonEquals(*value, *reference))
         return std::nullopt;  // the definitions' own value: nothing the user asked for is ignored
@@ -92,6 +96,8 @@ std::vector<std::string> notHonouredWarnings(const std::vector<NotHonouredEntry>
     StackEvaluator stock(definitions, stock_user, extruder_count);
     std::vector<std::string> warnings;
     for (const NotHonouredEntry& entry : list) {
+        if (entry.multi_extruder_only && extruder_count < 2)
+            continue;
         std::optional<std::string> bad = offending(entry, given, stock, StackEvaluator::kGlobal);
         for (int nr = 0; nr < extruder_count && !bad; ++nr)
             bad = offending(entry, given, stock, StackEvaluator::extruderScope(nr));

@@ -4,7 +4,9 @@
 // The list is settings/mixengine/not_honoured.json, embedded at build time (the engine needs no
 // files for it). Each entry names a key and either nothing more (any value is not honoured) or the
 // values that are not honoured (e.g. adhesion_type raft). A warning is given when a listed value
-// differs from the one the definitions give (a machine's own defaults are not the user's request).
+// differs from the one the definitions give (a machine's own defaults are not the user's request)
+// and the setting is enabled (its `enabled` formula: Cura hides it otherwise, and neither engine
+// reads it then, e.g. raft_margin without a raft).
 // tests/python/test_parity.py keeps the list true: every entry is a strict xfail there.
 //
 // "The value the definitions give" is the setting's own `value` formula (else its default_value)
@@ -23,6 +25,8 @@ struct NotHonouredEntry {
     std::string key;
     std::vector<std::string> values;  ///< empty: every value but the definitions' is not honoured
     std::string why;
+    bool multi_extruder_only =
+        false;  ///< "multi_extruder_only": true — only with two or more extruder trains
 };
 
 /// Parses the list's JSON text; throws InputError naming `origin` when it is malformed.
@@ -32,7 +36,8 @@ std::vector<NotHonouredEntry> parseNotHonoured(std::string_view json_text, const
 std::vector<NotHonouredEntry> embeddedNotHonoured();
 
 /// One line per listed key whose value, in the global scope or any extruder train, is not honoured:
-/// "setting 'KEY' has no effect in MixEngine yet (...)". Keys are reported once, in list order.
+/// "setting 'KEY' has no effect in MixEngine yet (...)". Keys are reported once, in list order; an
+/// entry marked multi_extruder_only only when `extruder_count` is 2 or more.
 std::vector<std::string> notHonouredWarnings(const std::vector<NotHonouredEntry>& list,
                                              const DefinitionSet& definitions, const UserSettings& user,
                                              int extruder_count);

@@ -16,6 +16,7 @@ struct SettingDefinition {
     std::optional<std::string> value_formula;  ///< `value` (a Python expression), if any
     std::optional<std::string> resolve_formula;
     std::optional<std::string> limit_to_extruder;  ///< a Python expression giving an extruder index
+    std::optional<std::string> enabled_formula;    ///< `enabled`: whether Cura shows it (a Python expression)
     std::optional<std::string> minimum_value;
     std::optional<std::string> maximum_value;
     std::string unit;

@@ -152,6 +152,17 @@ formula::Value StackEvaluator::evaluateFormula(int scope, std::string_view key, 
     }
 }
 
+bool StackEvaluator::enabled(int scope, std::string_view key) {
+    const SettingDefinition* def = anyDefinition(key);
+    if (!def || !def->enabled_formula)
+        return true;
+    try {
+        return formula::truthy(evaluateFormula(scope, key, *def->enabled_formula));
+    } catch (const InputError&) {
+        return true;
+    }
+}
+
 std::optional<formula::Value> StackEvaluator::value(int scope, std::string_view key) {
     if (!anyDefinition(key) && !user_.global.count(std::string(key))) {
         const Scope& s = *scopes_[static_cast<std::size_t>(scope)];

@@ -63,6 +63,9 @@ class StackEvaluator {
     /// The value of `key` in `scope`; nullopt when no definition and no user value has it.
     std::optional<formula::Value> value(int scope, std::string_view key);
 
+    /// The setting's `enabled` formula in `scope`: whether Cura shows it with these values. True when
+    /// it has none, or when the formula cannot be evaluated here.
+    bool enabled(int scope, std::string_view key);
     /// Every key known in `scope` (definitions and user values) as text.
     SettingValues allText(int scope);
 

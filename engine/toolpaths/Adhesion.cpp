@@ -81,7 +81,7 @@ AdhesionResult generateAdhesion(const AdhesionInput& in) {
     AdhesionResult result;
     const Settings& g = *in.global;
     const std::string type = g.text("adhesion_type");
-    if (type == "none" || in.models.empty())
+    if (type == "none" || type == "raft" || in.models.empty())
         return result;
     const char* extruder_key =
         g.has("skirt_brim_extruder_nr") ? "skirt_brim_extruder_nr" : "adhesion_extruder_nr";

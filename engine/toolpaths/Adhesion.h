@@ -6,7 +6,8 @@
 //   brim  — loops around the models' (and the support's) layer-0 outlines (outer contours only with
 //           brim_outside_only): the first brim_gap + w/2 outside them, brim_line_count of them
 //           (more while shorter than skirt_brim_minimal_length);
-//   none  — nothing; raft is not implemented: it prints as a skirt and the caller is warned.
+//   none  — nothing; raft — nothing here either (toolpaths/Raft.h builds it); any other value
+//           prints a skirt and the caller is warned.
 // w = skirt_brim_line_width × initial_layer_line_width_factor; speed skirt_brim_speed; flow
 // skirt_brim_material_flow × material_flow_layer_0; extruder adhesion_extruder_nr
 // (skirt_brim_extruder_nr when the machine has it); Feature Skirt. Outermost loop first.

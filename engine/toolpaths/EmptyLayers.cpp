@@ -38,6 +38,8 @@ void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths) {
         dropFront(mesh.layers, count);
     dropFront(toolpaths.support, count);
     dropFront(toolpaths.prime_tower, count);
+    if (toolpaths.prime_tower_last_forced_layer >= 0)
+        toolpaths.prime_tower_last_forced_layer -= static_cast<int>(count);
     dropFront(toolpaths.ooze_shield, count);
     toolpaths.heights.resize(toolpaths.heights.size() - std::min(count, toolpaths.heights.size()));
     toolpaths.first_sliced_layer += count;

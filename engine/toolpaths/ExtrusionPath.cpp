@@ -2,16 +2,28 @@
 
 namespace mixengine {
 
-std::string_view featureMarker(Feature feature) {
+Feature markedFeature(Feature feature) {
     switch (feature) {
+        case Feature::Ironing:
+            return Feature::Skin;
+        case Feature::RaftBase:
+        case Feature::RaftSurface:
+            return Feature::SupportInterface;
+        case Feature::RaftInterface:
+            return Feature::Support;
+        default:
+            return feature;
+    }
+}
+
+std::string_view featureMarker(Feature feature) {
+    switch (markedFeature(feature)) {
         case Feature::WallOuter:
             return "WALL-OUTER";
         case Feature::WallInner:
             return "WALL-INNER";
         case Feature::Skin:
             return "SKIN";
-        case Feature::Fill:
-            return "FILL";
         case Feature::Support:
             return "SUPPORT";
         case Feature::SupportInterface:
@@ -20,8 +32,9 @@ std::string_view featureMarker(Feature feature) {
             return "SKIRT";
         case Feature::PrimeTower:
             return "PRIME-TOWER";
+        default:
+            return "FILL";
     }
-    return "FILL";
 }
 
 }  // namespace mixengine

@@ -13,10 +13,10 @@ int ownExtruder(const Settings& s) {
 
 double layerSpeed(const Settings& s, std::string_view speed_key, int layer) {
     const double speed = s.velocityMmPerS(speed_key);
-    if (!s.has("speed_print_layer_0"))
+    if (!s.has("speed_print_layer_0") || layer < 0)
         return speed;
     const double first = s.velocityMmPerS("speed_print_layer_0");
-    if (layer <= 0)
+    if (layer == 0)
         return first;
     const long long slowdown = s.has("speed_slowdown_layers") ? s.integer("speed_slowdown_layers") : 0;
     if (layer >= slowdown)

@@ -3,7 +3,8 @@
 //   width    — the feature's *_line_width, × initial_layer_line_width_factor on layer 0;
 //   speed    — the feature's speed_*; layer 0 prints at speed_print_layer_0 and layers
 //              1 … speed_slowdown_layers-1 ramp linearly from it (CuraEngine's smoothing):
-//              v = v0 + (v − v0) · layer / speed_slowdown_layers;
+//              v = v0 + (v − v0) · layer / speed_slowdown_layers; layers below the model
+//              (negative: raft filler layers) print at the feature's own speed, as CuraEngine;
 //   flow     — the feature's *_material_flow, × material_flow_layer_0 on layer 0 (a missing key
 //              counts as 100 %);
 //   extruder — the feature's *_extruder_nr; −1 (or a missing key) means the mesh's extruder_nr.
@@ -30,7 +31,8 @@ struct FeatureKeys {
 /// The mesh's (or scope's) own extruder: extruder_nr, 0 when absent.
 int ownExtruder(const Settings& s);
 
-/// Speed of `speed_key` on `layer` with the first-layer speed and the slow-down ramp.
+/// Speed of `speed_key` on `layer` with the first-layer speed and the slow-down ramp (none below
+/// layer 0).
 double layerSpeed(const Settings& s, std::string_view speed_key, int layer);
 
 FeatureStyle featureStyle(const Settings& s, const FeatureKeys& keys, int layer);

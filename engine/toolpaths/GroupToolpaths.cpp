@@ -6,6 +6,7 @@
 #include "common/ParallelFor.h"
 #include "toolpaths/Adhesion.h"
 #include "toolpaths/EmptyLayers.h"
+#include "toolpaths/ExtruderSkirts.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/PrimeTower.h"
 #include "toolpaths/Support.h"
@@ -38,7 +39,7 @@ std::vector<std::set<int>> extrudersPerLayer(const GroupToolpaths& result, std::
             if (i >= mesh.layers.size())
                 continue;
             const MeshLayerGroups& g = mesh.layers[i];
-            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill})
+            for (const auto* group : {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill, &g.ironing})
                 collect(*group, used[i]);
         }
         collect(result.support[i], used[i]);
@@ -51,6 +52,68 @@ Paths pointsOf(const std::vector<ExtrusionPath>& paths) {
     for (const ExtrusionPath& path : paths)
         points.push_back(path.points);
     return points;
+}
+
+/// The raft's filler layers, each printing `support` (toolpaths/RaftLayout.h).
+std::vector<RaftLayer> fillerLayers(const RaftLayout& layout, const std::vector<ExtrusionPath>& support) {
+    std::vector<RaftLayer> layers;
+    if (support.empty())
+        return layers;
+    const int count = layout.fillerLayerCount();
+    const coord_um height = layout.fillerLayerHeightUm();
+    for (int index = -count; index < 0; ++index) {
+        RaftLayer layer;
+        layer.index = index;
+        layer.thickness_um = height;
+        layer.z_um = layout.totalThicknessUm() + coord_um(count + index + 1) * height;
+        layer.paths = support;
+        layers.push_back(std::move(layer));
+    }
+    return layers;
+}
+
+/// Everything on the first printed layer: the models, the support area and the prime tower.
+Paths firstLayerArea(const GroupToolpaths& result, const std::vector<Paths>& model, const Paths& support_area,
+                     const ToolpathInput& input) {
+    Paths area = result.first_sliced_layer < model.size() ? model[result.first_sliced_layer] : Paths{};
+    area.insert(area.end(), support_area.begin(), support_area.end());
+    if (!result.prime_tower.empty() && !result.prime_tower[0].empty())
+        area.push_back(primeTowerOutline(*input.global, input.extruders));
+    return area;
+}
+
+/// The raft under the first printed layer and its filler layers; the model's heights lifted.
+void addRaft(const ToolpathInput& input, const RaftLayout& layout, const Paths& first_layer,
+             const std::vector<ExtrusionPath>& filler, GroupToolpaths& result) {
+    RaftToolpaths raft = generateRaft({input.global, input.extruders, first_layer});
+    if (raft.layers.empty())
+        return;
+    result.raft = std::move(raft.layers);
+    result.raft_outline = std::move(raft.outline);
+    for (RaftLayer& layer : fillerLayers(layout, filler))
+        result.raft.push_back(std::move(layer));
+    for (std::size_t i = 0; i < result.heights.size(); ++i) {
+        const coord_um lift = layout.modelLiftUm(static_cast<int>(i));
+        result.heights[i].print_z += lift;
+        result.heights[i].bottom_z += lift;
+    }
+}
+
+/// The skirt or brim lines of the extruders other than the adhesion extruder (toolpaths/ExtruderSkirts.h),
+/// around the tower's own brim when it has one (CuraEngine makes that first), else around the adhesion.
+void addOtherExtruderSkirts(const ToolpathInput& input, const std::vector<std::set<int>>& per_layer,
+                            const std::vector<ExtrusionPath>& tower_brim,
+                            std::vector<ExtrusionPath>& adhesion) {
+    if (adhesion.empty())
+        return;
+    std::set<int> used{adhesion.front().extruder};
+    for (const std::set<int>& layer : per_layer)
+        used.insert(layer.begin(), layer.end());
+    const std::vector<ExtrusionPath>& around = tower_brim.empty() ? adhesion : tower_brim;
+    const std::vector<ExtrusionPath> others =
+        otherExtruderSkirts(*input.global, input.extruders, areaInsideOutermost(around),
+                            around.front().width_um, around.front().extruder, used);
+    adhesion.insert(adhesion.end(), others.begin(), others.end());
 }
 
 /// Drops the empty layers at the bottom (toolpaths/EmptyLayers.h) and says so in the notes.
@@ -73,12 +136,13 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         paths.settings = mesh.settings;
         paths.name = mesh.name;
         paths.sliced = mesh.layers;
-        paths.layers = generateMeshToolpaths(*mesh.layers, *mesh.settings, threads);
+        paths.layers = generateMeshToolpaths(*mesh.layers, *mesh.settings, threads, mesh.middle_um);
         result.meshes.push_back(std::move(paths));
     }
     const std::vector<Paths> model = unitedModel(input, threads);
 
-    SupportInput support{input.global, input.extruders, &input.heights, {}, &model};
+    const RaftLayout raft = raftLayout(*input.global, input.extruders);
+    SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled};
     for (const ToolpathMeshInput& mesh : input.meshes)
         support.meshes.push_back({mesh.settings, mesh.layers});
     SupportResult support_result = generateSupport(support, threads);
@@ -86,23 +150,35 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
 
     std::vector<std::set<int>> used = extrudersPerLayer(result, input.heights.size());
     const TowerInput tower{input.global, input.extruders, &input.heights, used, &model};
-    result.prime_tower = generatePrimeTower(tower);
+    PrimeTowerResult prime_tower = generatePrimeTower(tower);
+    result.prime_tower = std::move(prime_tower.layers);
+    result.prime_tower_outermost = prime_tower.outermost;
+    result.prime_tower_last_forced_layer = prime_tower.last_forced_layer;
+    result.prime_tower_middle = prime_tower.middle;
     result.ooze_shield = generateOozeShield(tower);
 
-    if (!model.empty()) {
-        // As CuraEngine, the brim goes around the support on layer 0 too; around the first layer
-        // that prints when the bottom ones are empty (they are dropped below).
+    if (!model.empty() && !raft.enabled) {
+        // As CuraEngine, the brim goes around the support on layer 0 too, and around the prime tower
+        // unless the tower has a brim of its own; around the first layer that prints when the bottom
+        // ones are empty (they are dropped below).
         const std::size_t first = std::min(leadingEmptyLayers(result, input), model.size() - 1);
         AdhesionInput adhesion{input.global, input.extruders,
                                first == 0 ? unionOf(model[0], support_result.first_layer_area) : model[first],
                                pointsOf(result.support[first])};
         const Paths tower_points = pointsOf(result.prime_tower[first]);
         adhesion.extras.insert(adhesion.extras.end(), tower_points.begin(), tower_points.end());
+        if (prime_tower.outermost >= 0 && prime_tower.brim.empty())
+            adhesion.models.push_back(primeTowerOutline(*input.global, input.extruders));
         AdhesionResult skirt = generateAdhesion(adhesion);
         result.adhesion = std::move(skirt.paths);
+        result.adhesion.insert(result.adhesion.end(), prime_tower.brim.begin(), prime_tower.brim.end());
         result.warnings = std::move(skirt.warnings);
+        addOtherExtruderSkirts(input, used, prime_tower.brim, result.adhesion);
     }
     dropEmptyBottomLayers(input, result);
+    if (raft.enabled && !result.heights.empty())
+        addRaft(input, raft, firstLayerArea(result, model, support_result.first_layer_area, input),
+                support_result.filler, result);
     return result;
 }
 

@@ -11,8 +11,12 @@
 // (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
 // (toolpaths/PrimeTower.h), and last the skirt or brim around everything on layer 0
 // (toolpaths/Adhesion.h); last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
-// so layer 0 of the result is the first layer that prints. `threads` is used inside every step;
-// the result does not depend on it.
+// so layer 0 of the result is the first layer that prints. With adhesion_type raft there is no
+// skirt or brim: the raft (toolpaths/Raft.h) goes under everything on that first layer, the
+// first layer's support moves to the raft's filler layers (toolpaths/Support.h) and the model's
+// heights are lifted (toolpaths/RaftLayout.h). `threads` is used inside every step; the result
+// does not depend on it.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +24,7 @@
 #include "slicing/LayerHeights.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/MeshToolpaths.h"
+#include "toolpaths/Raft.h"
 
 namespace mixengine {
 
@@ -27,6 +32,9 @@ struct ToolpathMeshInput {
     const Settings* settings = nullptr;                ///< the mesh's resolved settings
     std::string name;                                  ///< for ;MESH:
     const std::vector<SlicedLayer>* layers = nullptr;  ///< index = layer
+    /// The middle of the mesh's bounding box in x and y (the infill pattern's origin); unset: the
+    /// middle of its outlines' bounds.
+    std::optional<Point2> middle_um;
 };
 
 struct ToolpathInput {
@@ -46,17 +54,27 @@ struct MeshToolpaths {
 
 struct GroupToolpaths {
     /// [layer] the heights to print at: the input's, less one entry from the top per empty bottom
-    /// layer dropped (the print starts at the first layer's height, as CuraEngine).
+    /// layer dropped (the print starts at the first layer's height, as CuraEngine), lifted by the
+    /// raft when there is one (print_z and bottom_z alike: the layers keep their thickness).
     std::vector<LayerZ> heights;
     /// The sliced layer printed as layer 0: the number of empty bottom layers dropped.
     std::size_t first_sliced_layer = 0;
     std::vector<MeshToolpaths> meshes;
     std::vector<std::vector<ExtrusionPath>> support;  ///< [layer]; support and its interface
     std::vector<ExtrusionPath> adhesion;              ///< skirt or brim, printed first on layer 0
-    /// [layer]; the prime tower's paths for every extruder (ExtrusionPath::extruder), printed by
-    /// each extruder right after it becomes active on that layer. Empty without a prime tower.
+    /// [layer]; the prime tower's rings for every extruder (ExtrusionPath::extruder), printed by an
+    /// extruder right after it becomes active on that layer, and by prime_tower_outermost on every
+    /// layer up to prime_tower_last_forced_layer (toolpaths/PrimeTower.h). Empty without a tower.
     std::vector<std::vector<ExtrusionPath>> prime_tower;
+    int prime_tower_outermost = -1;
+    int prime_tower_last_forced_layer = -1;
+    Point2 prime_tower_middle{0, 0};  ///< where the wipe after a switch goes (prime_tower_wipe_enabled)
     std::vector<std::vector<ExtrusionPath>> ooze_shield;  ///< [layer]; empty without an ooze shield
+    /// The layers printed below the model, in print order with CuraEngine's negative numbers: the
+    /// raft's base, interface and surface layers, then its filler layers when the first layer has
+    /// support. Empty without a raft.
+    std::vector<RaftLayer> raft;
+    Paths raft_outline;  ///< what the raft covers (travel on the layers below the model combs in it)
     /// Settings the stage could not honour (e.g. adhesion_type raft printed as a skirt), one line
     /// each, for the caller to log.
     std::vector<std::string> warnings;

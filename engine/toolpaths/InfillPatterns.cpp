@@ -5,8 +5,11 @@
 #include <numbers>
 
 #include "common/Error.h"
+#include "geometry/Angles.h"
+#include "toolpaths/ConnectedLines.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/GyroidInfill.h"
+#include "toolpaths/InfillMultiplier.h"
 #include "toolpaths/LineInfill.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/ZigZag.h"
@@ -14,22 +17,63 @@
 namespace mixengine {
 namespace {
 
-void appendLines(Paths& out, const Paths& area, coord_um distance, double angle, coord_um shift) {
-    Paths lines = lineSegments(area, distance, angle, shift);
-    out.insert(out.end(), std::make_move_iterator(lines.begin()), std::make_move_iterator(lines.end()));
+/// What a pattern draws: open lines and closed loops.
+struct Drawn {
+    Paths lines;
+    Paths loops;
+};
+
+/// CuraEngine's shift of a line set at `angle` so that it passes through `origin`.
+coord_um originShift(const Point2& origin, double angle_degrees) {
+    if (origin.X == 0 && origin.Y == 0)
+        return 0;
+    const double r = radiansFromDegrees(angle_degrees);
+    return static_cast<coord_um>(double(origin.X) * std::cos(r) - double(origin.Y) * std::sin(r));
+}
+
+LineSet lineSet(const InfillParams& p, coord_um spacing, double angle, coord_um own_shift) {
+    return {spacing, angle, own_shift + p.shift_um + originShift(p.origin_um, angle)};
 }
 
 /// Two sets of lines 2d apart at `angle`, shifted symmetrically with z (tetrahedral patterns).
-void appendHalfTetrahedral(Paths& out, const Paths& area, const InfillParams& p, double z_phase,
-                           double angle) {
+void appendHalfTetrahedral(std::vector<LineSet>& out, const InfillParams& p, double z_phase, double angle) {
     const coord_um period = 2 * p.line_distance_um;
     const double raw = std::numbers::sqrt2 / 2 * (double(p.z_um) + z_phase * double(period) * 2);
     coord_um shift = static_cast<coord_um>(raw) % period;
     shift = std::min(shift, period - shift);
     shift = std::min(shift, period / 2 - p.line_width_um / 2);
     shift = std::max(shift, p.line_width_um / 2);
-    appendLines(out, area, period, angle, shift);
-    appendLines(out, area, period, angle, -shift);
+    out.push_back(lineSet(p, period, angle, shift));
+    out.push_back(lineSet(p, period, angle, -shift));
+}
+
+/// The line sets of the line-based patterns (empty for the others).
+std::vector<LineSet> lineSetsOf(const InfillParams& p) {
+    const coord_um d = p.line_distance_um;
+    const double a = p.angle_degrees;
+    std::vector<LineSet> sets;
+    switch (p.pattern) {
+        case InfillPattern::Lines:
+            return {lineSet(p, d, a, 0)};
+        case InfillPattern::Grid:
+            return {lineSet(p, d, a, 0), lineSet(p, d, a + 90, 0)};
+        case InfillPattern::Triangles:
+        case InfillPattern::TriHexagon:
+            return {lineSet(p, d, a, 0), lineSet(p, d, a + 60, 0),
+                    lineSet(p, d, a + 120, p.pattern == InfillPattern::TriHexagon ? d / 2 : 0)};
+        case InfillPattern::Cubic:
+        case InfillPattern::CubicSubdiv: {
+            const coord_um shift = static_cast<coord_um>(double(p.z_um) / std::numbers::sqrt2);
+            return {lineSet(p, d, a, shift), lineSet(p, d, a + 120, shift), lineSet(p, d, a + 240, shift)};
+        }
+        case InfillPattern::Tetrahedral:
+        case InfillPattern::QuarterCubic:
+            appendHalfTetrahedral(sets, p, 0.0, a);
+            appendHalfTetrahedral(sets, p, p.pattern == InfillPattern::QuarterCubic ? 0.5 : 0.0, a + 90);
+            return sets;
+        default:
+            return sets;
+    }
 }
 
 Paths concentricLoops(const Paths& area, const InfillParams& p) {
@@ -43,45 +87,59 @@ Paths concentricLoops(const Paths& area, const InfillParams& p) {
     return loops;
 }
 
-Paths patternLines(const Paths& area, const InfillParams& p) {
-    const coord_um d = p.line_distance_um;
-    const double a = p.angle_degrees;
+/// Unconnected lines of every set, without the pieces shorter than w/5 (as CuraEngine).
+Paths separateLines(const Paths& area, const std::vector<LineSet>& sets, coord_um line_width) {
     Paths out;
-    switch (p.pattern) {
-        case InfillPattern::Lines:
-            appendLines(out, area, d, a, 0);
-            break;
-        case InfillPattern::ZigZag:  // as CuraEngine: the connections run half a line inside
-            out = zigzagLines(offsetMiter(area, -p.line_width_um / 2), d, a, 0, p.zigzag_end_pieces);
-            break;
-        case InfillPattern::Grid:
-            appendLines(out, area, d, a, 0);
-            appendLines(out, area, d, a + 90, 0);
-            break;
-        case InfillPattern::Triangles:
-        case InfillPattern::TriHexagon:
-            appendLines(out, area, d, a, 0);
-            appendLines(out, area, d, a + 60, 0);
-            appendLines(out, area, d, a + 120, p.pattern == InfillPattern::TriHexagon ? d / 2 : 0);
-            break;
-        case InfillPattern::Cubic: {
-            const coord_um shift = static_cast<coord_um>(double(p.z_um) / std::numbers::sqrt2);
-            for (double turn : {0.0, 120.0, 240.0})
-                appendLines(out, area, d, a + turn, shift);
-            break;
+    const double min_length = double(line_width / 5);
+    for (const LineSet& set : sets) {
+        for (Path& line : lineSegments(area, set.spacing_um, set.angle_degrees, set.phase_um)) {
+            const double length = std::hypot(double(line[1].X - line[0].X), double(line[1].Y - line[0].Y));
+            if (length >= min_length)
+                out.push_back(std::move(line));
         }
-        case InfillPattern::Tetrahedral:
-        case InfillPattern::QuarterCubic:
-            appendHalfTetrahedral(out, area, p, 0.0, a);
-            appendHalfTetrahedral(out, area, p, p.pattern == InfillPattern::QuarterCubic ? 0.5 : 0.0, a + 90);
-            break;
-        case InfillPattern::Gyroid:
-            out = gyroidCurves(area, static_cast<coord_um>(kGyroidPeriodPerLineDistance * double(d)), p.z_um);
-            break;
-        case InfillPattern::Concentric:
-            break;
     }
     return out;
+}
+
+Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
+    const coord_um d = p.line_distance_um;
+    switch (p.pattern) {
+        case InfillPattern::ZigZag: {
+            const coord_um shift = p.shift_um + originShift(p.origin_um, p.angle_degrees);
+            return {zigzagLines(area, d, p.angle_degrees, shift, p.zigzag_end_pieces), {}};
+        }
+        case InfillPattern::Gyroid:
+            return {
+                gyroidCurves(area, static_cast<coord_um>(kGyroidPeriodPerLineDistance * double(d)), p.z_um),
+                {}};
+        case InfillPattern::Concentric:
+            return {{}, concentricLoops(area, p)};
+        case InfillPattern::CubicSubdiv:
+            if (p.subdiv_lines != nullptr)
+                return {clipLines(*p.subdiv_lines, area), {}};
+            return {separateLines(area, lineSetsOf(p), p.line_width_um), {}};
+        default: {
+            const std::vector<LineSet> sets = lineSetsOf(p);
+            return {connected ? connectedLines(area, sets) : separateLines(area, sets, p.line_width_um), {}};
+        }
+    }
+}
+
+bool lineBased(InfillPattern pattern) {
+    return pattern != InfillPattern::ZigZag && pattern != InfillPattern::Concentric &&
+           pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv;
+}
+
+Paths offsetArea(const Paths& area, coord_um delta) {
+    return delta == 0 ? area : offsetMiter(area, delta);
+}
+
+void appendPaths(const Paths& paths, bool closed, const InfillParams& p, std::vector<ExtrusionPath>& out) {
+    const FeatureStyle style{p.line_width_um, p.speed_mm_s, p.flow, p.extruder};
+    for (const Path& path : paths) {
+        if (path.size() >= (closed ? 3U : 2U))
+            out.push_back(styledPath(path, closed, p.feature, style));
+    }
 }
 
 }  // namespace
@@ -97,8 +155,10 @@ InfillPattern infillPatternOf(const std::string& text, const std::string& key) {
         return InfillPattern::Triangles;
     if (text == "trihexagon")
         return InfillPattern::TriHexagon;
-    if (text == "cubic" || text == "cubicsubdiv")
+    if (text == "cubic")
         return InfillPattern::Cubic;
+    if (text == "cubicsubdiv")
+        return InfillPattern::CubicSubdiv;
     if (text == "tetrahedral")
         return InfillPattern::Tetrahedral;
     if (text == "quarter_cubic")
@@ -114,14 +174,26 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
     std::vector<ExtrusionPath> result;
     if (params.line_distance_um <= 0 || area.empty())
         return result;
-    const bool loops = params.pattern == InfillPattern::Concentric;
-    const Paths lines = loops ? concentricLoops(area, params) : patternLines(area, params);
-    for (const Path& line : lines) {
-        if (line.size() < 2)
-            continue;
-        result.push_back(styledPath(line, loops, params.feature,
-                                    {params.line_width_um, params.speed_mm_s, params.flow, params.extruder}));
+    const coord_um w = params.line_width_um;
+    const coord_um walls = params.wall_count * w;
+    const bool even = params.multiplier > 1 && params.multiplier % 2 == 0;
+    // As CuraEngine: an even multiplier draws the lines unconnected and connects its own loops.
+    const bool connected = params.pattern == InfillPattern::ZigZag ||
+                           (params.connect_lines && !even &&
+                            (lineBased(params.pattern) || params.pattern == InfillPattern::Gyroid));
+    const bool octree = params.pattern == InfillPattern::CubicSubdiv && params.subdiv_lines != nullptr;
+    const coord_um inset = octree ? 0 : walls + (connected ? w / 2 : 0);
+    Drawn drawn = drawPattern(offsetArea(area, params.overlap_um - inset), params, connected);
+    if (params.multiplier > 1) {
+        const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0);
+        multiplyInfill(
+            drawn.lines, drawn.loops, offsetArea(area, -outline_inset),
+            {params.multiplier, w, params.connect_lines, params.pattern == InfillPattern::Concentric});
     }
+    for (int wall = 0; wall < params.wall_count; ++wall)
+        appendPaths(offsetMiter(area, -w / 2 - wall * w), true, params, result);
+    appendPaths(drawn.loops, true, params, result);
+    appendPaths(drawn.lines, false, params, result);
     return result;
 }
 

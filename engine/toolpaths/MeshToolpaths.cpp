@@ -6,7 +6,10 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
+#include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
+#include "toolpaths/Ironing.h"
+#include "toolpaths/MeshInfill.h"
 #include "toolpaths/OutlineOffsets.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/Seam.h"
@@ -148,26 +151,6 @@ SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const Me
     return p;
 }
 
-std::vector<ExtrusionPath> infillPaths(const Paths& area, const Settings& s, int layer, coord_um z,
-                                       const FeatureStyle& style) {
-    InfillParams p;
-    p.line_distance_um = s.lengthMicrons("infill_line_distance");
-    if (p.line_distance_um <= 0 || area.empty())
-        return {};
-    const std::string text = s.has("infill_pattern") ? s.text("infill_pattern") : "lines";
-    p.pattern = infillPatternOf(text, "infill_pattern");
-    const bool alternate = p.pattern == InfillPattern::Lines || p.pattern == InfillPattern::ZigZag;
-    p.angle_degrees = angleFor(s, "infill_angles", layer,
-                               alternate ? std::vector<double>{45, 135} : std::vector<double>{45});
-    p.z_um = z;
-    p.line_width_um = style.width_um;
-    p.speed_mm_s = style.speed_mm_s;
-    p.flow = style.flow;
-    p.extruder = style.extruder;
-    const coord_um overlap = s.has("infill_overlap_mm") ? s.lengthMicrons("infill_overlap_mm") : 0;
-    return generateInfill(overlap != 0 ? offsetMiter(area, overlap) : area, p);
-}
-
 /// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/OutlineOffsets.h).
 Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
@@ -233,6 +216,29 @@ bool surfaceOnly(const Settings& s) {
     return s.has("magic_mesh_surface_mode") && s.text("magic_mesh_surface_mode") == "surface";
 }
 
+/// The mesh's highest layer with an outline (−1: none).
+int highestFilledLayer(const std::vector<SlicedLayer>& layers) {
+    for (std::size_t i = layers.size(); i-- > 0;) {
+        if (!layers[i].outlines.empty())
+            return static_cast<int>(i);
+    }
+    return -1;
+}
+
+/// The ironing of layer `i` (toolpaths/Ironing.h); none unless ironing_enabled.
+std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const Settings& s, std::size_t i) {
+    if (!s.has("ironing_enabled") || !s.boolean("ironing_enabled"))
+        return {};
+    const int layer = static_cast<int>(i);
+    const bool only_highest = s.has("ironing_only_highest_layer") && s.boolean("ironing_only_highest_layer");
+    if (only_highest && layer != highestFilledLayer(layers))
+        return {};
+    const Paths above =
+        i + 1 < layers.size() ? adjustedOutlines(layers[i + 1].outlines, s, layer + 1) : Paths{};
+    const Paths surface = topSurface(adjustedOutlines(layers[i].outlines, s, layer), above);
+    return ironingPaths(surface, ironingParams(s, layer));
+}
+
 }  // namespace
 
 bool outerWallFirst(const Settings& s, int layer) {
@@ -241,7 +247,8 @@ bool outerWallFirst(const Settings& s, int layer) {
 }
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
-                                                   const Settings& settings, int threads) {
+                                                   const Settings& settings, int threads,
+                                                   const std::optional<Point2>& mesh_middle_um) {
     std::vector<MeshLayerGroups> result(layers.size());
     std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size()),
         roofing_reference(layers.size());
@@ -269,6 +276,12 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
     const std::vector<SkinAreas> areas = computeSkinAreas(
         {&top_reference, &bottom_reference, refs.roofing_wall >= 0 ? &roofing_reference : nullptr},
         inner_areas, skinParams(settings, refs), threads);
+    std::vector<Paths> infill_areas(layers.size());
+    for (std::size_t i = 0; i < layers.size(); ++i)
+        infill_areas[i] = areas[i].infill;
+    const std::vector<LayerInfill> infill = arrangeInfill(infill_areas, infillLayerParams(settings), threads);
+    const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
+    const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
 
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
@@ -281,8 +294,15 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
                      perimeterGaps(wall_gaps[i], inner_areas[i], areas[i], settings, layer), skin_params))
                 result[i].skin.push_back(std::move(line));
         }
-        result[i].infill = infillPaths(areas[i].infill, settings, layer, z, styles.infill);
         result[i].comb_area = combAreaFor(layers[i].outlines, areas[i], settings);
+        InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
+        const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
+        fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
+        result[i].infill = meshInfillPaths(infill[i], fill);
+        if (settings.has("infill_randomize_start_location") &&
+            settings.boolean("infill_randomize_start_location"))
+            result[i].infill_start = randomInfillStart(result[i].infill, layer);
+        result[i].ironing = ironing(layers, settings, i);
     });
     return result;
 }

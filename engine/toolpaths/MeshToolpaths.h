@@ -11,9 +11,11 @@
 //             top_bottom_pattern_0, at skin_angles[layer % n], default 45°, 135°, reaching
 //             skin_overlap_mm beyond its area, skin_monotonic), and with fill_perimeter_gaps the
 //             gaps of concentric skin (toolpaths/SkinPaths.h);
-//   infill  — infill_pattern at infill_line_distance inside the innermost wall, grown by
-//             infill_overlap_mm, at infill_angles[layer % n] (default 45° and 135° alternating for
-//             lines and zigzag, 45° otherwise); none when infill_line_distance is 0.
+//   infill  — the infill area arranged by toolpaths/InfillLayers.h (infill as support, gradual
+//             infill, combined layers) and printed by toolpaths/MeshInfill.h (infill_pattern at
+//             infill_line_distance, its origin at the mesh's middle moved by infill_offset_x/_y);
+//             none when infill_line_distance is 0;
+//   ironing — with ironing_enabled, the layer's top surface (toolpaths/Ironing.h), last.
 // With magic_mesh_surface_mode "surface" the outlines (and open pieces) are printed once along
 // themselves as outer wall, and nothing else.
 // Widths, speeds, flows and extruders per feature and layer: toolpaths/FeatureStyle.h.
@@ -27,7 +29,8 @@
 
 namespace mixengine {
 
-/// Paths of one layer in print order of their groups: inner walls, outer walls, skin, infill.
+/// Paths of one layer in print order of their groups: inner walls, outer walls, skin, infill,
+/// ironing.
 struct MeshLayerGroups {
     std::vector<ExtrusionPath> inner_walls;
     std::vector<ExtrusionPath> outer_walls;
@@ -37,13 +40,19 @@ struct MeshLayerGroups {
     /// sliced outlines ("all", "off"). noskin: the outlines less the skin; no_outer_surfaces: less
     /// the skin with air directly above or below; infill: the infill area.
     std::optional<Paths> comb_area;
+    std::vector<ExtrusionPath> ironing;
+    /// infill_randomize_start_location: planning starts the infill nearest this point.
+    std::optional<Point2> infill_start;
 };
 
 /// Whether the outer walls go before the inner ones on `layer`: outer_inset_first, and (as
 /// CuraEngine 4.13) always on layer 0 with a brim.
 bool outerWallFirst(const Settings& s, int layer);
 
-std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
-                                                   const Settings& settings, int threads);
+/// `mesh_middle_um`: the middle of the mesh's bounding box in x and y (CuraEngine's infill origin);
+/// without it, the middle of the bounds of all its outlines.
+std::vector<MeshLayerGroups> generateMeshToolpaths(
+    const std::vector<SlicedLayer>& layers, const Settings& settings, int threads,
+    const std::optional<Point2>& mesh_middle_um = std::nullopt);
 
 }  // namespace mixengine

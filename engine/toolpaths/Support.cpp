@@ -44,9 +44,13 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     return p;
 }
 
+/// angles[layer mod n] (layer may be negative: raft filler layers), or `fallback` for no angles.
 double angleFor(const Settings& s, std::string_view key, int layer, double fallback) {
     const std::vector<double> angles = s.has(key) ? s.realList(key) : std::vector<double>{};
-    return angles.empty() ? fallback : angles[static_cast<std::size_t>(layer) % angles.size()];
+    if (angles.empty())
+        return fallback;
+    const int n = static_cast<int>(angles.size());
+    return angles[static_cast<std::size_t>(((layer % n) + n) % n)];
 }
 
 SupportFill fillFrom(const Settings& s, std::string_view prefix, int layer) {
@@ -60,9 +64,10 @@ SupportFill fillFrom(const Settings& s, std::string_view prefix, int layer) {
     return fill;
 }
 
+/// The fills of `layer`; −1 stands for the raft's filler layers.
 SupportLayerFills layerFills(const SupportInput& in, int layer) {
     const Settings& g = *in.global;
-    const std::string_view body_key = layer == 0 && g.has("support_extruder_nr_layer_0")
+    const std::string_view body_key = layer <= 0 && g.has("support_extruder_nr_layer_0")
                                           ? "support_extruder_nr_layer_0"
                                           : "support_infill_extruder_nr";
     const int body_nr = extruderOf(g, body_key);
@@ -77,7 +82,7 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
         body.has("support_connect_zigzags") && body.boolean("support_connect_zigzags");
     fills.body.wall_count =
         body.has("support_wall_count") ? static_cast<int>(body.integer("support_wall_count")) : 0;
-    if (layer == 0) {  // as CuraEngine: the first layer of support is a grid with one more wall
+    if (layer <= 0) {  // as CuraEngine: the first layer of support is a grid with one more wall
         if (fills.body.pattern == InfillPattern::Lines || fills.body.pattern == InfillPattern::ZigZag)
             fills.body.pattern = InfillPattern::Grid;
         fills.body.wall_count += 1;
@@ -85,6 +90,8 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
     fills.body.style = featureStyle(
         body, {"support_line_width", "speed_support_infill", "support_material_flow", body_key}, layer);
     fills.body.style.extruder = body_nr;
+    if (in.raft)  // as CuraEngine: no initial_layer_line_width_factor for support under a raft
+        fills.body.style.width_um = body.lengthMicrons("support_line_width");
     const Settings& roof = trainSettings(g, in.extruders, extruderOf(g, "support_roof_extruder_nr"));
     const Settings& floor = trainSettings(g, in.extruders, extruderOf(g, "support_bottom_extruder_nr"));
     if (roof.has("support_roof_pattern"))
@@ -141,8 +148,13 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
             return;
         paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z);
     });
-    if (!areas.empty())
-        result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
+    if (areas.empty())
+        return result;
+    result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
+    if (in.raft && !paths.empty() && !paths[0].empty()) {
+        result.filler = supportLayerPaths(areas[0], layerFills(in, -1), 0);
+        paths[0].clear();
+    }
     return result;
 }
 

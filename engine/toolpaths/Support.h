@@ -4,6 +4,11 @@
 // (toolpaths/SupportPaths.h). The support keys are read from the extruder train that prints the
 // support infill (support_infill_extruder_nr; on layer 0 support_extruder_nr_layer_0), the
 // interfaces' from support_roof_extruder_nr / support_bottom_extruder_nr, as CuraEngine does.
+//
+// Under a raft (SupportInput::raft), as CuraEngine 4.13: the model's first layer prints no support;
+// the first layer's support area is printed on the raft's filler layers instead (SupportResult::
+// filler: as on layer 0 — grid, one wall more — but at support_line_distance, the regular speed and
+// flow and without initial_layer_line_width_factor), and no line width on layer 0 is widened.
 #include <vector>
 
 #include "settings/Settings.h"
@@ -24,11 +29,13 @@ struct SupportInput {
     const std::vector<LayerZ>* heights = nullptr;
     std::vector<SupportMesh> meshes;
     const std::vector<Paths>* model = nullptr;  ///< [layer] all meshes' outlines united
+    bool raft = false;                          ///< adhesion_type raft (see above)
 };
 
 struct SupportResult {
     std::vector<std::vector<ExtrusionPath>> paths;  ///< [layer]; all empty without support_enable
     Paths first_layer_area;                         ///< the support's area on layer 0 (for the brim)
+    std::vector<ExtrusionPath> filler;              ///< raft only: the paths of every raft filler layer
 };
 
 SupportResult generateSupport(const SupportInput& input, int threads);

@@ -4,71 +4,27 @@
 #include <cmath>
 
 #include "toolpaths/LineFrame.h"
+#include "toolpaths/ScanCrossings.h"
 
 namespace mixengine {
 namespace {
 
-struct Crossing {
-    long long line = 0;  ///< scanline number k
-    Point2 point;        ///< in the rotated frame
-    std::size_t polygon = 0;
-    std::size_t edge = 0;  ///< index of the edge's first vertex
-    double along = 0;      ///< position along the edge, 0..1
+struct Crossing : ScanCrossing {
     long scan_partner = -1;
     long boundary_next = -1;  ///< kept boundary piece from this crossing to that one
     long boundary_prev = -1;
 };
 
-/// Crossings of every polygon edge with the scanlines; a vertex exactly on a scanline counts as
-/// right of it, so every crossing is found once.
-std::vector<Crossing> findCrossings(const Paths& polys, coord_um d, coord_um shift) {
-    std::vector<Crossing> out;
-    for (std::size_t pi = 0; pi < polys.size(); ++pi) {
-        const Path& poly = polys[pi];
-        for (std::size_t e = 0; e < poly.size(); ++e) {
-            const Point2& a = poly[e];
-            const Point2& b = poly[(e + 1) % poly.size()];
-            if (a.X == b.X)
-                continue;
-            // Scanlines k with a side change: x_k in (min, max] for the "x >= x_k is right" rule.
-            const long long lo = floorDiv(std::min(a.X, b.X) - shift, d) + 1;
-            const long long hi = floorDiv(std::max(a.X, b.X) - shift, d);
-            std::vector<Crossing> here;
-            for (long long k = lo; k <= hi; ++k) {
-                const double x = double(shift) + double(k) * double(d);
-                const double t = (x - double(a.X)) / double(b.X - a.X);
-                Crossing c;
-                c.line = k;
-                c.point = {static_cast<coord_um>(x), std::llround(double(a.Y) + t * double(b.Y - a.Y))};
-                c.polygon = pi;
-                c.edge = e;
-                c.along = t;
-                here.push_back(c);
-            }
-            if (a.X > b.X)
-                std::reverse(here.begin(), here.end());
-            out.insert(out.end(), here.begin(), here.end());
-        }
+/// The crossings of the scanlines with the polygons (toolpaths/ScanCrossings.h), paired per scanline.
+std::vector<Crossing> pairedCrossings(const Paths& polys, coord_um d, coord_um shift) {
+    const std::vector<ScanCrossing> found = findScanCrossings(polys, d, shift);
+    const std::vector<long> partner = pairOnScanlines(found);
+    std::vector<Crossing> cs(found.size());
+    for (std::size_t i = 0; i < found.size(); ++i) {
+        static_cast<ScanCrossing&>(cs[i]) = found[i];
+        cs[i].scan_partner = partner[i];
     }
-    return out;
-}
-
-void pairScanlines(std::vector<Crossing>& cs) {
-    std::vector<long> order(cs.size());
-    for (std::size_t i = 0; i < cs.size(); ++i)
-        order[i] = static_cast<long>(i);
-    std::sort(order.begin(), order.end(), [&](long a, long b) {
-        const Crossing &ca = cs[std::size_t(a)], &cb = cs[std::size_t(b)];
-        return ca.line != cb.line ? ca.line < cb.line : ca.point.Y < cb.point.Y;
-    });
-    for (std::size_t i = 0; i + 1 < order.size(); i += 2) {
-        if (cs[std::size_t(order[i])].line != cs[std::size_t(order[i + 1])].line) {
-            --i;  // an odd crossing count on a line (degenerate): resynchronise
-            continue;
-        }
-        cs[std::size_t(order[i])].scan_partner = order[i + 1];
-        cs[std::size_t(order[i + 1])].scan_partner = order[i];
-    }
+    return cs;
 }
 
 /// Calls visit(from, to) for every pair of consecutive crossings along each polygon, indices into
@@ -179,8 +135,7 @@ Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um 
     const LineFrame frame(angle_degrees);  // the scanlines are vertical in it
     const Paths rotated = frame.into(area);
     const coord_um shift = linePhase(shift_um, d);
-    std::vector<Crossing> cs = findCrossings(rotated, d, shift);
-    pairScanlines(cs);
+    std::vector<Crossing> cs = pairedCrossings(rotated, d, shift);
     linkBoundary(cs);
     Paths lines = chain(rotated, cs);
     if (end_pieces)

@@ -9,10 +9,12 @@ Settings and models are those of tests/python/test_compare_cura.py (side_by_side
 come from the same run; --cached reuses the test suite's CuraEngine cache instead.
 
 Pictures: OUT_DIR/<case>_layer<N>.png for the first layer, the middle layer and the layer where
-MixEngine's coverage falls furthest below CuraEngine's; MixEngine left, CuraEngine right, on the same grid
-(0.05 mm squares, one pixel each). Colours: light grey = model section not covered, blue = model extrusion
-inside the section, orange = within the 0.1 mm tolerance outside it, red = beyond it (counted as outside),
-green = skirt/brim/support (not measured), dark grey = the section's outline band.
+MixEngine's coverage falls furthest below CuraEngine's, and on a raft its lowest and highest layers (N < 0,
+drawn over the model's first section); with ironing the top layer too. MixEngine left, CuraEngine right, on
+the same grid (0.05 mm squares, one pixel each). Colours: light grey = model section not covered, blue =
+model extrusion inside the section, orange = within the 0.1 mm tolerance outside it, red = beyond it
+(counted as outside), green = skirt/brim/support/raft (not measured), purple = ironing (model extrusions
+thinner than a quarter nozzle, drawn one pixel wide over the rest), dark grey = the section's outline band.
 OUT_DIR/summary.json holds every number, per layer too.
 """
 import argparse
@@ -23,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "python"))
+import gcode_model  # noqa: E402
 import helpers  # noqa: E402
 import print_quality as pq  # noqa: E402
 import side_by_side as sbs  # noqa: E402
@@ -32,7 +35,7 @@ from test_compare_cura import CASES as TEST_CASES  # noqa: E402
 CASES = dict(TEST_CASES, bunny69k=("bunny69k", {}), rear_case=("rear_case", {}))
 
 COLOURS = {"free": (225, 225, 225), "inside": (40, 90, 200), "band": (245, 160, 0), "outside": (220, 30, 30),
-           "other": (40, 170, 60), "background": (255, 255, 255)}
+           "other": (40, 170, 60), "ironing": (150, 40, 170), "background": (255, 255, 255)}
 
 
 def hms(seconds):
@@ -52,7 +55,18 @@ def colour(r):
     img[e & s] = COLOURS["inside"]
     img[e & grown & ~s] = COLOURS["band"]
     img[e & ~grown] = COLOURS["outside"]
+    if "I" in r:
+        img[r["I"]] = COLOURS["ironing"]
     return img[::-1]  # row 0 at the top of the picture: +Y up
+
+
+def ironing_raster(m, layer, grid, diameter, nozzle):
+    """The layer's ironing: model extrusions thinner than a quarter nozzle (ironing_flow of a line), one pixel
+    wide."""
+    widths = gcode_model.segment_widths_mm(m, layer, diameter)
+    mask = ~m.feature_mask(layer, pq.NON_MODEL_FEATURES) & (widths > 0) & (widths < 0.25 * nozzle)
+    radius = np.full(int(mask.sum()), grid.g / 2)
+    return pq.rasterise_capsules(grid, layer.x0[mask], layer.y0[mask], layer.x1[mask], layer.y1[mask], radius)
 
 
 def picture(path, index, engines, sections, overrides):
@@ -62,7 +76,8 @@ def picture(path, index, engines, sections, overrides):
     present = [(label, m, lq) for label, m, lq in engines if index in m.layers and m.layers[index].z_mm is not None]
     if not present:
         return None
-    mids = {label: pq.layer_mid_heights(m)[index] for label, m, _ in present}
+    # a raft layer (index < 0) is drawn over the model's first section: what the raft carries
+    mids = {label: pq.layer_mid_heights(m, sbs.raft_lift_mm(overrides)).get(index, 0.1) for label, m, _ in present}
     secs = dict(zip(mids, sections.at(mids.values())))
     boxes = np.array([pq.layer_extent(m, m.layers[index], secs[label], offset, diameter, nozzle)
                       for label, m, _ in present])
@@ -70,6 +85,7 @@ def picture(path, index, engines, sections, overrides):
     panels = []
     for label, m, lq in present:
         r = pq.layer_rasters(m, m.layers[index], secs[label], offset, diameter, nozzle, grid=grid, others=True)
+        r["I"] = ironing_raster(m, m.layers[index], grid, diameter, nozzle)
         img = Image.fromarray(colour(r))
         text = f"{label}  layer {index}  z {m.layers[index].z_mm:.2f} mm"
         if lq is not None and lq.section_mm2 > 0:
@@ -154,7 +170,13 @@ def main():
         results[name]["layers"] = {label: [vars(x) for x in q.layers]
                                    for label, q in (("mixengine", mq), ("CuraEngine", cq))}
         indices = [lq.index for lq in mq.layers]
-        chosen = sorted({indices[0], indices[len(indices) // 2], worst_layer(mq, cq)} - {None}) if indices else []
+        chosen = {indices[0], indices[len(indices) // 2], worst_layer(mq, cq)} - {None} if indices else set()
+        below = [i for i in mm.layers if i < 0]
+        if below:  # the raft: its base and its top surface
+            chosen |= {min(below), max(below)}
+        if indices and overrides.get("ironing_enabled") == "True":
+            chosen.add(indices[-1])
+        chosen = sorted(chosen)
         by_index = {label: {lq.index: lq for lq in q.layers} for label, q in (("mixengine", mq), ("CuraEngine", cq))}
         for index in chosen:
             path = picture(opt.out_dir / f"{name}_layer{index}.png", index,

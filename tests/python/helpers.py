@@ -53,6 +53,16 @@ def mixengine(*args, timeout=600):
     return run([BIN, *args], timeout=timeout)
 
 
+def slice_with(model, out, *settings):
+    """`mixengine slice -s KEY=VALUE ... -l MODEL -o OUT` (fdmprinter); returns OUT, asserting success."""
+    args = ["slice"]
+    for s in settings:
+        args += ["-s", s]
+    proc = mixengine(*args, "-l", model, "-o", out)
+    assert proc.returncode == 0, proc.stderr
+    return out
+
+
 def cura(*args, timeout=600):
     return run([CURA_BIN, *args], timeout=timeout, env=CURA_ENV)
 

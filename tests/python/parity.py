@@ -22,6 +22,12 @@ Verdicts (verdict()): compared on G-code signatures (signature()), not on bytes:
                       the temperature commands (M104/M109/M140/M190/M141/M191 with their values) it adds.
   not honoured: ...   otherwise, with the first reason.
 
+Scenes (SCENES): "ender3", the Ender-3 with MODEL, every setting; "s5_dual", the Ultimaker S5 with one part per
+extruder and only the settings that matter with two extruders (DualScene). `python parity.py --scene s5_dual
+[--explain key=value ...]` runs or explains that scene. In the two-extruder scene only temperature commands with a
+value some setting gives are compared (verdict's set_temperatures): the standby temperatures CuraEngine computes
+follow its own time estimates.
+
 The list of settings MixEngine does not honour yet is settings/mixengine/not_honoured.json: the engine warns
 about them, the plugin shows them, and test_parity.py runs every entry as a strict xfail.
 """
@@ -98,22 +104,164 @@ SKIP_KEYS = {
 }
 
 
+# ---------------------------------------------------------------------------------------------------------
+# Scenes: a printer, its models and the settings flipped on it.
+
+class SingleScene:
+    """The Ender-3 (one extruder) with MODEL: every flippable fdmprinter / fdmextruder setting."""
+    name = "ender3"
+    contexts = CONTEXTS
+
+    def resolve(self, settings):
+        """(global, extruder 0) resolved with SETTINGS as the user's global values."""
+        return sbs.resolve(settings)
+
+    def slice_args(self, settings):
+        g, e = sbs.resolve(settings)
+        return [*sbs.slice_args(g, e), "-l", sbs.model_path(MODEL)]
+
+    def model_paths(self):
+        return [sbs.model_path(MODEL)]
+
+    def keys(self):
+        return [k for k, node in definitions().items()
+                if node.get("type") not in SKIP_TYPES and k not in SKIP_KEYS]
+
+    def is_enabled(self, key, values):
+        return is_enabled(definitions()[key], values)
+
+    def set_temperatures(self, *contexts):
+        """None: every temperature command is compared (one extruder: the values follow settings)."""
+        return None
+
+    flip_values = {}
+    key_contexts = {}
+
+
+class DualScene:
+    """The Ultimaker S5 (two extruder trains, Griffin, prime tower and acceleration/jerk on by default) with
+    one part per extruder (side_by_side: dual_a on extruder 0, dual_b on extruder 1, both printing up to
+    5 mm, extruder 0 alone above). Both engines get the resolved global values and both trains' values.
+    Only the settings that matter with two extruders are flipped (DUAL_KEY_PATTERNS and every
+    fdmextruder setting); a flip of an fdmextruder setting (nozzle offset, start code, prime position...)
+    is a user value of the second train, any other flip a user value of the global stack, which both
+    trains see."""
+    name = "s5_dual"
+    machine = helpers.CURA_DEFS / "ultimaker_s5.def.json"
+    models = (("dual_a", 0), ("dual_b", 1))
+    contexts = [
+        {},
+        {"ooze_shield_enabled": "True"},
+        {"prime_blob_enable": "True"},
+        {"machine_extruders_share_nozzle": "True"},
+    ]
+    key_contexts = {}
+    # Values that mean something on this bed and print (the generic flips would put the tower off the bed
+    # or raise the final temperature above the printing one).
+    flip_values = {
+        "prime_tower_position_x": ["250"], "prime_tower_position_y": ["60"], "layer_start_x": ["0"],
+        "layer_start_y": ["0"], "material_print_temperature": ["220"], "material_print_temperature_layer_0": ["215"],
+        "material_initial_print_temperature": ["180"], "material_final_print_temperature": ["170"],
+        "machine_extruder_start_pos_x": ["0"], "machine_extruder_end_pos_x": ["0"],
+        # values that cross what this print needs: every idle time below the window (the nozzles stay
+        # hot), and a minimal length above the brim's (the second extruder's lines grow)
+        "machine_min_cool_heat_time_window": ["1000"], "skirt_brim_minimal_length": ["2000"],
+    }
+
+    def _split(self, settings):
+        train = {k: v for k, v in settings.items() if k in _extruder_keys()}
+        return {k: v for k, v in settings.items() if k not in train}, {1: train}
+
+    def resolve(self, settings):
+        """(global, extruder 1) resolved with SETTINGS (fdmextruder keys for extruder 1, the rest global)."""
+        g, trains = sbs.resolve_machine(self.machine, *self._split(settings))
+        return g, trains[1]
+
+    def slice_args(self, settings):
+        g, trains = sbs.resolve_machine(self.machine, *self._split(settings))
+        models = [(sbs.model_path(name), nr) for name, nr in self.models]
+        return sbs.multi_slice_args(self.machine, g, trains, models)
+
+    def model_paths(self):
+        return [sbs.model_path(name) for name, _ in self.models]
+
+    def keys(self):
+        extruder_keys = _extruder_keys()
+        return [k for k, node in definitions().items()
+                if node.get("type") not in SKIP_TYPES and k not in SKIP_KEYS - DUAL_UNSKIPPED
+                and (k in extruder_keys or any(re.fullmatch(p, k) for p in DUAL_KEY_PATTERNS))]
+
+    def is_enabled(self, key, values):
+        node = definitions()[key]
+        return is_enabled(dict(node, **_machine_enabled(self.machine).get(key, {})), values)
+
+    def set_temperatures(self, *contexts):
+        """The temperatures settings give in CONTEXTS (both trains), and 0 (a nozzle switched off): the
+        temperature commands compared (parity.verdict)."""
+        values = {0.0}
+        for context in contexts:
+            g, trains = sbs.resolve_machine(self.machine, *self._split(context))
+            for scope in (g, *trains):
+                values.update(float(v) for k, v in scope.items() if _TEMPERATURE_KEY.fullmatch(k))
+        return values
+
+
+# The settings flipped in the two-extruder scene besides fdmextruder's own (issue "Cura setting parity I").
+DUAL_KEY_PATTERNS = [
+    r"switch_extruder_.*", r"prime_tower_.*", r"prime_blob_enable", r"material_.*temperature.*",
+    r"machine_nozzle_.*speed", r"material_extrusion_cool_down_speed", r"machine_extruders_share.*",
+    r"machine_always_write_active_tool", r"retraction_hop_after_extruder_switch.*", r"layer_start_[xy]",
+    r"speed_equalize_flow_.*", r"skirt_brim_minimal_length", r"ooze_shield_.*", r"acceleration_.*", r"jerk_.*",
+    r"machine_min_cool_heat_time_window",
+]
+_TEMPERATURE_KEY = re.compile(r"(material_(?!flow_dependent).*|build_volume_|default_material_.*)temperature(_layer_0)?")
+DUAL_UNSKIPPED = {"machine_extruder_cooling_fan_number"}  # a train's own fan (M106 P<n>) matters here
+
+
+def _extruder_keys():
+    """The keys fdmextruder.def.json defines (a train's own settings)."""
+    out = {}
+    _flatten(json.loads((helpers.CURA_DEFS / "fdmextruder.def.json").read_text()).get("settings", {}), out)
+    return set(out)
+
+
+def _machine_enabled(machine):
+    """{key: {"enabled": formula}} from the `overrides` of MACHINE's definition chain (nearest wins)."""
+    found, path = {}, Path(machine)
+    while path.is_file():
+        data = json.loads(path.read_text())
+        for key, node in data.get("overrides", {}).items():
+            if "enabled" in node and key not in found:
+                found[key] = {"enabled": node["enabled"]}
+        parent = data.get("inherits")
+        path = helpers.CURA_DEFS / f"{parent}.def.json" if parent else Path()
+    return found
+
+
+SINGLE = SingleScene()
+DUAL = DualScene()
+SCENES = {scene.name: scene for scene in (SINGLE, DUAL)}
+
+
 def load_not_honoured():
-    """key -> (values or None, why): None = any value other than the definitions' is not honoured."""
+    """key -> (values or None, why, multi_extruder_only): None = any value other than the definitions' is
+    not honoured; multi_extruder_only: listed for prints with two or more extruders alone (the entry's
+    "multi_extruder_only": true), so it is expected to fail in the two-extruder scene only."""
     entries = json.loads(NOT_HONOURED.read_text())["settings"]
     out = {}
     for key, entry in entries.items():
         if isinstance(entry, str):
-            out[key] = (None, entry)
+            out[key] = (None, entry, False)
         else:
-            out[key] = (tuple(str(v) for v in entry["values"]), entry["why"])
+            values = tuple(str(v) for v in entry["values"]) if "values" in entry else None
+            out[key] = (values, entry["why"], bool(entry.get("multi_extruder_only", False)))
     return out
 
 
 def is_listed(listed, key, value):
     if key not in listed:
         return None
-    values, why = listed[key]
+    values, why, _ = listed[key]
     return why if values is None or str(value) in values else None
 
 
@@ -240,11 +388,12 @@ def flips(key, node, current):
     return []
 
 
-def context_for(node, resolve):
-    """The first context in which the setting is enabled, with its resolved values; None if in none."""
-    for context in CONTEXTS:
-        g, e = resolve(context)
-        if is_enabled(node, {**g, **e}):
+def context_for(key, scene):
+    """The first of the scene's contexts in which the setting is enabled, with its resolved values
+    (global, the train its flips go to); None if in none."""
+    for context in ([scene.key_contexts[key]] if key in scene.key_contexts else []) + list(scene.contexts):
+        g, e = scene.resolve(context)
+        if scene.is_enabled(key, {**g, **e}):
             return context, g, e
     return None
 
@@ -347,7 +496,19 @@ def _clear(delta, base, metric):
 CATEGORY_METRICS = {"travel_len": ("travel",), "retractions": ("travel",), "mean_speed": ("speed", "cooling")}
 
 
-def verdict(cura_base, cura_flip, mix_base, mix_flip, category=None):
+def _only_set_temperatures(sig, set_temperatures):
+    """SIG with only the temperature commands whose value is one of SET_TEMPERATURES (values of settings):
+    the intermediate values CuraEngine's preheat model computes from its own time estimates (a standby
+    temperature the nozzle only cools down to) depend on those estimates and are not compared."""
+    if set_temperatures is None:
+        return sig
+    kept = [t for t in sig["temps"] if float(t.split()[1][1:]) in set_temperatures]
+    return dict(sig, temps=kept)
+
+
+def verdict(cura_base, cura_flip, mix_base, mix_flip, category=None, set_temperatures=None):
+    cura_base, cura_flip, mix_base, mix_flip = (_only_set_temperatures(sig, set_temperatures)
+                                                for sig in (cura_base, cura_flip, mix_base, mix_flip))
     if cura_flip["digest"] == cura_base["digest"]:
         return "cura-unchanged"
     if mix_flip["digest"] == mix_base["digest"]:
@@ -383,11 +544,11 @@ def _cache_path(kind, args):
     return CACHE / f"{key.hexdigest()[:24]}.json"
 
 
-def cura_signature(settings):
+def cura_signature(settings, scene=None):
     """CuraEngine's signature for a settings context (cached on disk: CuraEngine is the slow half)."""
-    g, e = sbs.resolve(settings)
-    args = [*sbs.slice_args(g, e), "-l", sbs.model_path(MODEL)]
-    cached = _cache_path("cura", args + [sbs._file_digest(sbs.model_path(MODEL))])
+    scene = scene or SINGLE
+    args = scene.slice_args(settings)
+    cached = _cache_path("cura", args + [sbs._file_digest(path) for path in scene.model_paths()])
     if cached.is_file():
         return json.loads(cached.read_text())
     out = sbs._TMP / f"parity-cura-{cached.stem}-{uuid.uuid4().hex[:8]}.gcode"
@@ -406,31 +567,31 @@ def cura_signature(settings):
 _MIX_MEMO = {}
 
 
-def mix_signature(settings):
+def mix_signature(settings, scene=None):
     """MixEngine's signature for a settings context (memoised in this process)."""
-    memo_key = tuple(sorted(settings.items()))
+    scene = scene or SINGLE
+    memo_key = (scene.name, tuple(sorted(settings.items())))
     if memo_key not in _MIX_MEMO:
-        _MIX_MEMO[memo_key] = _mix_signature(settings)
+        _MIX_MEMO[memo_key] = _mix_signature(settings, scene)
     return _MIX_MEMO[memo_key]
 
 
-def _mix_signature(settings):
-    g, e = sbs.resolve(settings)
-    name = hashlib.sha256(repr(sorted(settings.items())).encode()).hexdigest()[:16]
+def _mix_signature(settings, scene):
+    name = hashlib.sha256(repr((scene.name, sorted(settings.items()))).encode()).hexdigest()[:16]
     out = sbs._TMP / f"parity-mix-{name}-{uuid.uuid4().hex[:8]}.gcode"
-    proc = helpers.run([helpers.BIN, "slice", *sbs.slice_args(g, e), "-l", sbs.model_path(MODEL), "-o", out],
-                       env=helpers.CURA_ENV)
+    proc = helpers.run([helpers.BIN, "slice", *scene.slice_args(settings), "-o", out], env=helpers.CURA_ENV)
     result = signature(out) if proc.returncode == 0 and out.exists() else {"error": proc.stderr[-300:]}
     out.unlink(missing_ok=True)
     return result
 
 
-def judge(context, key, value):
-    """The verdict for setting KEY=VALUE on top of CONTEXT."""
+def judge(context, key, value, scene=None):
+    """The verdict for setting KEY=VALUE on top of CONTEXT (in SCENE, the single-extruder one by default)."""
+    scene = scene or SINGLE
     flipped = dict(context, **{key: value})
     try:
-        cb, cf = cura_signature(context), cura_signature(flipped)
-        mb, mf = mix_signature(context), mix_signature(flipped)
+        cb, cf = cura_signature(context, scene), cura_signature(flipped, scene)
+        mb, mf = mix_signature(context, scene), mix_signature(flipped, scene)
     except RuntimeError as err:  # mixengine settings refused the value
         return f"error: {str(err)[-200:]}"
     if "error" in cf:  # CuraEngine itself cannot print it (e.g. an arithmetic exception): nothing to match
@@ -438,39 +599,43 @@ def judge(context, key, value):
     for name, sig in (("CuraEngine base", cb), ("MixEngine", mf), ("MixEngine base", mb)):
         if "error" in sig:
             return f"error: {name} failed: {sig['error'].strip().splitlines()[-1:] if sig['error'] else ''}"
-    return verdict(cb, cf, mb, mf, CATEGORIES.get(key))
+    return verdict(cb, cf, mb, mf, CATEGORIES.get(key), scene.set_temperatures(context, flipped))
 
 
-def all_flips(keys=None):
-    """[(key, value, context)] for every flippable fdmprinter / fdmextruder setting (or those in KEYS)."""
+def all_flips(keys=None, scene=None):
+    """[(key, value, context)] for every flippable setting of the scene (or those in KEYS)."""
+    scene = scene or SINGLE
     defs = definitions()
     out = []
-    for key, node in defs.items():
-        if node.get("type") in SKIP_TYPES or key in SKIP_KEYS or (keys is not None and key not in keys):
+    for key in scene.keys():
+        node = defs[key]
+        if keys is not None and key not in keys:
             continue
-        found = context_for(node, sbs.resolve)
+        found = context_for(key, scene)
         if found is None:
             continue
         context, g, e = found
         current = e.get(key, g.get(key))
         if current is None:
             continue
-        for value in flips(key, node, current):
+        for value in scene.flip_values.get(key) or flips(key, node, current):
             out.append((key, value, context))
     return out
 
 
-def run_all(workers=2, progress=None, keys=None):
-    """{"key=value": {key, value, context, verdict}} for every flip (of KEYS), judged on WORKERS threads."""
+def run_all(workers=2, progress=None, keys=None, scene=None):
+    """{"key=value": {key, value, context, verdict}} for every flip (of KEYS) in SCENE, judged on WORKERS
+    threads."""
     from concurrent.futures import ThreadPoolExecutor
-    todo = all_flips(keys)
+    scene = scene or SINGLE
+    todo = all_flips(keys, scene)
     contexts = [dict(c) for c in {tuple(sorted(c.items())) for _, _, c in todo}]
     with ThreadPoolExecutor(max_workers=workers) as pool:  # each context's base once, before the flips
-        list(pool.map(cura_signature, contexts))
-        list(pool.map(mix_signature, contexts))
+        list(pool.map(lambda c: cura_signature(c, scene), contexts))
+        list(pool.map(lambda c: mix_signature(c, scene), contexts))
     with ThreadPoolExecutor(max_workers=workers) as pool:
         results = {}
-        futures = {pool.submit(judge, c, k, v): (k, v, c) for k, v, c in todo}
+        futures = {pool.submit(judge, c, k, v, scene): (k, v, c) for k, v, c in todo}
         for done, future in enumerate(futures, 1):
             key, value, context = futures[future]
             results[f"{key}={value}"] = {"key": key, "value": value, "context": context,
@@ -480,14 +645,15 @@ def run_all(workers=2, progress=None, keys=None):
     return results
 
 
-def explain(key, value):
+def explain(key, value, scene=None):
     """Text: the context, the verdict, and what changed in each engine's signature (for a person)."""
-    found = context_for(definitions()[key], sbs.resolve)
+    scene = scene or SINGLE
+    found = context_for(key, scene)
     context = found[0] if found else {}
     flipped = dict(context, **{key: value})
-    sigs = {"CuraEngine": (cura_signature(context), cura_signature(flipped)),
-            "MixEngine": (mix_signature(context), mix_signature(flipped))}
-    lines = [f"{key}={value} on {context or 'the plain print'}: {judge(context, key, value)}"]
+    sigs = {"CuraEngine": (cura_signature(context, scene), cura_signature(flipped, scene)),
+            "MixEngine": (mix_signature(context, scene), mix_signature(flipped, scene))}
+    lines = [f"{key}={value} on {scene.name}, {context or 'the plain print'}: {judge(context, key, value, scene)}"]
     for engine, (base, flip) in sigs.items():
         figures = {m: round(flip["figures"][m] - base["figures"][m], 3) for m in THRESHOLDS}
         lines.append(f"  {engine}: changed {base['digest'] != flip['digest']}, deltas {figures}")
@@ -500,10 +666,7 @@ def explain(key, value):
 
 # Reasons for whole families of settings (a key's first matching prefix); other keys get their verdict.
 FAMILY_REASONS = [
-    (("adhesion_type",), "a raft is printed as a skirt"),
-    (("raft_", "layer_0_z_overlap"), "rafts are not built yet (a raft is printed as a skirt)"),
     (("bridge_",), "bridge settings are not built yet"),
-    (("ironing_",), "ironing is not built yet"),
     (("coasting_",), "coasting is not built yet"),
     (("magic_fuzzy_skin_",), "fuzzy skin is not built yet"),
     (("mold_",), "molds are not built yet"),
@@ -553,14 +716,19 @@ def list_from(results):
 if __name__ == "__main__":
     import sys
     if len(sys.argv) > 2 and sys.argv[1] == "--write-list":
-        document = json.loads(NOT_HONOURED.read_text())
-        document["settings"] = list_from(json.loads(Path(sys.argv[2]).read_text()))
+        document = json.loads(NOT_HONOURED.read_text())  # a sweep of the single-extruder scene
+        kept = {k: e for k, e in document["settings"].items() if isinstance(e, dict) and e.get("multi_extruder_only")}
+        document["settings"] = dict(sorted({**list_from(json.loads(Path(sys.argv[2]).read_text())), **kept}.items()))
         NOT_HONOURED.write_text(json.dumps(document, indent=2) + "\n")
         print(f"{NOT_HONOURED}: {len(document['settings'])} settings")
         sys.exit(0)
+    chosen = SINGLE
+    if len(sys.argv) > 2 and sys.argv[1] == "--scene":  # --scene s5_dual: the two-extruder scene
+        chosen = SCENES[sys.argv[2]]
+        del sys.argv[1:3]
     if len(sys.argv) > 2 and sys.argv[1] == "--explain":
         for flip in sys.argv[2:]:
-            print(explain(*flip.split("=", 1)))
+            print(explain(*flip.split("=", 1), scene=chosen))
         sys.exit(0)
-    report = run_all(progress=lambda i, n, k, v, r: print(f"[{i}/{n}] {k}={v}: {r}", flush=True))
+    report = run_all(progress=lambda i, n, k, v, r: print(f"[{i}/{n}] {k}={v}: {r}", flush=True), scene=chosen)
     Path(sys.argv[1] if len(sys.argv) > 1 else "parity.json").write_text(json.dumps(report, indent=1))

@@ -269,16 +269,18 @@ def layer_extent(model, layer, section, offset_xy, filament_diameter_mm, nozzle_
             b[:, 3].max() + margin_mm)
 
 
-def layer_mid_heights(model):
-    """{layer index: z of the model section it is compared with} for layers >= 0 with a height."""
-    return {i: model.layers[i].z_mm - model.layers[i].thickness_mm / 2 for i in sorted(model.layers)
+def layer_mid_heights(model, lift_mm=0.0):
+    """{layer index: z of the model section it is compared with} for layers >= 0 with a height. lift_mm: how
+    far the print raised the model (a raft: side_by_side.raft_lift_mm), taken off every layer's height."""
+    return {i: model.layers[i].z_mm - lift_mm - model.layers[i].thickness_mm / 2 for i in sorted(model.layers)
             if i >= 0 and model.layers[i].z_mm is not None}
 
 
 def measure(model, mesh_path, offset_xy, filament_diameter_mm, nozzle_mm=0.4, grid_mm=GRID_MM,
-            tolerance_mm=TOLERANCE_MM, sections=None):
-    """Quality of a gcode_model.Model against the mesh at mesh_path (or a ModelSections of it)."""
-    mids = layer_mid_heights(model)
+            tolerance_mm=TOLERANCE_MM, sections=None, lift_mm=0.0):
+    """Quality of a gcode_model.Model against the mesh at mesh_path (or a ModelSections of it); lift_mm as in
+    layer_mid_heights."""
+    mids = layer_mid_heights(model, lift_mm)
     sections = sections or ModelSections(mesh_path)
     q = Quality(grid_mm=grid_mm, tolerance_mm=tolerance_mm)
     area = grid_mm * grid_mm

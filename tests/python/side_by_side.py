@@ -22,6 +22,7 @@ import math
 import os
 import shutil
 import tempfile
+import threading
 import time
 from pathlib import Path
 
@@ -38,12 +39,16 @@ atexit.register(shutil.rmtree, _TMP, True)
 _MEMO = {}
 
 
-GENERATED = ("tube", "tee", "parity")
+GENERATED = ("tube", "tee", "parity", "dual_a", "dual_b")
+# Parts of one two-extruder scene, made in the scene's frame (kept where they are, not centred one by one).
+PLACED = ("dual_a", "dual_b")
 
 
 def _make(name):
     import shapely
     import trimesh
+    if name in PLACED:
+        return _dual_part(name, trimesh)
     if name == "tube":
         return trimesh.creation.annulus(r_min=6.0, r_max=12.0, height=15.0, sections=128)
     if name == "parity":
@@ -72,6 +77,19 @@ def _parity_scene(shapely, trimesh):
     return trimesh.util.concatenate([bridge, fin, tube])
 
 
+def _dual_part(name, trimesh):
+    """The two parts of parity.py's two-extruder scene, 34 x 14 mm together around the origin: dual_a (for
+    extruder 0) a 14 x 14 x 8 mm box at x = -10, dual_b (extruder 1) a tube of 7 mm outer and 3 mm inner
+    radius, 5 mm tall, at x = +10: both extruders print up to 5 mm, extruder 0 alone above."""
+    if name == "dual_a":
+        part = trimesh.creation.box(extents=[14.0, 14.0, 8.0])
+        part.apply_translation([-10, 0, 4.0])
+    else:
+        part = trimesh.creation.annulus(r_min=3.0, r_max=7.0, height=5.0, sections=64)
+        part.apply_translation([10, 0, 2.5])
+    return part
+
+
 def generated_model(name):
     """Models made here (not in the corpus), written once into CACHE_DIR/models, centred in XY with their
     lowest point at Z 0: tube (a 24 mm tube with a 12 mm hole, 15 mm tall: a hole in every layer; 128-gon)
@@ -81,10 +99,11 @@ def generated_model(name):
         if name not in GENERATED:
             raise ValueError(f"unknown generated model {name}")
         mesh = _make(name)
-        (x0, y0, z0), (x1, y1, _) = mesh.bounds
-        mesh.apply_translation([-(x0 + x1) / 2, -(y0 + y1) / 2, -z0])
+        if name not in PLACED:
+            (x0, y0, z0), (x1, y1, _) = mesh.bounds
+            mesh.apply_translation([-(x0 + x1) / 2, -(y0 + y1) / 2, -z0])
         path.parent.mkdir(parents=True, exist_ok=True)
-        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp = path.with_suffix(f".{os.getpid()}.{threading.get_ident()}.tmp")  # parity.py makes them on threads
         mesh.export(tmp, file_type="stl")
         tmp.replace(path)
     return path
@@ -112,6 +131,49 @@ def resolve(overrides=None):
         data = json.loads(proc.stdout)
         _MEMO[key] = (data["global"], data["extruders"][0])
     return _MEMO[key]
+
+
+def resolve_machine(machine, overrides=None, extruder_overrides=None):
+    """(global, [every extruder train]) as MixEngine resolves them for MACHINE (a definition file) with
+    BASE_SETTINGS + overrides (user values of the global stack, seen by every train) and
+    extruder_overrides ({extruder_nr: {key: value}}, user values of that train alone)."""
+    values = dict(BASE_SETTINGS, **(overrides or {}))
+    per_train = {nr: dict(v) for nr, v in sorted((extruder_overrides or {}).items()) if v}
+    key = ("resolve_machine", str(machine), tuple(sorted(values.items())),
+           tuple((nr, tuple(sorted(v.items()))) for nr, v in per_train.items()))
+    if key not in _MEMO:
+        args = ["settings", "-j", machine]
+        for k, v in values.items():
+            args += ["-s", f"{k}={v}"]
+        for nr, train_values in per_train.items():
+            args.append(f"-e{nr}")
+            for k, v in train_values.items():
+                args += ["-s", f"{k}={v}"]
+        proc = helpers.mixengine(*args, "--json")
+        if proc.returncode != 0:
+            raise RuntimeError(f"mixengine settings failed (rc {proc.returncode}): {proc.stderr.strip()[-500:]}")
+        data = json.loads(proc.stdout)
+        _MEMO[key] = (data["global"], data["extruders"])
+    return _MEMO[key]
+
+
+def multi_slice_args(machine, global_values, extruders, models):
+    """Arguments for both engines: every global value, then for each train -eN with the values it
+    resolves differently from the global ones, followed by the models it prints (MODELS: [(path,
+    extruder_nr)]), each -l with -s extruder_nr=N, so that a model's settings inherit from its own train
+    as in a slice from Cura (CuraEngine's command line parents a model to the last -e given)."""
+    args = ["-j", machine]
+    for k in sorted(global_values):
+        args += ["-s", f"{k}={global_values[k]}"]
+    for nr, values in enumerate(extruders):
+        args.append(f"-e{nr}")
+        for k in sorted(values):
+            if global_values.get(k) != values[k]:
+                args += ["-s", f"{k}={values[k]}"]
+        for path, model_extruder in models:
+            if model_extruder == nr:
+                args += ["-l", path, "-s", f"extruder_nr={nr}"]
+    return args
 
 
 def slice_args(global_values, extruder_values):
@@ -247,12 +309,25 @@ def machine(overrides=None):
     return bed_offset(g), float(e["material_diameter"]), float(e["machine_nozzle_size"])
 
 
+def raft_lift_mm(overrides=None):
+    """How far both engines raise the model over a raft (adhesion_type raft; MixEngine's
+    toolpaths/RaftLayout.h, CuraEngine's raft.cpp): the raft's thickness + raft_airgap - layer_0_z_overlap
+    (layer 0 sits that overlap higher); 0 without a raft."""
+    g, e = resolve(overrides)
+    if g.get("adhesion_type") != "raft":
+        return 0.0
+    thickness = (float(e["raft_base_thickness"]) + float(e["raft_interface_thickness"])
+                 + int(e["raft_surface_layers"]) * float(e["raft_surface_thickness"]))
+    return thickness + float(e["raft_airgap"]) - float(e["layer_0_z_overlap"])
+
+
 def measured(run, name, overrides=None, sections=None):
     """(gcode_model.Model, print_quality.Quality) of run.gcode against the model, with the resolved
-    settings (filament diameter, nozzle, bed offset)."""
+    settings (filament diameter, nozzle, bed offset, the raft's lift)."""
     offset, diameter, nozzle = machine(overrides)
     model = gcode_model.read(run.gcode)
-    q = print_quality.measure(model, model_path(name), offset, diameter, nozzle_mm=nozzle, sections=sections)
+    q = print_quality.measure(model, model_path(name), offset, diameter, nozzle_mm=nozzle, sections=sections,
+                              lift_mm=raft_lift_mm(overrides))
     return model, q
 
 

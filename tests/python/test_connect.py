@@ -210,9 +210,37 @@ def test_connect_without_a_frontend_fails_promptly_naming_the_address(engine):
 def test_a_setting_mixengine_does_not_honour_is_named_in_the_engine_log(engine, cube, tmp_path):
     """Issue 19, no silent ignores over the socket: Cura writes the engine's stderr into cura.log, so the
     warning for a listed setting (settings/mixengine/not_honoured.json) reaches the user there."""
-    global_settings, extruders = resolved_settings("creality_ender3", "adhesion_type=raft")
+    global_settings, extruders = resolved_settings("creality_ender3", "magic_fuzzy_skin_enabled=True")
     r = slice_over_socket(engine, tmp_path, global_settings, extruders, [one_object(cube)])
     assert r["exit_code"] == 0, r["stderr"]
     warnings = [line for line in r["stderr"].splitlines() if "has no effect in MixEngine yet" in line]
-    assert any(line.startswith("[warning] setting 'adhesion_type' has no effect in MixEngine yet (value raft")
-               for line in warnings), r["stderr"]
+    assert any(line.startswith("[warning] setting 'magic_fuzzy_skin_enabled' has no effect in MixEngine yet "
+                               "(value True") for line in warnings), r["stderr"]
+
+
+def test_raft_layers_reach_the_preview_numbered_below_zero(engine, cube, tmp_path):
+    """Issue 15: under a raft Cura receives CuraEngine's layer numbers — the raft's base, interface and two
+    surface layers from -(4 + F), F filler layers (the air gap in layer heights) that print nothing on a
+    cube, the model from 0 — in the G-code chunks and the LayerOptimized preview alike; ;LAYER_COUNT: counts
+    the model's layers, as CuraEngine's does; every preview layer carries its own thickness."""
+    global_settings, extruders = resolved_settings("creality_ender3", "adhesion_type=raft")
+    r = slice_over_socket(engine, tmp_path, global_settings, extruders, [one_object(cube)])
+    assert r["exit_code"] == 0, r["stderr"]
+    assert not re.search(r"setting '(adhesion_type|raft_\w+|layer_0_z_overlap)' has no effect", r["stderr"])
+    layers = sorted(r["layers"], key=lambda layer: layer["id"])
+    model_layers = len(layers) - 4
+    e = extruders["0"]
+    gap_um = round((float(e["raft_airgap"]) + float(global_settings["layer_height_0"])
+                    - float(e["layer_0_z_overlap"])) * 1000)
+    layer_um = round(float(global_settings["layer_height"]) * 1000)
+    base = -(2 + int(e["raft_surface_layers"]) + (gap_um + layer_um // 2) // layer_um)
+    assert [layer["id"] for layer in layers] == [base, base + 1, base + 2, base + 3] + list(range(model_layers))
+    _, start, *chunks, _ = r["gcode_list"]
+    assert start.endswith(f";LAYER_COUNT:{model_layers}\n")
+    assert [chunk.split("\n", 1)[0] for chunk in chunks] == [f";LAYER:{layer['id']}" for layer in layers]
+    raft_thickness = [float(extruders["0"][k]) * 1000 for k in ("raft_base_thickness", "raft_interface_thickness")]
+    assert [layers[0]["thickness"], layers[1]["thickness"]] == pytest.approx(raft_thickness)
+    assert layers[4]["thickness"] == pytest.approx(float(global_settings["layer_height_0"]) * 1000)
+    assert layers[4]["height"] > layers[3]["height"] + float(extruders["0"]["raft_airgap"]) * 1000 - 1
+    raft_types = {t for layer in layers[:4] for seg in layer["segments"] for t in seg["types"]}
+    assert {7, 10} <= raft_types and not raft_types & {1, 2, 3, 5, 6}  # support / interface lines only

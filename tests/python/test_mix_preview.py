@@ -32,12 +32,7 @@ def cube(tmp_path_factory):
 
 
 def slice_cube(cube, out, *settings):
-    args = ["slice"]
-    for s in settings:
-        args += ["-s", s]
-    proc = helpers.mixengine(*args, "-l", cube, "-o", out)
-    assert proc.returncode == 0, proc.stderr
-    return out
+    return helpers.slice_with(cube, out, *settings)
 
 
 def layer_shares(moves):
@@ -229,15 +224,19 @@ def test_matching_skips_moves_the_layer_view_does_not_show():
 # ---- settings MixEngine does not act on -----------------------------------------------------------------------
 def test_not_honoured_entries_from_the_shared_list():
     entries = NotHonoured.load(str(helpers.REPO / "settings"))
-    assert "ironing_enabled" in entries and "adhesion_type" in entries  # the engine's list, read as it is
-    found = [("adhesion_type", "raft", "skirt", "global"), ("ironing_enabled", True, False, "global"),
-             ("ironing_enabled", "True", "False", "cube.stl"), ("magic_spiralize", False, False, "global"),
-             ("adhesion_type", "brim", "skirt", "global"), ("not_listed", 1, 2, "global")]
+    # the engine's list, read as it is (a key listed whole, and one listed for some values)
+    assert "magic_fuzzy_skin_enabled" in entries and "wireframe_strategy" in entries
+    found = [("wireframe_strategy", "retract", "compensate", "global"),
+             ("magic_fuzzy_skin_enabled", True, False, "global"),
+             ("magic_fuzzy_skin_enabled", "True", "False", "cube.stl"), ("magic_spiralize", False, False, "global"),
+             ("wireframe_strategy", "knot", "compensate", "global"), ("not_listed", 1, 2, "global")]
     rows = NotHonoured.offending(entries, found)
-    assert [(r[0], r[1]) for r in rows] == [("adhesion_type", "raft"), ("ironing_enabled", True)]
-    assert rows[1][3] == ["global", "cube.stl"]  # one row per key and value, every place named
-    text = NotHonoured.messageText(rows, label={"adhesion_type": "Build Plate Adhesion Type",
-                                                "ironing_enabled": "Enable Ironing"}.get)
-    assert "Build Plate Adhesion Type = raft: a raft is printed as a skirt" in text
-    assert "Enable Ironing = True (global, cube.stl): ironing is not built yet" in text
-    assert NotHonoured.offending(entries, [("ironing_enabled", False, False, "global")]) == []
+    assert [(r[0], r[1]) for r in rows] == [("magic_fuzzy_skin_enabled", True), ("wireframe_strategy", "retract")]
+    assert rows[0][3] == ["global", "cube.stl"]  # one row per key and value, every place named
+    text = NotHonoured.messageText(rows, label={"wireframe_strategy": "WP Strategy",
+                                                "magic_fuzzy_skin_enabled": "Fuzzy Skin"}.get)
+    assert "WP Strategy = retract: wire printing is not built" in text
+    assert "Fuzzy Skin = True (global, cube.stl): fuzzy skin is not built yet" in text
+    assert NotHonoured.offending(entries, [("magic_fuzzy_skin_enabled", False, False, "global")]) == []
+    # a listed value that is the machine's own default is not the user's request (the engine's rule too)
+    assert NotHonoured.offending(entries, [("wireframe_strategy", "retract", "retract", "global")]) == []

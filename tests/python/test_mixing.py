@@ -36,13 +36,7 @@ def sliced(engine, cube, tmp_path_factory):
 
     @lru_cache(maxsize=None)
     def run(*settings):
-        out = out_dir / f"{len(list(out_dir.iterdir()))}.gcode"
-        args = ["slice"]
-        for s in settings:
-            args += ["-s", s]
-        proc = helpers.mixengine(*args, "-l", cube, "-o", out)
-        assert proc.returncode == 0, proc.stderr
-        return out
+        return helpers.slice_with(cube, out_dir / f"{len(list(out_dir.iterdir()))}.gcode", *settings)
 
     return run
 
@@ -98,6 +92,39 @@ def test_channels_add_up_to_the_single_colour_e(sliced, dialect, relative):
     assert all(min(m.amounts) >= -1e-9 for m in mixed_ext), "a channel runs backwards on an extruding move"
     # Retractions and primes too: the same filament per line as the single-colour output.
     assert [round(m.total, 5) for m in mixed] == [round(s.total, 5) for s in single]
+
+
+@pytest.mark.parametrize("relative", [False, True])
+@pytest.mark.parametrize("dialect", ["eb_axes", "rrf_colon", "marlin_m163"])
+def test_raft_is_printed_with_its_own_mix_and_adds_up(sliced, dialect, relative):
+    """adhesion_type=raft: the raft's layers (;LAYER: below 0: base, interface, fdmprinter's two surface
+    layers) are printed with mixing_raft_ratio — filament A by default, 0.3:0.7 when set — and the cube above
+    follows its gradient from its own bottom, lifted by the raft; move by move A + B is still the
+    single-colour E of the same slice with the same raft."""
+    raft = ("adhesion_type=raft",)
+    single = single_moves_of(sliced(*raft, *mode_settings(relative or dialect == "rrf_colon")))
+    tolerance = 2e-5 if dialect in SPLIT_DIALECTS else 0.5 / RESOLUTION + 1e-9
+    for raft_mix, raft_b in ((None, 0.0), ("0.3:0.7", 0.7)):
+        extra = raft + ((f"mixing_raft_ratio={raft_mix}",) if raft_mix else ())
+        reading = read_mixing_gcode(sliced(*extra, *gradient(dialect, 20, 80, relative)), dialect)
+        layers = reading.layer_totals()
+        assert sorted(layer for layer in layers if layer < 0) == [-9, -8, -7, -6]  # 5 filler layers unprinted
+        for layer in (-9, -8, -7, -6):
+            amount_a, amount_b = layers[layer][1]
+            assert amount_b / (amount_a + amount_b) == pytest.approx(raft_b, abs=tolerance), layer
+        lift = layers[1][0] - 0.4  # fdmprinter: layer 1 of the model is printed at 0.3 + 0.1 mm above its bottom
+        assert lift == pytest.approx(0.71 + 0.3 - 0.15)  # raft 0.36 + 0.15 + 2 x 0.1, air gap, layer-0 overlap
+        for layer, (z, (amount_a, amount_b)) in layers.items():
+            if layer >= 1:
+                expected = seed_share_b(20, 80, 100.0 * (z - lift) / CUBE_MM)
+                assert amount_b / (amount_a + amount_b) == pytest.approx(expected, abs=tolerance), layer
+        mixed = [m for m in reading.moves if m.xy and m.total > 0]
+        assert len(mixed) == len(single) > 1000
+        assert max(relative_error(m.total, s.total) for m, s in zip(mixed, single)) <= 1e-5
+
+
+def single_moves_of(path):
+    return [m for m in read_mixing_gcode(path, "single").moves if m.xy and m.total > 0]
 
 
 @pytest.mark.parametrize("relative", [False, True])

@@ -60,7 +60,7 @@ void sliceAndReply(const cura::proto::Slice& slice, int threads, ArcusSession& s
     Point2 head{0, 0};
     int extruder = 0;
     const PlanObserver observe = [&](const PrintPlan& plan) {
-        auto layers = previewLayers(plan, static_cast<int>(preview.size()), head, extruder);
+        auto layers = previewLayers(plan, 0, head, extruder);  // the plan's indexes run on across groups
         preview.insert(preview.end(), layers.begin(), layers.end());
     };
     const GCodeOutput gcode = runPipeline(scene, effectiveThreads(threads), log, observe);

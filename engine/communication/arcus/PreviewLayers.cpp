@@ -109,7 +109,7 @@ void addLayerSegments(const PlannedLayer& planned, double thickness_mm, cura::pr
 }  // namespace
 
 int curaLineType(Feature feature) {
-    switch (feature) {
+    switch (markedFeature(feature)) {
         case Feature::WallOuter:
             return 1;
         case Feature::WallInner:
@@ -126,20 +126,21 @@ int curaLineType(Feature feature) {
             return 10;
         case Feature::PrimeTower:
             return 11;
+        default:
+            return 0;
     }
-    return 0;
 }
 
-std::vector<std::shared_ptr<cura::proto::LayerOptimized>> previewLayers(const PrintPlan& plan, int first_id,
-                                                                        Point2& start, int& start_extruder) {
+std::vector<std::shared_ptr<cura::proto::LayerOptimized>> previewLayers(const PrintPlan& plan,
+                                                                        int index_offset, Point2& start,
+                                                                        int& start_extruder) {
     std::vector<std::shared_ptr<cura::proto::LayerOptimized>> layers;
     coord_um previous_z = 0;
-    for (std::size_t i = 0; i < plan.layers.size(); ++i) {
-        const PlannedLayer& planned = plan.layers[i];
+    for (const PlannedLayer& planned : plan.layers) {
         auto layer = std::make_shared<cura::proto::LayerOptimized>();
-        const coord_um thickness_um = planned.z - previous_z;
+        const coord_um thickness_um = planned.thickness > 0 ? planned.thickness : planned.z - previous_z;
         previous_z = planned.z;
-        layer->set_id(first_id + static_cast<int>(i));
+        layer->set_id(planned.index + index_offset);
         layer->set_height(static_cast<float>(planned.z));
         layer->set_thickness(static_cast<float>(thickness_um));
         addLayerSegments(planned, static_cast<double>(thickness_um) / 1000.0, *layer, start, start_extruder);

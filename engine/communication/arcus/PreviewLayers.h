@@ -21,9 +21,12 @@ namespace mixengine {
 /// Cura's line type number of a feature (Polygon.Type).
 int curaLineType(Feature feature);
 
-/// One message per layer of `plan`, ids from `first_id` on. The head starts at `start` with
-/// extruder `start_extruder`; both are advanced to where the plan leaves them.
-std::vector<std::shared_ptr<cura::proto::LayerOptimized>> previewLayers(const PrintPlan& plan, int first_id,
-                                                                        Point2& start, int& start_extruder);
+/// One message per layer of `plan`, its id the layer's index plus `index_offset` (raft layers are
+/// negative, as CuraEngine sends them; Cura's layer view shifts them up) and its thickness the
+/// layer's (PlannedLayer::thickness, else the distance to the layer below). The head starts at
+/// `start` with extruder `start_extruder`; both are advanced to where the plan leaves them.
+std::vector<std::shared_ptr<cura::proto::LayerOptimized>> previewLayers(const PrintPlan& plan,
+                                                                        int index_offset, Point2& start,
+                                                                        int& start_extruder);
 
 }  // namespace mixengine

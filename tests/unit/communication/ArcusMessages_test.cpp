@@ -148,6 +148,38 @@ TEST(PreviewLayers, LinesAreTypedSizedAndSplitByExtruder) {
     EXPECT_EQ(head, (Point2{0, 5000}));
 }
 
+TEST(PreviewLayers, RaftLayersKeepTheirNegativeIdsAndEveryLayerItsThickness) {
+    // A raft layer (−2) and the model's first layer lifted above an air gap: ids as CuraEngine sends them,
+    // thickness the layer's own (not the 0.5 mm from the raft's top), so the line widths come out right.
+    PrintPlan plan;
+    PlannedLayer raft;
+    raft.index = -2;
+    raft.z = 240;
+    raft.thickness = 240;
+    PlannedLayer model;
+    model.index = 0;
+    model.z = 740;
+    model.thickness = 200;
+    PlanStep line = step(PlanStep::Kind::Extrude, {10000, 0});
+    line.volume_mm3 = 10.0 * 0.4 * 0.2;
+    model.steps = {line};
+    plan.layers = {raft, model};
+    Point2 head{0, 0};
+    int extruder = 0;
+    const auto messages = previewLayers(plan, 0, head, extruder);
+    ASSERT_EQ(messages.size(), 2U);
+    EXPECT_EQ(messages[0]->id(), -2);
+    EXPECT_EQ(messages[1]->id(), 0);
+    EXPECT_FLOAT_EQ(messages[0]->thickness(), 240.0F);
+    EXPECT_FLOAT_EQ(messages[1]->thickness(), 200.0F);
+    float width = 0;
+    std::memcpy(&width, messages[1]->path_segment(0).line_width().data(), sizeof width);
+    EXPECT_NEAR(width, 0.4F, 1e-6);
+    EXPECT_EQ(curaLineType(Feature::RaftInterface), 7);  // raft lines typed as CuraEngine types them
+    EXPECT_EQ(curaLineType(Feature::RaftBase), 10);
+    EXPECT_EQ(curaLineType(Feature::Ironing), 3);
+}
+
 TEST(ResultMessages, MaterialIsSentInCubicMillimetresPerExtruder) {
     PrintSummary summary;
     summary.print_time_s = 100;

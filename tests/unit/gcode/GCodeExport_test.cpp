@@ -126,27 +126,26 @@ TEST(GCodeExport, RetractionHopLiftsAndLowers) {
 
 TEST(GCodeExport, ExtraPrimeAfterEachRetractionButNotAfterASwitch) {
     ExportParams p = marlin175();
-    p.extra_prime_mm3 = 1.0;  // 0.415752 mm of 1.75 mm filament
+    p.retraction_extra_prime_mm3 = 1.0;  // 0.415752 mm of 1.75 mm filament
     GCodeExport g(p);
     g.extrude({10'000, 0}, 1.0, 30);
     g.retract();
     g.travel({0, 0}, 150);
-    g.extrude({10'000, 0}, 1.0, 30);  // primes 6.5 mm back, then the extra 1 mm³, then prints
+    g.extrude({10'000, 0}, 1.0, 30);  // primes 6.5 mm back plus the extra 1 mm³ in one move, as CuraEngine
     EXPECT_EQ(g.text(),
               "G1 F1800 X10 Y0 E0.41575\n"
               "G1 F1500 E-6.08425\n"
               "G0 F9000 X0 Y0\n"
-              "G1 F1500 E0.41575\n"
-              "G1 E0.8315\n"
+              "G1 F1500 E0.8315\n"
               "G1 F1800 X10 Y0 E1.24726\n");
     EXPECT_NEAR(g.totalExtruded(), 3.0 / (std::numbers::pi * 0.875 * 0.875), 1e-12);  // the extra counts
     ToolChange change;
     change.extruder = 1;
     change.filament_diameter_mm = 1.75;
-    g.selectExtruder(change);
+    g.selectExtruder(change);  // the switch retraction is the planner's; a switch primes nothing extra
     const std::size_t before = g.text().size();
     g.extrude({0, 0}, 1.0, 30);
-    EXPECT_EQ(g.text().substr(before), "G1 E6.5\nG1 F1800 X0 Y0 E6.91575\n");  // no extra prime line
+    EXPECT_EQ(g.text().substr(before), "G1 X0 Y0 E0.41575\n");  // no prime, extra or not
 }
 
 TEST(GCodeExport, DwellInMillisecondsCountsInTheTime) {
@@ -165,14 +164,18 @@ TEST(GCodeExport, NoRetractionWhenAmountIsZero) {
     EXPECT_FALSE(g.retracted());
 }
 
-// With acceleration and jerk out of the way every move takes distance / speed (the acceleration
-// model itself is tested in TimeEstimate_test.cpp).
-TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
+/// Marlin, 1.75 mm, with acceleration and jerk out of the way: every move takes distance / speed.
+ExportParams withoutAccelerationOrJerk() {
     ExportParams p = marlin175();
     p.kinematics.acceleration_mm_s2 = 1e12;
     p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
     p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;
-    GCodeExport g(p);
+    return p;
+}
+
+// The acceleration model itself is tested in TimeEstimate_test.cpp.
+TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
+    GCodeExport g(withoutAccelerationOrJerk());
     g.travel({30'000, 40'000}, 50);   // 50 mm at 50 mm/s: 1 s
     g.extrude({30'000, 0}, 1.0, 20);  // 40 mm at 20 mm/s: 2 s
     g.retract();                      // 6.5 mm at 25 mm/s: 0.26 s
@@ -186,11 +189,7 @@ TEST(GCodeExport, ElapsedTimeFromDistanceAndSpeed) {
 // Each move's time goes to what it prints (CuraEngine's PrintFeatureType buckets): extrusions to the
 // feature set last, travel to Travel, retractions, primes and travel while retracted to Retraction.
 TEST(GCodeExport, TimeIsBookedByFeature) {
-    ExportParams p = marlin175();
-    p.kinematics.acceleration_mm_s2 = 1e12;
-    p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
-    p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;
-    GCodeExport g(p);
+    GCodeExport g(withoutAccelerationOrJerk());
     g.travel({30'000, 40'000}, 50);  // 1 s of travel
     g.setTimeFeature(TimeFeature::OuterWall);
     g.extrude({30'000, 0}, 1.0, 20);  // 2 s of outer wall
@@ -234,6 +233,56 @@ TEST(GCodeExport, FanSpeedKeepsOneDecimalLikeCuraEngine) {
     g.setFan(0.5);
     g.setFan(0.3);
     EXPECT_EQ(g.text(), "M106 S127.5\nM106 S76.5\n");
+}
+
+}  // namespace
+}  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+// CuraEngine's retraction model: a longer retraction retracts the difference, a shorter one primes the
+// difference back at the speed of the one before, the extra prime of each retraction is primed at the next
+// unretraction (and counted as filament of that extruder).
+TEST(GCodeExport, RetractToChangesTheRetractedAmountBothWays) {
+    ExportParams p = marlin175();
+    p.prime_speed_mm_s = 15;
+    GCodeExport g(p);
+    g.retract();                      // 6.5 mm at 25 mm/s
+    g.retractTo({8.0, 20, 15, 0});    // a switch retraction: 1.5 mm more at 20 mm/s
+    g.retractTo({8.0, 20, 15, 0});    // nothing
+    g.retractTo({6.5, 25, 25, 1.0});  // primes 1.5 mm at the switch's 15 mm/s, owes 1 mm³ more
+    g.unretract();                    // 6.5 mm + 1 mm³ (0.41575 mm) at 25 mm/s
+    EXPECT_EQ(g.text(), "G1 F1500 E-6.5\nG1 F1200 E-8\nG1 F900 E-6.5\nG1 F1500 E0.41575\n");
+    EXPECT_NEAR(g.filamentPerExtruder().at(0), 0.41575, 1e-4);
+}
+
+// The z-hop of a switch is written again when the nozzle is up already; back down before extruding.
+TEST(GCodeExport, HopRewrittenOnRequestAndLoweredBeforeExtruding) {
+    ExportParams p = marlin175();
+    p.retraction_hop_um = 2000;
+    GCodeExport g(p);
+    g.moveZ(200, 10);
+    g.retract();
+    g.hopTo(2000);        // up already: nothing
+    g.hopTo(2000, true);  // the line again
+    g.extrude({1'000, 0}, 0.0, 20);
+    EXPECT_EQ(
+        g.text(),
+        "G0 F600 Z0.2\nG1 F1500 E-6.5\nG0 F600 Z2.2\nG0 Z2.2\nG0 Z0.2\nG1 F1500 E0\nG1 F1200 X1 Y0 E0\n");
+}
+
+// Each extruder's fan: P<n> when it is not fan 0, and the speed written again after a switch to another fan.
+TEST(GCodeExport, FanOfTheActiveExtruder) {
+    GCodeExport g(marlin175());
+    g.setFan(1.0);
+    ToolChange change;
+    change.extruder = 1;
+    change.fan_number = 1;
+    g.selectExtruder(change);
+    g.setFan(1.0);
+    g.setFan(0.0);
+    EXPECT_EQ(g.text(), "M106 S255\nT1\nG92 E0\nM106 S255 P1\nM107 P1\n");
 }
 
 }  // namespace

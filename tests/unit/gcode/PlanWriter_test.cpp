@@ -144,34 +144,78 @@ TEST(GCodePlanWriter, RetractedTravelAndResetAcrossLayers) {
     EXPECT_NE(second.find("G1 F1800 X5 Y30 E0.25\n"), std::string::npos) << second;
 }
 
-// A tool change: the old extruder's end code and standby temperature, a retraction, T1, E reset,
-// waiting for the new extruder's temperature, its start code; X/Y then relative to the new nozzle (offset
-// subtracted); filament counted per extruder.
+PlanStep nozzle(int extruder, double celsius, bool wait) {
+    PlanStep s = step(PlanStep::Kind::SetNozzleTemperature);
+    s.extruder = extruder;
+    s.temperature_c = celsius;
+    s.wait = wait;
+    return s;
+}
+
+// A tool change as CuraEngine 4.13 writes it: the old extruder's switch retraction (2 mm at 20 mm/s,
+// E in mm³ here), E reset, its end code, T1, E reset, the new one's start code; then the temperature
+// steps the planner put after the switch (wait for T1, T0 to standby). X/Y are then relative to the new
+// nozzle (offset subtracted), its first extrusion primes the switch's extra prime at its own prime
+// speed, and filament is counted per extruder.
 TEST(GCodePlanWriter, ToolChangeWithNozzleOffset) {
     PrintPlan plan;
     PlannedLayer layer;
     layer.z = 300;
     PlanStep change = step(PlanStep::Kind::SetExtruder);
     change.extruder = 1;
-    layer.steps = {extrude({1'000, 0}, 0.5), change, travel({11'000, 0}), extrude({12'000, 0}, 0.25)};
+    layer.steps = {extrude({1'000, 0}, 0.5), change,
+                   nozzle(1, 210, true),     nozzle(0, 150, false),
+                   travel({11'000, 0}),      extrude({12'000, 0}, 0.25)};
     plan.layers = {layer};
     PlanWriterParams p;
     p.extruders.resize(2);
     p.extruders[0].end_code = "G91";
-    p.extruders[0].standby_temperature_c = 150;
-    p.extruders[1].change = {1, 1.75, {10'000, 0}};
+    p.extruders[0].switch_retraction = {2.0, 20, 15, 0};
+    p.extruders[1].change = {1, 1.75, {10'000, 0}, {1.0, 25, 25, 0}, 0};
     p.extruders[1].start_code = "G90\n";
-    p.extruders[1].print_temperature_c = 210;
+    p.extruders[1].switch_extra_prime_mm3 = 0.5;
     GCodeExport gcode(params());
     const std::string chunk = writePlan(plan, p, gcode).chunks.at(0);
     const std::string expected =
-        "G1 F1800 X1 Y0 E0.5\nG91\nM104 T0 S150\nG1 F1500 E-1.90528\nT1\nG92 E0\nM109 S210\nG90\n"
-        "G0 F9000 X1 Y0\nG1 F1500 E2.40528\nG1 F1800 X2 Y0 E2.65528\n";
+        "G1 F1800 X1 Y0 E0.5\nG1 F1200 E-4.31056\nG92 E0\nG91\nT1\nG92 E0\nG90\nM109 S210\nM104 T0 S150\n"
+        "G0 F9000 X1 Y0\nG1 F1500 E0.5\nG1 F1800 X2 Y0 E0.75\n";
     EXPECT_NE(chunk.find(expected), std::string::npos) << chunk;
     const std::vector<double> filament = gcode.filamentPerExtruder();
     ASSERT_EQ(filament.size(), 2U);
     EXPECT_NEAR(filament[0], 0.5, 1e-9);
-    EXPECT_NEAR(filament[1], 0.25, 1e-9);
+    EXPECT_NEAR(filament[1], 0.75, 1e-9);  // the extra prime is material out of the nozzle too
+}
+
+// Coming back to an extruder left with a longer switch retraction: its next travel retraction primes the
+// difference back at the switch's prime speed (CuraEngine's "G1 F900 E1.5" on the Ultimaker S5), and
+// its next extrusion primes the rest at its own prime speed.
+TEST(GCodePlanWriter, BackToAnExtruderLeftWithTheSwitchRetraction) {
+    ExportParams e = params();
+    e.volumetric = false;
+    e.retraction_amount_mm = 6.5;
+    e.retraction_speed_mm_s = 25;
+    e.prime_speed_mm_s = 15;
+    PlanStep to1 = step(PlanStep::Kind::SetExtruder);
+    to1.extruder = 1;
+    PlanStep to0 = step(PlanStep::Kind::SetExtruder);
+    to0.extruder = 0;
+    PlannedLayer layer;
+    layer.z = 300;
+    layer.steps = {extrude({1'000, 0}, 0.5), to1, extrude({2'000, 0}, 0.5), to0, travel({9'000, 0}, true),
+                   extrude({10'000, 0}, 0.5)};
+    PrintPlan plan;
+    plan.layers = {layer};
+    PlanWriterParams p;
+    p.extruders.resize(2);
+    for (int i = 0; i < 2; ++i) {
+        p.extruders[static_cast<std::size_t>(i)].change = {i, 1.75, {0, 0}, {6.5, 25, 15, 0}, 0};
+        p.extruders[static_cast<std::size_t>(i)].switch_retraction = {8.0, 20, 15, 0};
+    }
+    GCodeExport gcode(e);
+    const std::string chunk = writePlan(plan, p, gcode).chunks.at(0);
+    const auto back = chunk.find("T0\nG92 E0\nG1 F900 E1.5\n");
+    ASSERT_NE(back, std::string::npos) << chunk;
+    EXPECT_NE(chunk.find("G0 F9000 X9 Y0\nG1 F900 E8\n", back), std::string::npos) << chunk;
 }
 
 }  // namespace

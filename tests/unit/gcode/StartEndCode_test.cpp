@@ -131,3 +131,48 @@ TEST(GCodeStartEndCode, UltiGCodeHasNoTemperatureLines) {
 
 }  // namespace
 }  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+ExportParams s5Export() {
+    ExportParams p;
+    p.retraction_amount_mm = 6.5;
+    p.retraction_hop_um = 2000;  // the prime's retraction does not hop
+    return p;
+}
+
+// Griffin without a prime blob: `G280 S1`, Z written again, the retraction (CuraEngine's start on the
+// Ultimaker S5); only once per extruder.
+TEST(GCodeStartEndCode, PrimeTrainOnGriffinWithoutBlob) {
+    GCodeExport g(s5Export());
+    g.moveZ(200, 10);
+    g.takeText();
+    writePrimeTrain(PrimeTrain{}, true, g);
+    EXPECT_EQ(g.takeText(), "G280 S1\nG0 Z0.2\nG1 F1500 E-6.5\n");
+    writePrimeTrain(PrimeTrain{}, true, g);
+    EXPECT_EQ(g.takeText(), "");
+}
+
+// prime_blob_enable: a travel to the prime position first, then `G280`; other flavors only travel and
+// retract.
+TEST(GCodeStartEndCode, PrimeBlobTravelsToThePrimePosition) {
+    GCodeExport g(s5Export());
+    writePrimeTrain({true, {333'000, 6'000}, true, 150}, true, g);
+    EXPECT_EQ(g.takeText(), "G0 F9000 X333 Y6\nG280\nG1 F1500 E-6.5\n");
+    GCodeExport marlin(s5Export());
+    writePrimeTrain({true, {5'000, 0}, false, 150}, false, marlin);
+    EXPECT_EQ(marlin.takeText(), "G0 F9000 X5 Y0\nG1 F1500 E-6.5\n");
+}
+
+// machine_extruders_share_nozzle: every filament is primed by the start code and pulled back by the
+// initial retraction; the first retraction takes only the rest.
+TEST(GCodeStartEndCode, SharedNozzleStartsPrimedAndPartlyRetracted) {
+    GCodeExport g(s5Export());
+    g.assumePrimed(0, 1.0);
+    writePrimeTrain(PrimeTrain{}, true, g);
+    EXPECT_EQ(g.takeText(), "G1 F1500 E-5.5\n");
+}
+
+}  // namespace
+}  // namespace mixengine

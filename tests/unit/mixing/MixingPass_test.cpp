@@ -7,6 +7,8 @@
 
 #include <list>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "common/Error.h"
 
@@ -155,6 +157,41 @@ TEST(MixingPass, BadSettingsThrowBeforeAnythingIsWritten) {
     std::ostringstream err;
     Log log(err);
     EXPECT_THROW(assignMixes(plan, group.group(), log), InputError);
+}
+
+TEST(MixingPass, TheRaftIsPrintedWithTheRaftRatio) {
+    // Two raft layers below a mesh (z 0.3 and 0.6 mm, the mesh from 1 to 21 mm): the raft's features take
+    // mixing_raft_ratio (filament A by default), the mesh its gradient from its own bottom.
+    for (const auto& [raft_ratio, raft_b] : {std::pair<std::string, double>{"", 0.0}, {"0.2:0.8", 0.8}}) {
+        SettingValues values{
+            {"mixing_mode", "gradient"}, {"mixing_gradient_start", "0"}, {"mixing_gradient_end", "100"}};
+        if (!raft_ratio.empty())
+            values["mixing_raft_ratio"] = raft_ratio;
+        TestGroup group(values);
+        group.addMesh(1000, 21000, values);
+        PrintPlan plan;
+        for (const auto& [index, z, f] :
+             {std::tuple{-2, 300, Feature::RaftBase}, std::tuple{-1, 600, Feature::RaftSurface}}) {
+            PlannedLayer layer;
+            layer.index = index;
+            layer.z = z;
+            PlanStep feature;
+            feature.kind = PlanStep::Kind::SetFeature;
+            feature.feature = f;
+            layer.steps = {feature, extrusion(1.0)};
+            plan.layers.push_back(layer);
+        }
+        PlannedLayer model;
+        model.z = 11000;  // halfway up the mesh
+        model.steps = {meshMarker(0), extrusion(1.0)};
+        plan.layers.push_back(model);
+        std::ostringstream err;
+        Log log(err);
+        assignMixes(plan, group.group(), log);
+        EXPECT_DOUBLE_EQ(shareB(plan, 0, 1), raft_b) << raft_ratio;
+        EXPECT_DOUBLE_EQ(shareB(plan, 1, 1), raft_b) << raft_ratio;
+        EXPECT_DOUBLE_EQ(shareB(plan, 2, 1), 0.5) << raft_ratio;
+    }
 }
 
 }  // namespace

@@ -175,5 +175,15 @@ TEST(MixingSettingAliases, ConflictsAndBadModesAreErrors) {
               "");
 }
 
+TEST(MixingSettings, RaftRatioDefaultsToFilamentA) {
+    const MixingOutput out = parseMixingOutput(scope({{"mixing_mode", "gradient"}}));
+    EXPECT_EQ(parseRaftMix(scope({}), out), MixVector::only(0, 2));
+    EXPECT_EQ(parseRaftMix(scope({{"mixing_raft_ratio", "0.3:0.7"}}), out)[1], 0.7);
+    EXPECT_EQ(errorOf([&] {
+                  parseRaftMix(scope({{"mixing_raft_ratio", "0.3:0.3"}}), out);
+              }),
+              "setting 'mixing_raft_ratio': ratios '0.3:0.3' add up to 0.6, not 1");
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -91,5 +91,27 @@ TEST(Cooling, FirstLayersRampFromTheInitialFanSpeed) {
     EXPECT_DOUBLE_EQ(none.steps[0].fan_ratio, 0.0);
 }
 
+TEST(Cooling, LayersBelowTheModelCoolAsItsFirstLayer) {
+    PlannedLayer filler = layerOf(600, 50, -2);  // a raft filler layer
+    applyCooling(filler, {0, 0}, params());
+    EXPECT_DOUBLE_EQ(filler.steps[0].fan_ratio, 0.0);  // cool_fan_speed_0, not below it
+}
+
+TEST(Cooling, RaftLayersTakeTheirOwnFanWithoutTheRamp) {
+    const CoolingParams raft = raftCooling(params(), 0.3);
+    PlannedLayer base = layerOf(600, 50, -6);  // 12 s: the raft's fan
+    applyCooling(base, {0, 0}, raft);
+    EXPECT_DOUBLE_EQ(base.steps[0].fan_ratio, 0.3);
+    PlannedLayer quick = layerOf(100, 50, -4);  // slowed to the minimum time: cool_fan_speed_max
+    applyCooling(quick, {0, 0}, raft);
+    EXPECT_DOUBLE_EQ(quick.steps[0].fan_ratio, 1.0);
+    EXPECT_DOUBLE_EQ(quick.steps[1].speed_mm_s, 20);
+    CoolingParams off = params();
+    off.fan_enabled = false;  // CuraEngine zeroes the fan speeds, then sets the raft's
+    PlannedLayer unfanned = layerOf(600, 50, -6);
+    applyCooling(unfanned, {0, 0}, raftCooling(off, 0.3));
+    EXPECT_DOUBLE_EQ(unfanned.steps[0].fan_ratio, 0.3);
+}
+
 }  // namespace
 }  // namespace mixengine

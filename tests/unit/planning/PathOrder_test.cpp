@@ -128,6 +128,27 @@ TEST(PathOrder, ASequenceIsEnteredAtItsFirstPathAndPrintedInOrder) {
     EXPECT_EQ(steps.front().to, (Point2{1'000, 0}));
 }
 
+TEST(PathOrder, KeepOrderPrintsTheGroupAsGivenFromTheNearerEnds) {
+    // Nearest first would take x = 1, 3, 5 mm; kept in order (monotonic ironing) it is 5, 1, 3 mm, each
+    // line entered from its end nearer the nozzle (the second ends at y = 0, so the third starts there).
+    std::vector<ExtrusionPath> paths{line({5'000, 0}, {5'000, 500}, Feature::Ironing),
+                                     line({1'000, 500}, {1'000, 0}, Feature::Ironing),
+                                     line({3'000, 0}, {3'000, 500}, Feature::Ironing)};
+    for (ExtrusionPath& p : paths)
+        p.keep_order = true;
+    Point2 head{0, 0};
+    std::optional<Feature> feature;
+    std::vector<PlanStep> steps;
+    appendOrderedPaths(paths, travelParams(), head, feature, steps);
+    std::vector<Point2> travels;
+    for (const PlanStep& s : steps) {
+        if (s.kind == PlanStep::Kind::Travel)
+            travels.push_back(s.to);
+    }
+    EXPECT_EQ(travels, (std::vector<Point2>{{5'000, 0}, {1'000, 500}, {3'000, 0}}));
+    EXPECT_EQ(steps[0].feature, Feature::Ironing);
+}
+
 TEST(PathOrder, RetractOnlyForTravelsLongerThanTheMinimum) {
     struct Case {
         coord_um start_x;
@@ -180,6 +201,63 @@ TEST(PathOrder, ExtrusionVolume) {
     EXPECT_DOUBLE_EQ(extrusionVolumeMm3({0, 0}, {3'000, 4'000}, 450, 100, 0.9), 0.2025);
     EXPECT_DOUBLE_EQ(extrusionVolumeMm3({-1'000, -1'000}, {-1'000, 1'000}, 400, 300, 1.0), 2.0 * 0.4 * 0.3);
     EXPECT_EQ(extrusionVolumeMm3({7, 7}, {7, 7}, 400, 200, 1.0), 0.0);
+}
+
+}  // namespace
+}  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+/// The first extrusion's start: where the first path printed begins.
+Point2 firstPrinted(const std::vector<PlanStep>& steps) {
+    Point2 at{0, 0};
+    for (const PlanStep& s : steps) {
+        if (s.kind == PlanStep::Kind::Extrude)
+            return at;
+        if (s.kind == PlanStep::Kind::Travel)
+            at = s.to;
+    }
+    return at;
+}
+
+TEST(PathOrder, OrderFromMovesTheFirstSearchNotTheTravel) {
+    std::vector<ExtrusionPath> paths{line({1'000, 0}, {2'000, 0}), line({50'000, 0}, {51'000, 0})};
+    TravelParams t = travelParams();
+    t.order_from = Point2{51'000, 10};  // the far line's end is chosen first
+    Point2 head{0, 0};
+    std::optional<Feature> feature;
+    std::vector<PlanStep> steps;
+    appendOrderedPaths(paths, t, head, feature, steps);
+    EXPECT_EQ(firstPrinted(steps), Point2(51'000, 0));
+    ASSERT_EQ(steps[1].kind, PlanStep::Kind::Travel);  // after the ;TYPE: marker, from the head
+    EXPECT_TRUE(steps[1].retract);
+}
+
+TEST(PathOrder, CombAwareOrderPrefersWhatCanBeReachedInside) {
+    // A U-shaped part with a 2 mm gap: the head at the top of the left arm, a line 3 mm away across
+    // the gap (a 40 mm travel round the bottom inside the part) and one 7.5 mm up the left arm.
+    const Paths u{{{0, 0},
+                   {22'000, 0},
+                   {22'000, 40'000},
+                   {12'000, 40'000},
+                   {12'000, 10'000},
+                   {10'000, 10'000},
+                   {10'000, 40'000},
+                   {0, 40'000}}};
+    const CombBoundary comb(u);
+    std::vector<ExtrusionPath> paths{line({12'500, 30'000}, {20'000, 30'000}),
+                                     line({5'000, 36'000}, {1'000, 36'000})};
+    TravelParams t = travelParams();
+    t.comb = &comb;
+    for (bool aware : {false, true}) {
+        t.comb_aware_order = aware;
+        Point2 head{9'500, 30'000};
+        std::optional<Feature> feature;
+        std::vector<PlanStep> steps;
+        appendOrderedPaths(paths, t, head, feature, steps);
+        EXPECT_EQ(firstPrinted(steps), aware ? Point2(5'000, 36'000) : Point2(12'500, 30'000)) << aware;
+    }
 }
 
 }  // namespace

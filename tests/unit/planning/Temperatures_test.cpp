@@ -118,5 +118,18 @@ TEST(Temperatures, FlowDependentLayersGetTheirOwnTemperature) {
     EXPECT_EQ(plan.layers[1].steps[at[0]].temperature_c, 230);
 }
 
+TEST(Temperatures, UnderARaftTheRaftsBaseIsTheInitialLayer) {
+    // Raft layers −3 … −1, then the model from 0: the first-layer temperature is the raft base's
+    // (CuraEngine's "initial layer"), the bed changes at the start of the second layer.
+    PrintPlan plan;
+    plan.layers = {layer(-3, 20), layer(-2, 20), layer(-1, 20), layer(0, 20)};
+    planTemperatures(plan, params(), true, {0, 0});
+    const std::vector<std::size_t> at = positions(plan.layers[0], PlanStep::Kind::SetNozzleTemperature);
+    ASSERT_EQ(at.size(), 1u);
+    EXPECT_EQ(plan.layers[0].steps[at[0]].temperature_c, 200);
+    EXPECT_TRUE(positions(plan.layers[3], PlanStep::Kind::SetNozzleTemperature).empty());
+    EXPECT_EQ(positions(plan.layers[1], PlanStep::Kind::SetBedTemperature), std::vector<std::size_t>{0});
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -30,6 +30,8 @@ DefinitionSet machine() {
     define(set.settings, "coasting_volume", "float", "0.064", "layer_height * 0.64");
     define(set.settings, "adhesion_type", "enum", "skirt");
     define(set.settings, "ironing_enabled", "bool", "False");
+    define(set.settings, "raft_margin", "float", "15");
+    set.settings["raft_margin"].enabled_formula = "adhesion_type == 'raft'";
     ExtruderDefinition extruder;
     extruder.id = "test_extruder_0";
     extruder.position = 0;
@@ -40,7 +42,8 @@ DefinitionSet machine() {
 const char* const kList = R"({"settings": {
     "coasting_volume": "coasting is not built",
     "adhesion_type": {"values": ["raft"], "why": "no raft"},
-    "ironing_enabled": "no ironing"}})";
+    "ironing_enabled": "no ironing",
+    "raft_margin": "no raft"}})";
 
 std::vector<std::string> warningsFor(UserSettings user) {
     return notHonouredWarnings(parseNotHonoured(kList, "test"), machine(), user, 1);
@@ -48,7 +51,7 @@ std::vector<std::string> warningsFor(UserSettings user) {
 
 TEST(NotHonoured, ParsesReasonsAndValueEntries) {
     const std::vector<NotHonouredEntry> list = parseNotHonoured(kList, "test");
-    ASSERT_EQ(list.size(), 3u);
+    ASSERT_EQ(list.size(), 4u);
     EXPECT_EQ(list[0].key, "adhesion_type");  // in key order
     EXPECT_EQ(list[0].values, std::vector<std::string>{"raft"});
     EXPECT_TRUE(list[1].values.empty());
@@ -86,6 +89,14 @@ TEST(NotHonoured, ChangedValuesAreWarnedOnceWithTheExactText) {
     EXPECT_EQ(w[2], "setting 'ironing_enabled' has no effect in MixEngine yet (value True: no ironing)");
 }
 
+TEST(NotHonoured, ASettingCuraHidesIsNotWarnedAbout) {
+    // raft_margin is only enabled (shown, and read by CuraEngine) with a raft.
+    EXPECT_TRUE(warningsFor({{{"raft_margin", "5"}}, {}}).empty());
+    const std::vector<std::string> w = warningsFor({{{"raft_margin", "5"}, {"adhesion_type", "raft"}}, {}});
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_EQ(w[1], "setting 'raft_margin' has no effect in MixEngine yet (value 5.0: no raft)");
+}
+
 TEST(NotHonoured, TheEmbeddedListParsesAndNamesRealSettings) {
     const std::vector<NotHonouredEntry> list = embeddedNotHonoured();
     ASSERT_FALSE(list.empty());
@@ -93,6 +104,26 @@ TEST(NotHonoured, TheEmbeddedListParsesAndNamesRealSettings) {
         EXPECT_FALSE(entry.key.empty());
         EXPECT_FALSE(entry.why.empty()) << entry.key;
     }
+}
+
+}  // namespace
+}  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+// "multi_extruder_only": the entry holds for prints with two or more extruder trains; a machine with one
+// train is not warned.
+TEST(NotHonoured, MultiExtruderOnlyEntriesNeedTwoTrains) {
+    const char* const list =
+        R"({"settings": {"ironing_enabled": {"why": "two nozzles", "multi_extruder_only": true}}})";
+    const std::vector<NotHonouredEntry> entries = parseNotHonoured(list, "test");
+    ASSERT_EQ(entries.size(), 1u);
+    EXPECT_TRUE(entries[0].multi_extruder_only);
+    EXPECT_TRUE(entries[0].values.empty());
+    const UserSettings user{{{"ironing_enabled", "True"}}, {}};
+    EXPECT_TRUE(notHonouredWarnings(entries, machine(), user, 1).empty());
+    EXPECT_EQ(notHonouredWarnings(entries, machine(), user, 2).size(), 1u);
 }
 
 }  // namespace

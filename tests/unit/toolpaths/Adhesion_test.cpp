@@ -87,10 +87,10 @@ TEST(Adhesion, SkirtGoesAroundTheHullOfEverything) {
 
 TEST(Adhesion, NoneAndRaft) {
     EXPECT_TRUE(adhesion({{"adhesion_type", "none"}}, {square(0, 0, 10'000)}).paths.empty());
+    // A raft is no skirt: toolpaths/Raft.h builds it, nothing here and no warning.
     const AdhesionResult raft = adhesion({{"adhesion_type", "raft"}}, {square(0, 0, 10'000)});
-    EXPECT_FALSE(raft.paths.empty());
-    ASSERT_EQ(raft.warnings.size(), 1U);
-    EXPECT_NE(raft.warnings[0].find("raft"), std::string::npos);
+    EXPECT_TRUE(raft.paths.empty());
+    EXPECT_TRUE(raft.warnings.empty());
 }
 
 TEST(Adhesion, ConvexHull) {

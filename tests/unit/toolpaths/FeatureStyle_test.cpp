@@ -67,5 +67,13 @@ TEST(FeatureStyle, MeshStylesReadCurasKeys) {
     EXPECT_EQ(m.infill.extruder, 0);
 }
 
+TEST(FeatureStyle, LayersBelowTheModelKeepTheFeaturesOwnSpeed) {
+    // Raft filler layers (negative): no first-layer speed, width or flow, as CuraEngine.
+    const FeatureStyle s = featureStyle(mesh(), kInfill, -2);
+    EXPECT_DOUBLE_EQ(s.speed_mm_s, 80);
+    EXPECT_EQ(s.width_um, 500);
+    EXPECT_DOUBLE_EQ(s.flow, 1.0);
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -36,8 +36,8 @@ Group twoMeshes(const SettingValues& user) {
     test::fill(g.a, 0, 30, {square(50'000, 50'000, 10'000)});
     test::fill(g.b, 0, 30, {square(70'000, 50'000, 10'000)});
     ToolpathInput in{&g.machine.global, &g.machine.extruders, g.a.heights, {}};
-    in.meshes.push_back({&g.meshes[0], "a", &g.a.layers});
-    in.meshes.push_back({&g.meshes[1], "b", &g.b.layers});
+    in.meshes.push_back({&g.meshes[0], "a", &g.a.layers, std::nullopt});
+    in.meshes.push_back({&g.meshes[1], "b", &g.b.layers, std::nullopt});
     g.paths = generateGroupToolpaths(in, 2);
     return g;
 }
@@ -83,16 +83,58 @@ TEST(GroupToolpaths, PrimeTowerRingsPerExtruder) {
             EXPECT_EQ(tower[i].extruder, i < 3 ? 0 : 1) << layer;
             EXPECT_EQ(tower[i].feature, Feature::PrimeTower);
         }
-        // Centred at (150 − 10, 100 + 10) mm.
+        // Centred at (150 − 10, 100 + 10) mm, moved 8 mm towards the origin for its brim (20 lines of
+        // 0.4 mm): without adhesion prime_tower_brim_enable resolves to True (Cura's resolve formula).
         const ClipperLib::IntRect box = boundsOf({tower[0].points});
-        EXPECT_NEAR((box.left + box.right) / 2.0, 140'000, 2);
-        EXPECT_NEAR((box.top + box.bottom) / 2.0, 110'000, 2);
+        EXPECT_NEAR((box.left + box.right) / 2.0, 132'000, 2);
+        EXPECT_NEAR((box.top + box.bottom) / 2.0, 102'000, 2);
         EXPECT_NEAR(box.right - box.left, 19'600, 2);
     }
     // Layer 0: T0 fills the whole disc with loops 0.4 mm apart (24 or 25 of them), T1 prints none.
     EXPECT_GE(g.paths.prime_tower[0].size(), 24U);
     for (const ExtrusionPath& p : g.paths.prime_tower[0])
         EXPECT_EQ(p.extruder, 0);
+    // The tower's brim: 20 loops of T0 around it on layer 0, the outermost 8 mm out (diameter 36 mm);
+    // then T1's own lines just outside it until they reach skirt_brim_minimal_length (250 mm: 3 loops).
+    ASSERT_EQ(g.paths.adhesion.size(), 23U);
+    const ClipperLib::IntRect brim = boundsOf({g.paths.adhesion.front().points});
+    EXPECT_NEAR((brim.left + brim.right) / 2.0, 132'000, 2);
+    EXPECT_NEAR(brim.right - brim.left, 35'600, 100);
+    EXPECT_EQ(g.paths.adhesion.front().feature, Feature::Skirt);
+    double t1_mm = 0;
+    for (std::size_t i = 0; i < g.paths.adhesion.size(); ++i) {
+        const ExtrusionPath& p = g.paths.adhesion[i];
+        EXPECT_EQ(p.extruder, i < 20 ? 0 : 1) << i;
+        if (p.extruder == 1) {
+            EXPECT_GT(boundsOf({p.points}).right - boundsOf({p.points}).left, brim.right - brim.left);
+            t1_mm += lengthUm(p.points, true) / 1000.0;
+        }
+    }
+    EXPECT_GE(t1_mm, 250.0);
+    EXPECT_LT(t1_mm, 250.0 + 130.0);
+    // T0 is outermost and prints its rings on every layer up to the last with both extruders.
+    EXPECT_EQ(g.paths.prime_tower_outermost, 0);
+    EXPECT_EQ(g.paths.prime_tower_last_forced_layer, 29);
+}
+
+TEST(GroupToolpaths, PrimeTowerWithoutItsBrimStaysAndTheModelBrimGoesAroundIt) {
+    const Group g = twoMeshes({{"prime_tower_enable", "True"},
+                               {"prime_tower_size", "20"},
+                               {"prime_tower_position_x", "150"},
+                               {"prime_tower_position_y", "100"},
+                               {"adhesion_type", "brim"},
+                               {"brim_line_count", "2"},
+                               {"skirt_brim_minimal_length", "0"}});
+    const ClipperLib::IntRect box = boundsOf({g.paths.prime_tower[1].front().points});
+    EXPECT_NEAR((box.left + box.right) / 2.0, 140'000, 2);
+    EXPECT_NEAR((box.top + box.bottom) / 2.0, 110'000, 2);
+    // Brim loops around each mesh and around the tower (as CuraEngine's brim outline includes it).
+    bool around_tower = false;
+    for (const ExtrusionPath& p : g.paths.adhesion) {
+        const ClipperLib::IntRect b = boundsOf({p.points});
+        around_tower = around_tower || (b.left < 130'500 && b.right > 149'500 && b.top < 100'500);
+    }
+    EXPECT_TRUE(around_tower);
 }
 
 TEST(GroupToolpaths, OozeShieldAroundBothMeshes) {
@@ -114,7 +156,7 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
     test::Stack s = test::prismStack(60);
     test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
     test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     const Paths stem{rect(50'000 - 699, 50'000 - 699, 60'000 + 699, 60'000 + 699)};
     for (int i = 0; i < 60; ++i) {
@@ -132,11 +174,60 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
     EXPECT_EQ(box.right, 70'000 + 1'000);
 }
 
+TEST(GroupToolpaths, RaftUnderATeeLiftsTheModelAndTakesTheFirstLayersSupport) {
+    ResolvedMachine m = test::fdmMachine({{"support_enable", "True"},
+                                          {"support_pattern", "lines"},
+                                          {"adhesion_type", "raft"},
+                                          {"initial_layer_line_width_factor", "150"},
+                                          {"speed_support_infill", "40"},
+                                          {"speed_print_layer_0", "20"},
+                                          {"raft_airgap", "0.3"},
+                                          {"layer_0_z_overlap", "0.15"},
+                                          {"raft_margin", "5"}});
+    test::Stack s = test::prismStack(60);  // 0.3 mm first layer, then 0.1 mm
+    test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
+    test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt}}};
+    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const RaftLayout layout = raftLayout(m.global, &m.extruders);
+    EXPECT_TRUE(g.adhesion.empty());  // no skirt or brim under a raft
+    EXPECT_TRUE(g.warnings.empty());
+    // Raft layers, then the filler layers (0.3 + 0.3 − 0.15 = 0.45 mm: 5 of 0.09 mm) printing the support.
+    const int raft_layers = 2 + layout.surface_layers;
+    ASSERT_EQ(layout.fillerLayerCount(), 5);
+    ASSERT_EQ(g.raft.size(), static_cast<std::size_t>(raft_layers + 5));
+    EXPECT_EQ(g.raft.front().index, -layout.extraLayerCount());
+    for (int i = 0; i < static_cast<int>(g.raft.size()); ++i)
+        EXPECT_EQ(g.raft[static_cast<std::size_t>(i)].index, g.raft.front().index + i);
+    const RaftLayer& filler = g.raft.back();
+    EXPECT_EQ(filler.index, -1);
+    EXPECT_EQ(filler.thickness_um, 90);
+    EXPECT_EQ(filler.z_um, layout.totalThicknessUm() + 450);
+    EXPECT_LT(filler.fan_ratio, 0);  // cooled as the model's first layer
+    ASSERT_FALSE(filler.paths.empty());
+    for (const ExtrusionPath& p : filler.paths) {
+        EXPECT_EQ(p.feature, Feature::Support);
+        EXPECT_EQ(p.width_um, m.global.lengthMicrons("support_line_width"));  // no first-layer widening
+        EXPECT_DOUBLE_EQ(p.speed_mm_s, 40);                                   // no first-layer slow-down
+    }
+    EXPECT_TRUE(g.support[0].empty());  // the model's first layer prints no support
+    EXPECT_FALSE(g.support[1].empty());
+    // The raft covers the bar's shadow (the support) with the 5 mm margin.
+    const ClipperLib::IntRect box = boundsOf(g.raft_outline);
+    EXPECT_NEAR(box.left, 40'000 - 5'000, 1'000);
+    EXPECT_NEAR(box.right, 70'000 + 5'000, 1'000);
+    // The model is lifted; its layers keep their thickness.
+    EXPECT_EQ(g.heights[0].print_z, s.heights[0].print_z + layout.modelLiftUm(0));
+    EXPECT_EQ(g.heights[5].print_z, s.heights[5].print_z + layout.modelLiftUm(5));
+    EXPECT_EQ(g.heights[5].print_z - g.heights[5].bottom_z, 100);
+    EXPECT_EQ(g.heights[0].print_z - g.heights[0].bottom_z, 300);
+}
+
 TEST(GroupToolpaths, EmptyBottomLayersAreDroppedAndThePrintStartsAtTheFirstHeight) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
     test::Stack s = test::prismStack(30);
     test::fill(s, 3, 30, {square(50'000, 50'000, 10'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "late", &s.layers}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "late", &s.layers, std::nullopt}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     EXPECT_EQ(g.first_sliced_layer, 3U);
     ASSERT_EQ(g.heights.size(), 27U);
@@ -155,7 +246,7 @@ TEST(GroupToolpaths, TheSkirtGoesAroundTheFirstLayerThatPrints) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "skirt"}});
     test::Stack s = test::prismStack(30);
     test::fill(s, 2, 28, {square(50'000, 50'000, 10'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "middle", &s.layers}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "middle", &s.layers, std::nullopt}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     EXPECT_EQ(g.first_sliced_layer, 2U);
     ASSERT_EQ(g.heights.size(), 28U);
@@ -171,7 +262,7 @@ TEST(GroupToolpaths, TheSkirtGoesAroundTheFirstLayerThatPrints) {
 TEST(GroupToolpaths, NothingToPrintDropsEveryLayer) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
     test::Stack s = test::prismStack(5);
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "empty", &s.layers}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "empty", &s.layers, std::nullopt}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     EXPECT_TRUE(g.heights.empty());
     EXPECT_EQ(g.first_sliced_layer, 5U);

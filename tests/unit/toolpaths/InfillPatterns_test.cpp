@@ -104,10 +104,67 @@ TEST(InfillPatterns, GyroidIsCurvedAndReachesTheEdges) {
     EXPECT_GT(many_points, curves.size() / 2);
 }
 
+TEST(InfillPatterns, LinesPassThroughTheOrigin) {
+    InfillParams p;
+    p.line_distance_um = 2'000;
+    p.angle_degrees = 0;
+    p.origin_um = {12'345, 777};  // at 0° the lines are x = 12.345 mm + k · 2 mm
+    for (const ExtrusionPath& line : generateInfill(kArea, p))
+        EXPECT_EQ((line.points[0].X - 12'345) % 2'000, 0) << line.points[0].X;
+    p.angle_degrees = 180;  // the same lines, found in the frame turned half a turn
+    for (const ExtrusionPath& line : generateInfill(kArea, p))
+        EXPECT_EQ((line.points[0].X - 12'345) % 2'000, 0) << line.points[0].X;
+    p.origin_um = {0, 777};
+    p.angle_degrees = 270;  // y = 0.777 mm + k · 2 mm
+    for (const ExtrusionPath& line : generateInfill(kArea, p))
+        EXPECT_EQ((line.points[0].Y - 777) % 2'000, 0) << line.points[0].Y;
+}
+
+TEST(InfillPatterns, WallsAroundTheAreaAndLinesInsideThem) {
+    InfillParams p;
+    p.line_distance_um = 4'000;
+    p.angle_degrees = 0;
+    p.wall_count = 2;
+    p.overlap_um = 100;
+    const std::vector<ExtrusionPath> paths = generateInfill(kArea, p);
+    ASSERT_GE(paths.size(), 3U);
+    // Loops 0.2 and 0.6 mm inside the 40 mm square, then the lines reach 0.8 − 0.1 mm from its edge.
+    EXPECT_TRUE(paths[0].closed && paths[1].closed);
+    EXPECT_NEAR(test::pathLength(paths[0]), 4 * 39'600.0, 1.0);
+    EXPECT_NEAR(test::pathLength(paths[1]), 4 * 38'800.0, 1.0);
+    for (std::size_t i = 2; i < paths.size(); ++i) {
+        EXPECT_FALSE(paths[i].closed);
+        EXPECT_NEAR(test::pathLength(paths[i]), 40'000.0 - 2 * 700.0, 1.0) << i;
+    }
+}
+
+TEST(InfillPatterns, MultiplierPrintsEveryLineTwice) {
+    InfillParams p;
+    p.line_distance_um = 4'000;
+    p.angle_degrees = 0;
+    p.origin_um = {2'000, 0};  // x = 2, 6, …, 38 mm: none on the edge
+    const double single = test::totalLength(generateInfill(kArea, p));
+    p.multiplier = 2;
+    EXPECT_NEAR(test::totalLength(generateInfill(kArea, p)) / single, 2.0, 0.02);
+    p.multiplier = 3;
+    EXPECT_NEAR(test::totalLength(generateInfill(kArea, p)) / single, 3.0, 0.03);
+}
+
+TEST(InfillPatterns, ConnectedLinesArePolylinesAlongTheEdge) {
+    InfillParams p;
+    p.pattern = InfillPattern::Cubic;
+    p.line_distance_um = 6'000;
+    const std::vector<ExtrusionPath> separate = generateInfill(kArea, p);
+    p.connect_lines = true;
+    const std::vector<ExtrusionPath> connected = generateInfill(kArea, p);
+    EXPECT_LT(connected.size() * 4, separate.size());
+    EXPECT_GT(test::totalLength(connected), test::totalLength(separate));  // the connectors
+}
+
 TEST(InfillPatterns, NamesAsCura) {
     EXPECT_EQ(infillPatternOf("grid", "infill_pattern"), InfillPattern::Grid);
     EXPECT_EQ(infillPatternOf("quarter_cubic", "infill_pattern"), InfillPattern::QuarterCubic);
-    EXPECT_EQ(infillPatternOf("cubicsubdiv", "infill_pattern"), InfillPattern::Cubic);
+    EXPECT_EQ(infillPatternOf("cubicsubdiv", "infill_pattern"), InfillPattern::CubicSubdiv);
     EXPECT_EQ(infillPatternOf("cross_3d", "infill_pattern"), InfillPattern::Lines);
     EXPECT_THROW(infillPatternOf("honeycomb", "infill_pattern"), InputError);
     EXPECT_TRUE(infill(InfillPattern::Grid, 0).empty());
