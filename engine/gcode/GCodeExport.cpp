@@ -202,6 +202,11 @@ void GCodeExport::unretract() {
     s.extra_prime_mm3 = 0;
 }
 
+void GCodeExport::dwell(double seconds) {
+    line("G4 P" + std::to_string(static_cast<long long>(seconds * 1000)));
+    time_.addDelay(seconds);
+}
+
 void GCodeExport::resetExtrusionAxis() {
     std::string reset = dialect_->reset();
     if (!reset.empty())

@@ -93,8 +93,9 @@ class GCodeExport {
     /// Material primed in addition at the next prime of the active extruder
     /// (switch_extruder_extra_prime_amount).
     void addExtraPrime(double volume_mm3) { state().extra_prime_mm3 += volume_mm3; }
-    void resetExtrusionAxis();  ///< G92 E0 in absolute mode
-    void setFan(double ratio);  ///< M106 S0..255 / M107 (P<n> for the active extruder's fan n ≠ 0)
+    void resetExtrusionAxis();   ///< G92 E0 in absolute mode
+    void dwell(double seconds);  ///< G4 P<milliseconds>, counted in the time estimate
+    void setFan(double ratio);   ///< M106 S0..255 / M107 (P<n> for the active extruder's fan n ≠ 0)
     /// Acceleration (mm/s²) and XY jerk (mm/s) of the following moves, 0 = unchanged: writes
     /// M204/M205 (gcode/MotionCommands.h) when they change and uses them for the time estimate.
     void setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel);

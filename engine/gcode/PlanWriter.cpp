@@ -70,6 +70,15 @@ TimeFeature timeFeature(Feature feature) {
     }
 }
 
+/// cool_lift_head (planning/Cooling.h), written as CuraEngine 4.13 writes it.
+void liftHead(const PlanStep& step, GCodeExport& gcode) {
+    gcode.comment("Small layer, adding delay");
+    gcode.retract();
+    gcode.moveZ(gcode.z() + 3'000, step.speed_mm_s);
+    gcode.travel(step.to, step.speed_mm_s);
+    gcode.dwell(step.dwell_seconds);
+}
+
 void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterParams& params,
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
@@ -114,13 +123,10 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
         case PlanStep::Kind::SetBedTemperature:
             gcode.line("M140 S" + formatDecimal(step.temperature_c, 1));
             break;
+        case PlanStep::Kind::LiftHead:
+            liftHead(step, gcode);
+            break;
     }
-}
-
-bool movesTheHead(const PlannedLayer& layer) {
-    return std::any_of(layer.steps.begin(), layer.steps.end(), [](const PlanStep& step) {
-        return step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude;
-    });
 }
 
 }  // namespace
@@ -128,8 +134,6 @@ bool movesTheHead(const PlannedLayer& layer) {
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode) {
     WrittenLayers out;
     for (const PlannedLayer& layer : plan.layers) {
-        if (!movesTheHead(layer))
-            continue;  // as CuraEngine: a layer with nothing to print is not written (;LAYER_COUNT: keeps it)
         gcode.takeText();  // start a fresh chunk
         gcode.comment("LAYER:" + std::to_string(layer.index));
         if (params.reset_e_each_layer && !gcode.retracted())

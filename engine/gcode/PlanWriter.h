@@ -1,8 +1,9 @@
 #pragma once
 // Writes the layers of a PrintPlan through a GCodeExport: ;LAYER:n, the plan's steps, and
-// ;TIME_ELAPSED: at the end of each layer. A layer without a move is not written, as CuraEngine
-// leaves out an empty layer (e.g. the tip of a model too thin to print). Returns one text chunk per layer
-// (Cura's socket sends them one by one; the CLI joins them).
+// ;TIME_ELAPSED: at the end of each layer. Every layer is written, an empty one too (where CuraEngine
+// leaves out a layer with nothing to print but still counts it in ;LAYER_COUNT:), so that the
+// ;LAYER: lines of the model match ;LAYER_COUNT:. Returns one text chunk per layer (Cura's socket sends
+// them one by one; the CLI joins them).
 #include <string>
 #include <vector>
 

@@ -128,8 +128,12 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
     cleanup.maximum_resolution_um = simplify ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
     cleanup.maximum_deviation_um = simplify ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
-    for (auto& layers : sliced.meshes)
-        cleanOutlines(layers, cleanup, threads);
+    for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
+        cleanOutlines(sliced.meshes[m], cleanup, threads);
+        const Settings& own = group.meshes[m].settings;
+        if (own.has("meshfix_union_all_remove_holes") && own.boolean("meshfix_union_all_remove_holes"))
+            removeHoles(sliced.meshes[m], threads);
+    }
     return sliced;
 }
 

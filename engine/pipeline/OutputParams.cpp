@@ -1,5 +1,6 @@
 #include "pipeline/OutputParams.h"
 
+#include <algorithm>
 #include <numbers>
 
 #include "mixing/MixingSettings.h"

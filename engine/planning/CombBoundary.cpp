@@ -34,6 +34,16 @@ int crossingXComparedTo(const Point2& a, const Point2& b, coord_um y, coord_um x
     return dy > 0 ? sign : -sign;
 }
 
+/// The point of segment a–b nearest to p (double precision, rounded to the micron).
+Point2 nearestOnSegment(const Point2& p, const Point2& a, const Point2& b) {
+    const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+    const double length2 = dx * dx + dy * dy;
+    const double t =
+        length2 > 0 ? std::clamp((double(p.X - a.X) * dx + double(p.Y - a.Y) * dy) / length2, 0.0, 1.0) : 0.0;
+    return {a.X + static_cast<coord_um>(std::llround(t * dx)),
+            a.Y + static_cast<coord_um>(std::llround(t * dy))};
+}
+
 }  // namespace
 
 CombBoundary::CombBoundary(const Paths& area) : loops_(area) {
@@ -221,6 +231,51 @@ std::optional<Path> CombBoundary::route(const Point2& a, const Point2& b) const 
     }
     points.push_back(b);
     return shortened(a, points);
+}
+
+std::optional<Point2> CombBoundary::entryToward(const Point2& from, const Point2& toward,
+                                                coord_um nudge_um) const {
+    if (edges_.empty())
+        return std::nullopt;
+    const std::vector<Crossing> found = crossings(from, toward);
+    const double dx = double(toward.X - from.X), dy = double(toward.Y - from.Y);
+    const double length = std::hypot(dx, dy);
+    if (found.empty() || length <= 0)
+        return std::nullopt;
+    const Point2& at = found.front().at;
+    const Point2 nudged{at.X + static_cast<coord_um>(std::llround(dx / length * double(nudge_um))),
+                        at.Y + static_cast<coord_um>(std::llround(dy / length * double(nudge_um)))};
+    if (!inside(nudged))
+        return std::nullopt;
+    return nudged;
+}
+
+std::optional<Point2> CombBoundary::moveInside(const Point2& p, coord_um max_distance_um,
+                                               coord_um nudge_um) const {
+    if (inside(p))
+        return p;
+    if (edges_.empty())
+        return std::nullopt;
+    const coord_um c0 = column(p.X - max_distance_um), c1 = column(p.X + max_distance_um);
+    const coord_um r0 = row(p.Y - max_distance_um), r1 = row(p.Y + max_distance_um);
+    double best = double(max_distance_um);
+    std::optional<Point2> nearest;
+    for (coord_um r = r0; r <= r1; ++r) {
+        for (coord_um c = c0; c <= c1; ++c) {
+            for (std::uint32_t e : cells_[cellIndex(c, r)]) {
+                const Point2 q = nearestOnSegment(p, edges_[e].a, edges_[e].b);
+                const double d = std::hypot(double(q.X - p.X), double(q.Y - p.Y));
+                if (d <= best)
+                    best = d, nearest = q;
+            }
+        }
+    }
+    if (!nearest || best <= 0)
+        return std::nullopt;
+    const double k = double(nudge_um) / best;
+    const Point2 moved{nearest->X + static_cast<coord_um>(std::llround(double(nearest->X - p.X) * k)),
+                       nearest->Y + static_cast<coord_um>(std::llround(double(nearest->Y - p.Y) * k))};
+    return inside(moved) ? std::optional<Point2>(moved) : std::nullopt;
 }
 
 }  // namespace mixengine

@@ -32,6 +32,13 @@ class CombBoundary {
     /// straight shortcut stays inside. The points after `a`, ending with b; nothing when a and b
     /// are not both inside or lie in different islands.
     std::optional<Path> route(const Point2& a, const Point2& b) const;
+    /// Where the straight way from `from` (outside) towards `toward` first enters the area, moved
+    /// `nudge_um` further along so that it lies inside; nothing when it does not enter or the
+    /// nudged point is not inside.
+    std::optional<Point2> entryToward(const Point2& from, const Point2& toward, coord_um nudge_um = 20) const;
+    /// `p` when it is inside; else the boundary point nearest to it, if within `max_distance_um`,
+    /// moved `nudge_um` on past it (away from `p`) so that it lies inside; else nothing.
+    std::optional<Point2> moveInside(const Point2& p, coord_um max_distance_um, coord_um nudge_um = 20) const;
 
   private:
     struct Edge {

@@ -15,6 +15,11 @@ CoolingParams coolingParams(const Settings& s) {
     p.min_layer_time_s = s.durationSeconds("cool_min_layer_time");
     p.fan_max_layer_time_s = s.durationSeconds("cool_min_layer_time_fan_speed_max");
     p.min_speed_mm_s = s.velocityMmPerS("cool_min_speed");
+    p.lift_head = s.has("cool_lift_head") && s.boolean("cool_lift_head");
+    if (s.has("machine_width") && !(s.has("machine_center_is_zero") && s.boolean("machine_center_is_zero")))
+        p.bed_middle_um = {s.lengthMicrons("machine_width") / 2, s.lengthMicrons("machine_depth") / 2};
+    if (s.has("speed_travel"))
+        p.travel_speed_mm_s = s.velocityMmPerS("speed_travel");
     return p;
 }
 
@@ -47,6 +52,28 @@ double fanRatio(const CoolingParams& p, int layer, double seconds) {
     if (layer >= full || full <= 0)
         return regular;
     return p.fan_first_ratio + (regular - p.fan_first_ratio) * double(std::max(layer, 0)) / double(full);
+}
+
+/// The lift at the end of a layer `extra_s` too short: 20 mm from the head's last position towards
+/// the middle of the bed.
+PlanStep liftHead(const PlannedLayer& layer, Point2 head, const CoolingParams& p, double extra_s) {
+    for (const PlanStep& step : layer.steps) {
+        if (step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude)
+            head = step.to;
+    }
+    constexpr double kTowardsMiddleUm = 20'000;
+    const double dx = double(head.X - p.bed_middle_um.X), dy = double(head.Y - p.bed_middle_um.Y);
+    const double length = std::hypot(dx, dy);
+    PlanStep lift;
+    lift.kind = PlanStep::Kind::LiftHead;
+    lift.to = head;
+    if (length > 0) {
+        lift.to.X -= static_cast<coord_um>(std::llround(dx * kTowardsMiddleUm / length));
+        lift.to.Y -= static_cast<coord_um>(std::llround(dy * kTowardsMiddleUm / length));
+    }
+    lift.speed_mm_s = p.travel_speed_mm_s;
+    lift.dwell_seconds = extra_s;
+    return lift;
 }
 
 }  // namespace
@@ -92,6 +119,8 @@ void applyCooling(PlannedLayer& layer, Point2 start, const CoolingParams& params
                     std::max(std::min(params.min_speed_mm_s, step.speed_mm_s), step.speed_mm_s * factor);
         }
         seconds = naiveLayerSeconds(layer, start);
+        if (params.lift_head && params.min_layer_time_s - seconds > 0.1)
+            layer.steps.push_back(liftHead(layer, start, params, params.min_layer_time_s - seconds));
     }
     for (PlanStep& step : layer.steps) {
         if (step.kind == PlanStep::Kind::SetFan)

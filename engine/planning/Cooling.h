@@ -8,7 +8,10 @@
 //     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0
 //     (layers below the model — raft filler layers — count as layer 0);
 //   - raft layers (raftCooling): their raft_*_fan_speed replaces cool_fan_speed_min and there is no
-//     ramp, as CuraEngine 4.13 cools them; the minimum layer time and cool_fan_speed_max still apply.
+//     ramp, as CuraEngine 4.13 cools them; the minimum layer time and cool_fan_speed_max still apply;
+//   - cool_lift_head: when the layer still takes more than 0.1 s less than cool_min_layer_time once
+//     slowed down, the layer ends with a LiftHead step (as CuraEngine 4.13: retract, lift 3 mm, move
+//     20 mm towards the middle of the bed, wait out the rest).
 // Layer time here is the planner's simple estimate: distance / speed of every move.
 #include <vector>
 
@@ -26,6 +29,9 @@ struct CoolingParams {
     double min_layer_time_s = 5;
     double fan_max_layer_time_s = 10;  ///< cool_min_layer_time_fan_speed_max
     double min_speed_mm_s = 10;
+    bool lift_head = false;      ///< cool_lift_head
+    Point2 bed_middle_um{0, 0};  ///< where the lifted head moves towards
+    double travel_speed_mm_s = 150;
 };
 
 CoolingParams coolingParams(const Settings& settings);

@@ -20,6 +20,9 @@ struct PlanStep {
         SetExtruder,           ///< tool change to `extruder`
         SetNozzleTemperature,  ///< `temperature_c` for nozzle `extruder` (−1: the active one); `wait`: M109
         SetBedTemperature,     ///< M140 `temperature_c`, without waiting
+        /// cool_lift_head on a layer too short even slowed down: retract, lift the head 3 mm, travel
+        /// to `to` at `speed_mm_s` and wait `dwell_seconds` (G4)
+        LiftHead,
         Prime,  ///< first use of the active extruder: its prime (G280 on Griffin), then a retraction
     };
     Kind kind = Kind::Travel;
@@ -32,6 +35,7 @@ struct PlanStep {
     double fan_ratio = 0;
     int extruder = 0;  ///< SetExtruder: the new one; SetNozzleTemperature: the nozzle (−1 = active)
     double temperature_c = 0;
+    double dwell_seconds = 0;       ///< LiftHead
     bool wait = false;              ///< SetNozzleTemperature: wait until it is reached (M109)
     double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)

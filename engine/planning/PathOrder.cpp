@@ -1,5 +1,6 @@
 #include "planning/PathOrder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -14,7 +15,7 @@ double distanceUm(const Point2& a, const Point2& b) {
 std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& best_distance) {
     best_distance = std::numeric_limits<double>::max();
     std::size_t best = 0;
-    if (path.closed && path.fixed_start) {
+    if (path.fixed_start) {
         best_distance = distanceUm(head, path.points.front());
         return 0;
     }
@@ -32,26 +33,19 @@ std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& bes
     return to_front <= to_back ? 0 : path.points.size() - 1;
 }
 
-/// A combed travel (through the points of the comb route, no retraction) where the comb boundary
-/// allows one, else a straight travel that retracts when longer than retraction_min_travel.
+/// The travel to `to` (planning/TravelRoute.h): retracting first when it must.
 void appendTravel(const Point2& from, const Point2& to, const TravelParams& params,
                   std::vector<PlanStep>& steps) {
+    const TravelRoute route = planTravel(from, to, params);
     PlanStep travel;
     travel.kind = PlanStep::Kind::Travel;
     travel.speed_mm_s = params.travel_speed_mm_s;
-    const bool long_travel = distanceUm(from, to) > static_cast<double>(params.retraction_min_travel_um);
-    if (long_travel && params.comb) {
-        if (std::optional<Path> route = params.comb->route(from, to)) {
-            for (const Point2& point : *route) {
-                travel.to = point;
-                steps.push_back(travel);
-            }
-            return;
-        }
+    travel.retract = route.retract;
+    for (const Point2& point : route.points) {
+        travel.to = point;
+        steps.push_back(travel);
+        travel.retract = false;
     }
-    travel.to = to;
-    travel.retract = params.retraction_enable && long_travel;
-    steps.push_back(travel);
 }
 
 /// A travel (no retraction) from `head` along `points` for `distance_um`, as a nozzle wipe.
@@ -122,6 +116,20 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
     appendPathWipe(path, start, params, before_end, head, steps);
 }
 
+/// Which paths the nearest-first search may pick: free paths and the first path of each sequence.
+std::vector<bool> entryPaths(const std::vector<ExtrusionPath>& paths) {
+    std::vector<bool> entry(paths.size(), true);
+    std::vector<std::uint32_t> seen;
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        const std::uint32_t sequence = paths[i].sequence;
+        if (sequence == 0 || paths[i].points.size() < 2)
+            continue;
+        entry[i] = std::find(seen.begin(), seen.end(), sequence) == seen.end();
+        seen.push_back(sequence);
+    }
+    return entry;
+}
+
 /// The travel length the search compares: straight, or along the comb route when asked for and the
 /// straight travel leaves the comb boundary (100 × straight without a route).
 double orderDistance(const Point2& from, const Point2& to, const TravelParams& params) {
@@ -155,19 +163,39 @@ double pathDistance(const ExtrusionPath& path, const Point2& from, const TravelP
     return best;
 }
 
-/// Index of the nearest path not done yet (paths.size() when none is left).
-std::size_t nearestPath(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done,
-                        const Point2& from, const TravelParams& params) {
+/// Index of the nearest path not done yet that may be picked (paths.size() when none is left).
+std::size_t nearestEntry(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done,
+                         const std::vector<bool>& entry, const Point2& from, const TravelParams& params) {
     std::size_t best = paths.size();
     double best_distance = std::numeric_limits<double>::max();
     for (std::size_t i = 0; i < paths.size(); ++i) {
-        if (done[i] || paths[i].points.size() < 2)
+        if (done[i] || !entry[i] || paths[i].points.size() < 2)
             continue;
         const double d = pathDistance(paths[i], from, params, best_distance);
         if (d < best_distance)
             best = i, best_distance = d;
     }
     return best;
+}
+
+/// The first path not done yet with at least two points (keep_order), paths.size() when none.
+std::size_t nextInOrder(const std::vector<ExtrusionPath>& paths, const std::vector<bool>& done) {
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        if (!done[i] && paths[i].points.size() >= 2)
+            return i;
+    }
+    return paths.size();
+}
+
+/// Where to start `path` seen from `from`: bestStart(), or for an open line with comb-aware order
+/// the end nearer along the comb routes.
+std::size_t startOf(const ExtrusionPath& path, const Point2& from, const TravelParams& params) {
+    double unused = 0;
+    if (!params.comb_aware_order || path.closed || path.fixed_start)
+        return bestStart(path, from, unused);
+    const bool front =
+        orderDistance(from, path.points.front(), params) <= orderDistance(from, path.points.back(), params);
+    return front ? 0 : path.points.size() - 1;
 }
 
 }  // namespace
@@ -181,31 +209,34 @@ double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_u
 void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& params, Point2& head,
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps) {
     std::vector<bool> done(paths.size(), false);
+    const std::vector<bool> entry = entryPaths(paths);
     const bool keep_order = !paths.empty() && paths.front().keep_order;
-    for (std::size_t placed = 0; placed < paths.size(); ++placed) {
-        const Point2 from = placed == 0 && params.order_from ? *params.order_from : head;
-        const std::size_t best = keep_order ? placed : nearestPath(paths, done, from, params);
-        if (best == paths.size())
-            break;
-        if (paths[best].points.size() < 2)
-            continue;
-        double best_distance = 0;
-        std::size_t best_start = bestStart(paths[best], from, best_distance);
-        if (params.comb_aware_order && !paths[best].closed) {
-            const ExtrusionPath& path = paths[best];
-            const bool front = orderDistance(from, path.points.front(), params) <=
-                               orderDistance(from, path.points.back(), params);
-            best_start = front ? 0 : path.points.size() - 1;
-        }
-        done[best] = true;
-        if (feature != paths[best].feature) {
+    bool first = true;
+    auto print = [&](std::size_t index) {
+        const Point2 from = first && params.order_from ? *params.order_from : head;
+        first = false;
+        done[index] = true;
+        if (feature != paths[index].feature) {
             PlanStep marker;
             marker.kind = PlanStep::Kind::SetFeature;
-            marker.feature = paths[best].feature;
+            marker.feature = paths[index].feature;
             steps.push_back(marker);
-            feature = paths[best].feature;
+            feature = paths[index].feature;
         }
-        emitPath(paths[best], best_start, params, head, steps);
+        emitPath(paths[index], startOf(paths[index], from, params), params, head, steps);
+    };
+    for (;;) {
+        const Point2 from = first && params.order_from ? *params.order_from : head;
+        const std::size_t best =
+            keep_order ? nextInOrder(paths, done) : nearestEntry(paths, done, entry, from, params);
+        if (best == paths.size())
+            break;
+        print(best);
+        const std::uint32_t sequence = paths[best].sequence;
+        for (std::size_t j = best + 1; sequence != 0 && j < paths.size(); ++j) {
+            if (!done[j] && paths[j].sequence == sequence && paths[j].points.size() >= 2)
+                print(j);
+        }
     }
 }
 

@@ -2,36 +2,19 @@
 // Orders the extrusion paths of one layer to keep travel short and turns them into plan steps.
 //
 // Greedy nearest neighbour from the current head position: a closed loop may start at any of its
-// vertices (the nearest is taken), an open line at either end. A group whose paths have keep_order
-// (monotonic ironing) is printed in its own order; only each path's start is chosen. TravelParams can
-// move the first search's starting point and make distances follow the comb routes. Travels longer than
-// retraction_min_travel retract when retraction is enabled, unless they stay inside the comb
-// boundary (combing).
+// vertices (the nearest is taken), an open line at either end. A sequence (ExtrusionPath::sequence)
+// is entered at its first path only and then printed in list order, each line from its end nearer
+// to the head; a group whose paths have keep_order (monotonic ironing) is printed in its own order,
+// only each path's start is chosen. TravelParams can move the first search's starting point and make
+// distances follow the comb routes. How each travel goes and whether it retracts: planning/TravelRoute.h.
 #include <optional>
 #include <vector>
 
-#include "planning/CombBoundary.h"
 #include "planning/LayerPlan.h"
+#include "planning/TravelRoute.h"
 #include "toolpaths/ExtrusionPath.h"
 
 namespace mixengine {
-
-struct TravelParams {
-    double travel_speed_mm_s = 150;
-    bool retraction_enable = true;
-    coord_um retraction_min_travel_um = 1500;
-    coord_um layer_thickness_um = 200;
-    const CombBoundary* comb = nullptr;  ///< travels that stay inside it are not retracted
-    coord_um wall_0_wipe_um = 0;         ///< wall_0_wipe_dist: travel on along an outer wall loop's start
-    coord_um infill_wipe_um = 0;         ///< infill_wipe_dist: travel on past the end of an infill line
-    /// The nearest path is first looked for from here instead of the head (the travel still starts
-    /// at the head): infill_randomize_start_location.
-    std::optional<Point2> order_from;
-    /// infill_enable_travel_optimization: a path whose end cannot be reached straight inside the
-    /// comb boundary counts at the length of its comb route (100 × the straight distance when there
-    /// is none), as CuraEngine's line order optimizer with a combing boundary.
-    bool comb_aware_order = false;
-};
 
 /// Appends the steps for `paths` (one group, printed together) to `steps`, starting from and
 /// updating `head`; a ;TYPE: step is added whenever the feature differs from `feature`.

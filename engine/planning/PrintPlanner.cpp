@@ -1,6 +1,7 @@
 #include "planning/PrintPlanner.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <set>
 
@@ -29,10 +30,30 @@ std::vector<ExtrusionPath> ofExtruder(const std::vector<ExtrusionPath>& paths, i
     return selected;
 }
 
-TravelParams travelParams(const Settings& s, int layer, coord_um thickness, const CombBoundary* comb) {
+/// CuraEngine's reach for moving travel ends into the comb area: twice its comb offset, which is
+/// twice the innermost wall's width (× initial_layer_line_width_factor on layer 0).
+coord_um combMoveInside(const Settings& s, int layer) {
+    if (!s.has("wall_line_width_0"))
+        return 0;
+    const bool several = s.has("wall_line_count") && s.integer("wall_line_count") > 1;
+    double width = double(s.lengthMicrons(several ? "wall_line_width_x" : "wall_line_width_0"));
+    if (layer == 0 && s.has("initial_layer_line_width_factor"))
+        width *= s.ratio("initial_layer_line_width_factor");
+    return static_cast<coord_um>(std::llround(4 * width));
+}
+
+TravelParams travelParams(const Settings& s, int layer, coord_um thickness, const CombBoundary* comb,
+                          const CombBoundary* free) {
     TravelParams p;
     if (!s.has("retraction_combing") || s.text("retraction_combing") != "off")
         p.comb = comb;
+    if (!s.has("travel_avoid_other_parts") || s.boolean("travel_avoid_other_parts"))
+        p.free = free;
+    p.limit_support_retractions =
+        s.has("limit_support_retractions") && s.boolean("limit_support_retractions");
+    if (s.has("retraction_combing_max_distance"))
+        p.combing_max_distance_um = s.lengthMicrons("retraction_combing_max_distance");
+    p.comb_move_inside_um = combMoveInside(s, layer);
     p.travel_speed_mm_s = s.velocityMmPerS(layer == 0 ? "speed_travel_layer_0" : "speed_travel");
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
@@ -57,20 +78,36 @@ struct LayerContext {
     int extruder = 0;
     const Settings* extruder_settings = nullptr;
     const CombBoundary* comb = nullptr;
+    const CombBoundary* free = nullptr;  ///< outside the parts grown by travel_avoid_distance
 };
 
-/// The order of a mesh's groups on a layer: walls (inner first, or outer first with
-/// outer_inset_first), skin, infill — infill first with infill_before_walls — and ironing last.
-std::vector<const std::vector<ExtrusionPath>*> groupOrder(const MeshLayerGroups& g, const Settings& s) {
-    const bool outer_first = s.has("outer_inset_first") && s.boolean("outer_inset_first");
-    std::vector<const std::vector<ExtrusionPath>*> order;
-    if (outer_first)
-        order = {&g.outer_walls, &g.inner_walls, &g.skin, &g.infill};
-    else
-        order = {&g.inner_walls, &g.outer_walls, &g.skin, &g.infill};
+/// One group of a mesh's paths on a layer, printed together.
+struct OrderedGroup {
+    std::vector<ExtrusionPath> paths;
+    bool infill = false;  ///< ordered as infill (infillTravel)
+};
+
+/// The order of a mesh's groups on a layer: walls (inner first, or outer first — outerWallFirst),
+/// skin, infill — infill first with infill_before_walls — and ironing last. Walls grouped by outline
+/// (sequences, optimize_wall_printing_order) are one group, so that each outline's loops print together.
+std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s, int layer) {
+    const bool outer_first = outerWallFirst(s, layer);
+    const std::vector<ExtrusionPath>& first = outer_first ? g.outer_walls : g.inner_walls;
+    const std::vector<ExtrusionPath>& second = outer_first ? g.inner_walls : g.outer_walls;
+    const auto grouped = [](const ExtrusionPath& p) { return p.sequence != 0; };
+    std::vector<OrderedGroup> order;
+    if (std::any_of(first.begin(), first.end(), grouped) ||
+        std::any_of(second.begin(), second.end(), grouped)) {
+        order.push_back({first});
+        order.back().paths.insert(order.back().paths.end(), second.begin(), second.end());
+    } else {
+        order = {{first}, {second}};
+    }
+    order.push_back({g.skin});
+    order.push_back({g.infill, true});
     if (s.has("infill_before_walls") && s.boolean("infill_before_walls"))
-        std::rotate(order.begin(), order.begin() + 3, order.end());
-    order.push_back(&g.ironing);
+        std::rotate(order.begin(), order.end() - 1, order.end());
+    order.push_back({g.ironing});
     return order;
 }
 
@@ -86,19 +123,19 @@ TravelParams infillTravel(TravelParams travel, const MeshLayerGroups& groups, co
 void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
                    PlannedLayer& planned) {
     const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(ctx.layer)];
-    const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb);
+    const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb, ctx.free);
     std::optional<Feature> feature;
     bool marked = false;
-    for (const std::vector<ExtrusionPath>* group : groupOrder(groups, *mesh.settings)) {
-        std::vector<ExtrusionPath> selected = ofExtruder(*group, ctx.extruder);
+    for (const OrderedGroup& group : groupOrder(groups, *mesh.settings, ctx.layer)) {
+        std::vector<ExtrusionPath> selected = ofExtruder(group.paths, ctx.extruder);
         if (selected.empty())
             continue;
         if (!marked)
             addMeshMarker(mesh_index, planned.steps);
         marked = true;
         appendOrderedPaths(std::move(selected),
-                           group == &groups.infill ? infillTravel(travel, groups, *mesh.settings) : travel,
-                           head, feature, planned.steps);
+                           group.infill ? infillTravel(travel, groups, *mesh.settings) : travel, head,
+                           feature, planned.steps);
     }
 }
 
@@ -110,8 +147,8 @@ void planNonMesh(const std::vector<ExtrusionPath>& paths, const LayerContext& ct
     addMeshMarker(-1, planned.steps);
     std::optional<Feature> feature;
     appendOrderedPaths(std::move(selected),
-                       travelParams(*ctx.extruder_settings, ctx.layer, ctx.thickness, nullptr), head, feature,
-                       planned.steps);
+                       travelParams(*ctx.extruder_settings, ctx.layer, ctx.thickness, nullptr, ctx.free),
+                       head, feature, planned.steps);
 }
 
 std::size_t trainOf(int extruder, const std::vector<Settings>& extruders) {
@@ -196,7 +233,7 @@ void wipeOnTower(const GroupToolpaths& t, const std::vector<Settings>& extruders
                      now.lengthMicrons("machine_nozzle_offset_x"),
                  t.prime_tower_middle.Y - old.lengthMicrons("machine_nozzle_offset_y") +
                      now.lengthMicrons("machine_nozzle_offset_y")};
-    travel.speed_mm_s = travelParams(now, ctx.layer, ctx.thickness, nullptr).travel_speed_mm_s;
+    travel.speed_mm_s = travelParams(now, ctx.layer, ctx.thickness, nullptr, nullptr).travel_speed_mm_s;
     planned.steps.push_back(travel);
     head = travel.to;
 }
@@ -267,6 +304,7 @@ struct PlanRun {
     MotionSources motion;
     std::set<int> used;
     PlannerState& state;
+    coord_um avoid_distance_um = 0;  ///< travel_avoid_distance
 };
 
 /// Starts `planned` with its fan step.
@@ -321,7 +359,7 @@ PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, boo
         useExtruder(extruder, planned, run);
         const Settings& train = run.extruders[trainOf(extruder, run.extruders)];
         const TravelParams travel =
-            travelParams(train, layer.index, layer.thickness_um, comb.empty() ? nullptr : &comb);
+            travelParams(train, layer.index, layer.thickness_um, comb.empty() ? nullptr : &comb, nullptr);
         std::vector<ExtrusionPath> loops = ofExtruder(layer.paths, extruder), lines;
         const auto open = std::stable_partition(loops.begin(), loops.end(),
                                                 [](const ExtrusionPath& path) { return path.closed; });
@@ -343,12 +381,14 @@ PlannedLayer planModelLayer(std::size_t i, bool after_first, PlanRun& run) {
     const LayerZ& height = toolpaths.heights[i];
     const Point2 layer_start = run.state.head;
     const CombBoundary comb(combArea(toolpaths, i));
+    const CombBoundary free(freeSpace(partOutlines(toolpaths, i), run.avoid_distance_um));
     const int layer_extruder = run.state.extruder;
     PlannedLayer planned = startLayer(static_cast<int>(i), height.print_z, height.print_z - height.bottom_z);
     for (int extruder : extruderOrder(toolpaths, i, run.state.extruder)) {
         useExtruder(extruder, planned, run);
-        const LayerContext ctx{planned.index, planned.thickness, extruder,
-                               &run.extruders[trainOf(extruder, run.extruders)], &comb};
+        const LayerContext ctx{planned.index, planned.thickness,
+                               extruder,      &run.extruders[trainOf(extruder, run.extruders)],
+                               &comb,         free.empty() ? nullptr : &free};
         planExtruderOnLayer(toolpaths, run.extruders, ctx, layer_extruder, run.state.head, planned);
     }
     finishLayer(planned, after_first, layer_extruder, layer_start, run.cooling, run);
@@ -378,7 +418,7 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
     return order;
 }
 
-Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
+Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer) {
     Paths area;
     const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
     for (const MeshToolpaths& mesh : toolpaths.meshes) {
@@ -388,6 +428,34 @@ Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
         }
     }
     return area;
+}
+
+Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
+    Paths area;
+    const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        const Paths* part = nullptr;
+        if (layer < mesh.layers.size() && mesh.layers[layer].comb_area)
+            part = &*mesh.layers[layer].comb_area;
+        else if (mesh.sliced && sliced_layer < mesh.sliced->size())
+            part = &(*mesh.sliced)[sliced_layer].outlines;
+        if (part)
+            area.insert(area.end(), part->begin(), part->end());
+    }
+    return area;
+}
+
+Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um) {
+    if (outlines.empty())
+        return {};
+    Paths free = offsetPolygons(unionOf(outlines), avoid_distance_um);
+    const ClipperLib::IntRect box = boundsOf(free);
+    constexpr coord_um kMarginUm = 5'000;
+    free.insert(free.begin(), Path{{box.left - kMarginUm, box.top - kMarginUm},
+                                   {box.right + kMarginUm, box.top - kMarginUm},
+                                   {box.right + kMarginUm, box.bottom + kMarginUm},
+                                   {box.left - kMarginUm, box.bottom + kMarginUm}});
+    return free;
 }
 
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
@@ -405,7 +473,8 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                 coolingParams(global),
                 motionSources(global, std::move(mesh_settings), extruders),
                 {},
-                state};
+                state,
+                global.has("travel_avoid_distance") ? global.lengthMicrons("travel_avoid_distance") : 0};
     if (!toolpaths.raft.empty()) {
         const Paths comb_area =
             combsOnRaft(global) ? offsetPolygons(toolpaths.raft_outline, kRaftCombMarginUm) : Paths{};

@@ -9,8 +9,9 @@
 // the extruder left) a travel to the tower's middle — its support, then every mesh in order —
 // inner walls, outer walls, skin, infill — with travel, retraction and the fan.
 // The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).
-// Travel combs inside the layer's comb area: the sliced outlines of every mesh of the group on that
-// layer (MeshToolpaths::sliced), even-odd (planning/CombBoundary.h).
+// Travel combs inside the layer's comb area (combArea: per mesh by its retraction_combing mode),
+// even-odd (planning/CombBoundary.h), and goes around the parts through the air with
+// travel_avoid_other_parts (freeSpace; planning/TravelRoute.h).
 #include <set>
 #include <vector>
 
@@ -31,9 +32,17 @@ struct PlannerState {
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                     const std::vector<Settings>& extruders, PlannerState& state);
 
-/// Where travel on `layer` of `toolpaths` may go without retraction: the outlines of every mesh's
-/// sliced layer toolpaths.first_sliced_layer + layer, one after the other (microns).
+/// The outlines of every mesh's sliced layer toolpaths.first_sliced_layer + layer, one after the
+/// other (microns).
+Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer);
+
+/// Where travel on `layer` of `toolpaths` may go without retraction: every mesh's comb area for its
+/// retraction_combing mode (MeshLayerGroups::comb_area), or its sliced outlines ("all").
 Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer);
+
+/// The space through-air travel may use with travel_avoid_other_parts: a rectangle 5 mm around the
+/// parts, less the parts grown (round) by `avoid_distance_um`, as even-odd loops (rectangle first).
+Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um);
 
 /// The extruders used on `layer`, in print order: `active` first if used, then ascending.
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active);

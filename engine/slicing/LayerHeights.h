@@ -4,9 +4,8 @@
 // Layer 0 is printed at z = layer_height_0; layer n ≥ 1 at layer_height_0 + n·layer_height.
 // The cut height depends on slicing_tolerance (Cura's setting of that name):
 //   middle    — the middle of the layer's slab (layer 0: layer_height_0 / 2);
-//   inclusive — the top of the slab is cut but the union over the slab is wanted; we cut at the
-//               slab's top and bottom and union the two outlines (see Slicer);
-//   exclusive — the intersection of the cuts at the slab's top and bottom.
+//   inclusive — the union of the cuts at the slab's top and bottom (see Slicer);
+//   exclusive — the intersection of the cuts at the slab's top and bottom (see Slicer).
 // Layer count = the number of cutting planes at or below z_max, as CuraEngine 4.13 counts:
 // floor((z_max − layer_height_0 + layer_height/2) / layer_height) + 1; no layer when z_max is below
 // the first plane (layer_height_0 / 2). Halves of odd micron heights are rounded down.

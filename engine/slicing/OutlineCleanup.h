@@ -8,6 +8,7 @@
 //     go regardless of length. A loop keeps at least three vertices. Resolution and deviation
 //     both 0: no simplification at all (the raw slices, as `mixengine layers` shows them).
 // The result never moves the outline by more than the deviation; the layer count is unchanged.
+// removeHoles fills every hole (meshfix_union_all_remove_holes).
 #include <vector>
 
 #include "geometry/Point.h"
@@ -28,5 +29,9 @@ Path simplifyLoop(const Path& loop, coord_um maximum_resolution_um, coord_um max
 void cleanOutlines(std::vector<SlicedLayer>& layers, const OutlineCleanupParams& params, int threads);
 
 double loopLengthUm(const Path& loop);
+
+/// meshfix_union_all_remove_holes: every layer's holes filled (the outer contours united), as
+/// CuraEngine 4.13 unites all loops turned the same way round.
+void removeHoles(std::vector<SlicedLayer>& layers, int threads);
 
 }  // namespace mixengine

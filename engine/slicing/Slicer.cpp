@@ -28,28 +28,43 @@ std::size_t planeIndex(const std::vector<coord_um>& plane_z, coord_um z) {
     return static_cast<std::size_t>(std::lower_bound(plane_z.begin(), plane_z.end(), z) - plane_z.begin());
 }
 
-/// Middle: the slab's middle, taken just below. Inclusive / exclusive: the slab's top taken just
-/// below it and the slab's bottom taken just above it, i.e. the two extremes inside the slab.
+/// The plane under layer i for inclusive / exclusive, as CuraEngine 4.13 places it: the bottom of
+/// the slab, except under layer 0: z = 0 (inclusive) or layer_height_0 − layer_height, at least 0
+/// (exclusive).
+coord_um bottomPlane(const std::vector<LayerZ>& layers, std::size_t i, SlicingTolerance tolerance) {
+    if (i > 0 || tolerance == SlicingTolerance::Inclusive || layers.size() < 2)
+        return layers[i].bottom_z;
+    const coord_um step = layers[1].print_z - layers[0].print_z;
+    return std::max<coord_um>(0, layers[0].print_z - step);
+}
+
+/// Middle: the slab's middle. Inclusive / exclusive: the planes under and over the slab (CuraEngine:
+/// each layer's own cut combined with the next layer's); the last layer is its own cut alone
+/// (inclusive) or empty (exclusive). Every cut is taken just below its plane.
 CutPlan planCuts(const std::vector<LayerZ>& layers, SlicingTolerance tolerance) {
     CutPlan plan;
-    for (const LayerZ& layer : layers) {
+    for (std::size_t i = 0; i < layers.size(); ++i) {
         if (tolerance == SlicingTolerance::Middle) {
-            plan.plane_z.push_back(layer.slice_z);
+            plan.plane_z.push_back(layers[i].slice_z);
         } else {
-            plan.plane_z.push_back(layer.print_z);
-            plan.plane_z.push_back(layer.bottom_z);
+            plan.plane_z.push_back(layers[i].print_z);
+            plan.plane_z.push_back(bottomPlane(layers, i, tolerance));
         }
     }
     std::sort(plan.plane_z.begin(), plan.plane_z.end());
     plan.plane_z.erase(std::unique(plan.plane_z.begin(), plan.plane_z.end()), plan.plane_z.end());
-    for (const LayerZ& layer : layers) {
+    const OnPlaneRule below = OnPlaneRule::CountAsAbove;
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+        std::vector<Cut> cuts;
         if (tolerance == SlicingTolerance::Middle) {
-            plan.layer_cuts.push_back({{planeIndex(plan.plane_z, layer.slice_z), OnPlaneRule::CountAsAbove}});
-        } else {
-            plan.layer_cuts.push_back(
-                {{planeIndex(plan.plane_z, layer.print_z), OnPlaneRule::CountAsAbove},
-                 {planeIndex(plan.plane_z, layer.bottom_z), OnPlaneRule::CountAsBelow}});
+            cuts.push_back({planeIndex(plan.plane_z, layers[i].slice_z), below});
+        } else if (i + 1 < layers.size()) {
+            cuts.push_back({planeIndex(plan.plane_z, layers[i].print_z), below});
+            cuts.push_back({planeIndex(plan.plane_z, bottomPlane(layers, i, tolerance)), below});
+        } else if (tolerance == SlicingTolerance::Inclusive) {
+            cuts.push_back({planeIndex(plan.plane_z, bottomPlane(layers, i, tolerance)), below});
         }
+        plan.layer_cuts.push_back(std::move(cuts));
     }
     return plan;
 }
@@ -124,8 +139,10 @@ std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& 
             cuts.push_back(cutter.cut(mesh, buckets.facetsAt(cut.plane), plan.plane_z[cut.plane], cut.rule,
                                       options, out.open_polylines));
         }
-        out.outlines =
-            cuts.size() == 1 ? std::move(cuts[0]) : combineCuts(cuts[0], cuts[1], options.tolerance);
+        if (cuts.size() == 1)
+            out.outlines = std::move(cuts[0]);
+        else if (cuts.size() == 2)
+            out.outlines = combineCuts(cuts[0], cuts[1], options.tolerance);
         segments += cutter.segmentCount();
         progress.layerDone();
     });

@@ -15,9 +15,13 @@
 //   - a cut at height z is taken just below z (vertices on the plane count as above it,
 //     slicing/FacetPlane.h): a plane through the top face of a body still cuts the body, a plane
 //     through its bottom face does not;
-//   - slicing_tolerance: middle cuts at LayerZ::slice_z; inclusive / exclusive cut just below the
-//     slab's top (print_z) and just above its bottom (bottom_z) and take the union / intersection,
-//     so a body standing on z = 0 is present in layer 0 in every mode;
+//   - slicing_tolerance: middle cuts at LayerZ::slice_z; inclusive / exclusive cut (just below, as
+//     every cut) at the slab's top (print_z) and its bottom (bottom_z; under layer 0 at z = 0 for
+//     inclusive, at max(0, layer_height_0 − layer_height) for exclusive) and take the union /
+//     intersection; the last layer is its bottom cut alone (inclusive) or empty (exclusive). As in
+//     CuraEngine 4.13, a body standing on z = 0 is then missing from layer 0 with exclusive (the
+//     empty bottom layer is dropped later, toolpaths/EmptyLayers.h; the empty last layer is written,
+//     where CuraEngine counts it in ;LAYER_COUNT: but writes no ;LAYER: for it);
 //   - only facets whose z-range contains a plane are cut there (slicing/FacetBuckets.h); layers are
 //     sliced in parallel (common/ParallelFor.h); the result does not depend on the thread count.
 // Errors: InputError for a mesh beyond ±1 km (the exact 64-bit interpolation's range), InternalError

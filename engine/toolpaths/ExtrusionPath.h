@@ -1,5 +1,6 @@
 #pragma once
 // The output of toolpath generation: typed extrusion lines per layer, plain data.
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -37,9 +38,15 @@ struct ExtrusionPath {
     coord_um width_um = 0;  ///< line width
     Feature feature = Feature::Fill;
     double speed_mm_s = 0;
-    double flow = 1.0;         ///< multiplier on the nominal width × thickness volume
-    int extruder = 0;          ///< extruder train that prints it
-    bool fixed_start = false;  ///< a loop whose seam is chosen (z_seam_type): print from points.front()
+    double flow = 1.0;  ///< multiplier on the nominal width × thickness volume
+    int extruder = 0;   ///< extruder train that prints it
+    /// Print from points.front(): a loop whose seam is chosen (z_seam_type), or an open line that runs
+    /// across the monotonic direction (monotonic ironing, toolpaths/Ironing.h).
+    bool fixed_start = false;
+    /// 0, or the number of a sequence: the paths of a group with the same non-zero sequence are
+    /// printed one after the other in list order once the first of them is reached (a monotonic
+    /// skin); the planner still picks which end of each line to start from.
+    std::uint32_t sequence = 0;
     /// Printed in the order of its group, not nearest first (monotonic ironing); only the end to
     /// start from is chosen. Set on every path of the group or on none.
     bool keep_order = false;

@@ -1,5 +1,6 @@
 #include "toolpaths/GroupToolpaths.h"
 
+#include <algorithm>
 #include <set>
 
 #include "common/ParallelFor.h"
@@ -158,11 +159,13 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
 
     if (!model.empty() && !raft.enabled) {
         // As CuraEngine, the brim goes around the support on layer 0 too, and around the prime tower
-        // unless the tower has a brim of its own.
+        // unless the tower has a brim of its own; around the first layer that prints when the bottom
+        // ones are empty (they are dropped below).
+        const std::size_t first = std::min(leadingEmptyLayers(result, input), model.size() - 1);
         AdhesionInput adhesion{input.global, input.extruders,
-                               unionOf(model[0], support_result.first_layer_area),
-                               pointsOf(result.support[0])};
-        const Paths tower_points = pointsOf(result.prime_tower[0]);
+                               first == 0 ? unionOf(model[0], support_result.first_layer_area) : model[first],
+                               pointsOf(result.support[first])};
+        const Paths tower_points = pointsOf(result.prime_tower[first]);
         adhesion.extras.insert(adhesion.extras.end(), tower_points.begin(), tower_points.end());
         if (prime_tower.outermost >= 0 && prime_tower.brim.empty())
             adhesion.models.push_back(primeTowerOutline(*input.global, input.extruders));

@@ -48,10 +48,29 @@ coord_um compensatedInset(const Settings& s, InfillPattern pattern, coord_um wid
     return static_cast<coord_um>(std::llround(inset));
 }
 
-/// Sorts `lines` across the direction of lines at `angle_degrees` (toolpaths/LineInfill.h).
+/// A line's projection on CuraEngine's monotonic vector (−cos a, sin a) of lines at `angle_degrees`.
+double acrossOf(const Point2& p, double angle_degrees) {
+    const double a = angle_degrees * std::numbers::pi / 180.0;
+    return -std::cos(a) * double(p.X) + std::sin(a) * double(p.Y);
+}
+
+/// Monotonic ironing: a polyline whose ends lie apart across the lines (a zigzag) starts at the end
+/// further back, as CuraEngine's monotonic order prints it, whatever end the nozzle is nearer.
+void startFurthestBack(ExtrusionPath& path, double angle_degrees, coord_um spacing_um) {
+    const double front = acrossOf(path.points.front(), angle_degrees);
+    const double back = acrossOf(path.points.back(), angle_degrees);
+    if (std::abs(front - back) <= double(spacing_um))
+        return;
+    if (back < front)
+        std::reverse(path.points.begin(), path.points.end());
+    path.fixed_start = true;
+}
+
+/// Sorts `lines` across the direction of lines at `angle_degrees` (toolpaths/LineInfill.h), along
+/// CuraEngine's monotonic vector (−cos a, sin a).
 void sortAcross(Paths& lines, double angle_degrees) {
     const double a = angle_degrees * std::numbers::pi / 180.0;
-    const double across_x = std::cos(a), across_y = -std::sin(a);
+    const double across_x = -std::cos(a), across_y = std::sin(a);
     auto key = [&](const Path& line) {
         double lowest = std::numeric_limits<double>::max();
         for (const Point2& p : line)
@@ -118,6 +137,8 @@ std::vector<ExtrusionPath> ironingPaths(const Paths& surface, const IroningParam
             continue;
         out.push_back(styledPath(line, false, Feature::Ironing, p.style));
         out.back().keep_order = p.monotonic;
+        if (p.monotonic)
+            startFurthestBack(out.back(), p.angle_degrees, p.line_spacing_um);
     }
     return out;
 }

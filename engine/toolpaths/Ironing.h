@@ -18,8 +18,11 @@
 //             speed_ironing with the first layers' slow-down (toolpaths/FeatureStyle.h), extruder
 //             top_bottom_extruder_nr; Feature Ironing (;TYPE:SKIN), printed after everything else of
 //             the mesh on the layer (toolpaths/MeshToolpaths.h);
-//   order   — ironing_monotonic: the lines are kept in order across their direction (lowest
-//             first), each printed from its end nearer the nozzle (ExtrusionPath::keep_order);
+//   order   — ironing_monotonic: the lines are kept in order across their direction, along
+//             (−cos a, sin a) as CuraEngine's monotonic order (toolpaths/MonotonicOrder.h; lowest
+//             first), each printed from its end nearer the nozzle (ExtrusionPath::keep_order) — a
+//             polyline whose ends lie more than a spacing apart across them (zigzag) from the end
+//             further back (ExtrusionPath::fixed_start);
 //             otherwise nearest first, as every other group.
 #include <vector>
 

@@ -1,6 +1,8 @@
 #include "toolpaths/MeshToolpaths.h"
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
@@ -48,20 +50,37 @@ Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
 /// The skin's reference walls and the removal widths left over (toolpaths/Skin.h).
 struct SkinReferences {
     SkinReference top, bottom;
+    int roofing_wall = -1;  ///< min(2, wall_line_count) with roofing, else −1 (none)
 };
+
+bool outerSurfacesWanted(const Settings& s) {
+    return s.has("retraction_combing") && s.text("retraction_combing") == "no_outer_surfaces";
+}
 
 SkinReferences skinReferences(const Settings& s) {
     const int walls = countOf(s, "wall_line_count");
     const coord_um w0 = s.lengthMicrons("wall_line_width_0"), wx = s.lengthMicrons("wall_line_width_x");
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
     return {skinReference(length("top_skin_preshrink"), walls, w0, wx),
-            skinReference(length("bottom_skin_preshrink"), walls, w0, wx)};
+            skinReference(length("bottom_skin_preshrink"), walls, w0, wx),
+            countOf(s, "roofing_layer_count") > 0 || outerSurfacesWanted(s) ? std::min(2, walls) : -1};
+}
+
+bool flag(const Settings& s, std::string_view key) {
+    return s.has(key) && s.boolean(key);
+}
+
+/// fill_perimeter_gaps (not in spiralize mode).
+bool fillsPerimeterGaps(const Settings& s) {
+    return !(s.has("fill_perimeter_gaps") && s.text("fill_perimeter_gaps") == "nowhere") &&
+           !flag(s, "magic_spiralize");
 }
 
 WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
     WallParams p;
     p.top_reference = refs.top.wall;
     p.bottom_reference = refs.bottom.wall;
+    p.roofing_reference = refs.roofing_wall;
     p.wall_count = countOf(s, "wall_line_count");
     if (layer % 2 == 1 && s.has("alternate_extra_perimeter") && s.boolean("alternate_extra_perimeter"))
         ++p.wall_count;  // one wall more on every other layer
@@ -74,6 +93,10 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.inner_flow = styles.wall_x.flow;
     p.outer_extruder = styles.wall_0.extruder;
     p.inner_extruder = styles.wall_x.extruder;
+    p.group_by_outline = flag(s, "optimize_wall_printing_order");
+    p.perimeter_gaps = fillsPerimeterGaps(s);
+    p.filter_tiny_gaps = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
+    p.outer_first = outerWallFirst(s, layer);
     return p;
 }
 
@@ -90,21 +113,41 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     p.min_width_for_expansion_um = length("min_skin_width_for_expansion");
     p.roofing_layers = countOf(s, "roofing_layer_count");
     p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
+    p.outer_surfaces = outerSurfacesWanted(s);
+    p.infill_opening_um = s.has("infill_line_width") ? s.lengthMicrons("infill_line_width") : 0;
     return p;
 }
 
-SkinFillParams skinFill(const Settings& s, int layer, coord_um z, const FeatureStyle& style, bool roofing) {
-    SkinFillParams p;
+/// The lines half a wall line wide that fill the gaps of concentric skin (fill_perimeter_gaps), in
+/// CuraEngine's perimeter-gap style: skin speed, inner-wall flow.
+std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
+    if (!fillsPerimeterGaps(s))
+        return std::nullopt;
+    FeatureStyle style = featureStyle(
+        s, {"wall_line_width_0", "speed_topbottom", "wall_x_material_flow", "top_bottom_extruder_nr"}, layer);
+    style.width_um = s.lengthMicrons("wall_line_width_0") / 2;
+    return style;
+}
+
+SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const MeshStyles& styles) {
+    SkinPathParams p;
     p.outline_count = countOf(s, "skin_outline_count");
-    const char* pattern_key = roofing && s.has("roofing_pattern") ? "roofing_pattern"
-                              : layer == 0                        ? "top_bottom_pattern_0"
-                                                                  : "top_bottom_pattern";
-    p.pattern = infillPatternOf(s.text(pattern_key), pattern_key);
-    const double skin_angle = angleFor(s, "skin_angles", layer, {45, 135});
-    p.angle_degrees = roofing ? angleFor(s, "roofing_angles", layer, {skin_angle}) : skin_angle;
-    p.overlap_um = s.has("skin_overlap_mm") ? s.lengthMicrons("skin_overlap_mm") : 0;
     p.z_um = z;
-    p.style = style;
+    p.first_layer = layer == 0;
+    const char* pattern_key = layer == 0 ? "top_bottom_pattern_0" : "top_bottom_pattern";
+    p.skin.pattern = infillPatternOf(s.text(pattern_key), pattern_key);
+    p.skin.angle_degrees = angleFor(s, "skin_angles", layer, {45, 135});
+    p.skin.overlap_um = s.has("skin_overlap_mm") ? s.lengthMicrons("skin_overlap_mm") : 0;
+    p.skin.style = styles.skin;
+    p.skin.monotonic = flag(s, "skin_monotonic");
+    p.roofing.pattern = s.has("roofing_pattern")
+                            ? infillPatternOf(s.text("roofing_pattern"), "roofing_pattern")
+                            : p.skin.pattern;
+    p.roofing.angle_degrees = angleFor(s, "roofing_angles", layer, {45, 135});
+    p.roofing.style = styles.roofing;
+    p.roofing.monotonic = flag(s, "roofing_monotonic");
+    p.gap_style = gapStyle(s, layer);
+    p.gap_angle_degrees = p.roofing.angle_degrees;  // as CuraEngine: perimeter gaps at the roofing angles
     return p;
 }
 
@@ -114,6 +157,63 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     const coord_um xy = length(layer == 0 ? "xy_offset_layer_0" : "xy_offset");
     const coord_um hole = length("hole_xy_offset");
     return xy == 0 && hole == 0 ? outlines : offsetOutlines(outlines, xy, hole);
+}
+
+/// As CuraEngine 4.13: the gaps between the walls, and between the innermost wall and the skin and
+/// infill — the latter unless there is no infill, its overlap is negative, or concentric infill
+/// would not line up with the walls (alternate_extra_perimeter, a wider first layer).
+Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const SkinAreas& areas,
+                    const Settings& s, int layer) {
+    const bool concentric = s.has("infill_pattern") && s.text("infill_pattern") == "concentric";
+    const bool wider_first = layer == 0 && s.has("initial_layer_line_width_factor") &&
+                             s.ratio("initial_layer_line_width_factor") > 1.0;
+    const bool inner_gaps = s.lengthMicrons("infill_line_distance") > 0 &&
+                            (!s.has("infill_overlap_mm") || s.lengthMicrons("infill_overlap_mm") >= 0) &&
+                            !(concentric && (flag(s, "alternate_extra_perimeter") || wider_first));
+    if (!inner_gaps || inner_area.empty())
+        return between_walls;
+    Paths gaps = differenceOf(offsetMiter(inner_area, -15), unionOf(areas.skin, areas.infill));
+    if (!s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps")) {
+        const double width = double(s.lengthMicrons("infill_line_width"));
+        gaps = removeSmallIslands(gaps, 2 * width * width);
+    }
+    return unionOf(between_walls, gaps);
+}
+
+/// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "all" and "off").
+std::optional<Paths> combAreaFor(const Paths& outlines, const SkinAreas& areas, const Settings& s) {
+    const std::string mode = s.has("retraction_combing") ? s.text("retraction_combing") : "all";
+    if (mode == "noskin")
+        return differenceOf(outlines, areas.skin);
+    if (mode == "no_outer_surfaces")
+        return differenceOf(outlines, areas.outer_surfaces);
+    if (mode == "infill")
+        return areas.infill;
+    return std::nullopt;
+}
+
+/// magic_mesh_surface_mode "surface" (as CuraEngine 4.13): every loop of the outline, and every open
+/// piece of an unclosed mesh, printed once along itself as outer wall; no other walls, skin or infill.
+std::vector<MeshLayerGroups> surfaceToolpaths(const std::vector<SlicedLayer>& layers,
+                                              const Settings& settings, const SeamParams& seam, int threads) {
+    std::vector<MeshLayerGroups> result(layers.size());
+    parallelFor(layers.size(), threads, [&](std::size_t i) {
+        const int layer = static_cast<int>(i);
+        const FeatureStyle style = meshStyles(settings, layer).wall_0;
+        std::vector<ExtrusionPath>& walls = result[i].outer_walls;
+        appendStyledLoops(adjustedOutlines(layers[i].outlines, settings, layer), Feature::WallOuter, style,
+                          walls);
+        placeSeams(walls, seam, layer);
+        for (const Path& piece : layers[i].open_polylines) {
+            if (piece.size() >= 2)
+                walls.push_back(styledPath(piece, false, Feature::WallOuter, style));
+        }
+    });
+    return result;
+}
+
+bool surfaceOnly(const Settings& s) {
+    return s.has("magic_mesh_surface_mode") && s.text("magic_mesh_surface_mode") == "surface";
 }
 
 /// The mesh's highest layer with an outline (−1: none).
@@ -141,14 +241,22 @@ std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const
 
 }  // namespace
 
+bool outerWallFirst(const Settings& s, int layer) {
+    return flag(s, "outer_inset_first") ||
+           (layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim");
+}
+
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
                                                    const Settings& settings, int threads,
                                                    const std::optional<Point2>& mesh_middle_um) {
     std::vector<MeshLayerGroups> result(layers.size());
-    std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size());
+    std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size()),
+        roofing_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
-    std::vector<Paths> inner_areas(layers.size());
+    std::vector<Paths> inner_areas(layers.size()), wall_gaps(layers.size());
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
+    if (surfaceOnly(settings))
+        return surfaceToolpaths(layers, settings, seam, threads);
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         WallResult walls = generateWalls(adjustedOutlines(layers[i].outlines, settings, layer),
@@ -161,10 +269,13 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         inner_areas[i] = std::move(walls.inner_area);
         top_reference[i] = std::move(walls.top_reference);
         bottom_reference[i] = std::move(walls.bottom_reference);
+        roofing_reference[i] = std::move(walls.roofing_reference);
+        wall_gaps[i] = std::move(walls.perimeter_gaps);
     });
 
-    const std::vector<SkinAreas> areas =
-        computeSkinAreas(top_reference, bottom_reference, inner_areas, skinParams(settings, refs), threads);
+    const std::vector<SkinAreas> areas = computeSkinAreas(
+        {&top_reference, &bottom_reference, refs.roofing_wall >= 0 ? &roofing_reference : nullptr},
+        inner_areas, skinParams(settings, refs), threads);
     std::vector<Paths> infill_areas(layers.size());
     for (std::size_t i = 0; i < layers.size(); ++i)
         infill_areas[i] = areas[i].infill;
@@ -176,10 +287,14 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         const int layer = static_cast<int>(i);
         const coord_um z = layers[i].print_z;
         const MeshStyles styles = meshStyles(settings, layer);
-        result[i].skin = generateSkinPaths(areas[i].skin, skinFill(settings, layer, z, styles.skin, false));
-        for (ExtrusionPath& path :
-             generateSkinPaths(areas[i].roofing, skinFill(settings, layer, z, styles.roofing, true)))
-            result[i].skin.push_back(std::move(path));
+        const SkinPathParams skin_params = skinPathParams(settings, layer, z, styles);
+        result[i].skin = generateSkinPaths(areas[i].skin, areas[i].roofing, skin_params);
+        if (fillsPerimeterGaps(settings)) {
+            for (ExtrusionPath& line : perimeterGapLines(
+                     perimeterGaps(wall_gaps[i], inner_areas[i], areas[i], settings, layer), skin_params))
+                result[i].skin.push_back(std::move(line));
+        }
+        result[i].comb_area = combAreaFor(layers[i].outlines, areas[i], settings);
         InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
         const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;

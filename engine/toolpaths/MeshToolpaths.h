@@ -2,17 +2,22 @@
 // Toolpaths of one mesh on every layer: walls (toolpaths/Walls.h, seams by toolpaths/Seam.h),
 // top/bottom skin and roofing (toolpaths/Skin.h) and sparse infill (toolpaths/InfillPatterns.h),
 // from the mesh's outlines and its resolved settings (Cura's keys and meanings):
-//   walls   — wall_line_count, wall_line_width_0/_x, wall_0_inset, z_seam_*;
-//   skin    — top_layers, bottom_layers, initial_bottom_layers, skin removal / expansion widths,
-//             skin_outline_count loops of skin_line_width, then lines (top_bottom_pattern, on layer
-//             0 top_bottom_pattern_0) at skin_angles[layer % n] (default 45°, 135°) reaching
-//             skin_overlap_mm beyond the skin area; roofing (roofing_layer_count) likewise with the
-//             roofing_* keys;
+//   walls   — wall_line_count, wall_line_width_0/_x, wall_0_inset, z_seam_*; with
+//             optimize_wall_printing_order each outline's loops are one sequence (toolpaths/Walls.h);
+//   skin    — top_layers, bottom_layers, initial_bottom_layers, skin removal / expansion widths;
+//             per skin part skin_outline_count loops of skin_line_width, inside them the roofing
+//             (roofing_layer_count: roofing_pattern at roofing_angles[layer % n], default 45°,
+//             135°, roofing_monotonic) and the skin (top_bottom_pattern, on layer 0
+//             top_bottom_pattern_0, at skin_angles[layer % n], default 45°, 135°, reaching
+//             skin_overlap_mm beyond its area, skin_monotonic), and with fill_perimeter_gaps the
+//             gaps of concentric skin (toolpaths/SkinPaths.h);
 //   infill  — the infill area arranged by toolpaths/InfillLayers.h (infill as support, gradual
 //             infill, combined layers) and printed by toolpaths/MeshInfill.h (infill_pattern at
 //             infill_line_distance, its origin at the mesh's middle moved by infill_offset_x/_y);
 //             none when infill_line_distance is 0;
 //   ironing — with ironing_enabled, the layer's top surface (toolpaths/Ironing.h), last.
+// With magic_mesh_surface_mode "surface" the outlines (and open pieces) are printed once along
+// themselves as outer wall, and nothing else.
 // Widths, speeds, flows and extruders per feature and layer: toolpaths/FeatureStyle.h.
 // Layers are processed in parallel (common/ParallelFor.h); the result does not depend on `threads`.
 #include <optional>
@@ -31,10 +36,18 @@ struct MeshLayerGroups {
     std::vector<ExtrusionPath> outer_walls;
     std::vector<ExtrusionPath> skin;
     std::vector<ExtrusionPath> infill;
+    /// Where travel may comb on this layer for the mesh's retraction_combing mode; none = its
+    /// sliced outlines ("all", "off"). noskin: the outlines less the skin; no_outer_surfaces: less
+    /// the skin with air directly above or below; infill: the infill area.
+    std::optional<Paths> comb_area;
     std::vector<ExtrusionPath> ironing;
     /// infill_randomize_start_location: planning starts the infill nearest this point.
     std::optional<Point2> infill_start;
 };
+
+/// Whether the outer walls go before the inner ones on `layer`: outer_inset_first, and (as
+/// CuraEngine 4.13) always on layer 0 with a brim.
+bool outerWallFirst(const Settings& s, int layer);
 
 /// `mesh_middle_um`: the middle of the mesh's bounding box in x and y (CuraEngine's infill origin);
 /// without it, the middle of the bounds of all its outlines.

@@ -14,7 +14,7 @@ Paths offsetOutlines(const Paths& outlines, coord_um xy_offset_um, coord_um hole
             outer.push_back(loop);
         } else {
             Path as_area(loop.rbegin(), loop.rend());  // the hole as an area of its own
-            for (const Path& grown : offsetPolygons({as_area}, hole_offset_um))
+            for (const Path& grown : offsetMiter({as_area}, hole_offset_um))  // CuraEngine: mitred
                 holes.push_back(grown);
         }
     }

@@ -1,8 +1,9 @@
 #pragma once
 // The outline adjustments CuraEngine 4.13 makes before walls are planned:
 //   xy_offset (xy_offset_layer_0 on layer 0) grows (positive) or shrinks the whole outline with
-//   round joins; hole_xy_offset then grows (positive) or shrinks every hole on its own, as Cura
-//   describes it (the print still differs from CuraEngine's: listed in not_honoured.json).
+//   round joins; hole_xy_offset then grows (positive) or shrinks every hole on its own, with mitred
+//   joins (CuraEngine's default offset). A hole grown this way can leave a band too narrow for
+//   infill between the walls: that becomes a perimeter gap (toolpaths/MeshToolpaths.h).
 #include "geometry/Point.h"
 
 namespace mixengine {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <numbers>
 
 #include "common/Error.h"
 
@@ -109,6 +111,58 @@ std::size_t sharpestCorner(const Path& loop, const SeamParams& params) {
     return chosen;
 }
 
+/// CuraEngine 4.13's corner measure at vertex i from its two neighbours: the angle on the material's
+/// side over pi, 0 … 2 (above 1 = a concave corner).
+double leftAngleRatio(const Path& loop, std::size_t i) {
+    const std::size_t n = loop.size();
+    const Point2& a = loop[(i + n - 1) % n];
+    const Point2& b = loop[i];
+    const Point2& c = loop[(i + 1) % n];
+    const double ux = double(b.X - a.X), uy = double(b.Y - a.Y);
+    const double vx = double(c.X - b.X), vy = double(c.Y - b.Y);
+    if ((ux == 0 && uy == 0) || (vx == 0 && vy == 0))
+        return 1.0;
+    return 1.0 - std::atan2(ux * vy - uy * vx, ux * vx + uy * vy) / std::numbers::pi;
+}
+
+/// How much a corner of `angle_ratio` (leftAngleRatio) is preferred, in units of the corner shift.
+double cornerPull(double angle_ratio, SeamCorner corner) {
+    const double bend = angle_ratio - 1.0;  // > 0 concave, < 0 convex
+    switch (corner) {
+        case SeamCorner::Inner:
+            return std::max(0.0, bend);
+        case SeamCorner::Outer:
+            return std::max(0.0, -bend);
+        case SeamCorner::Any:
+            return std::fabs(bend);
+        case SeamCorner::Weighted:
+            return bend > 0 ? 2 * bend : -bend;
+        case SeamCorner::None:
+            break;
+    }
+    return 0.0;
+}
+
+bool moreBack(const Point2& a, const Point2& b);
+
+/// The user-specified seam as CuraEngine 4.13 scores it: the squared distance to the seam point,
+/// lessened by a tenth of itself times the corner pull; scores within 25 µm² tie, and ties go to
+/// the back-most vertex.
+std::size_t nearestWithCorners(const Path& loop, const Point2& target, SeamCorner corner) {
+    constexpr double kEpsilonUm2 = 25;
+    std::size_t chosen = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        const double d = distanceUm(loop[i], target);
+        const double score = d * d - cornerPull(leftAngleRatio(loop, i), corner) * d * d / 10;
+        if (score < best - kEpsilonUm2 || (score <= best + kEpsilonUm2 && moreBack(loop[i], loop[chosen]))) {
+            chosen = i;
+            best = std::min(best, score);
+        }
+    }
+    return chosen;
+}
+
 std::size_t nearestTo(const Path& loop, const Point2& target) {
     std::size_t chosen = 0;
     double best = distanceUm(loop[0], target);
@@ -142,7 +196,7 @@ std::size_t seamVertex(const Path& loop, const SeamParams& params, std::uint64_t
         return 0;
     switch (params.type) {
         case SeamType::Back:
-            return nearestTo(loop, params.position_um);
+            return nearestWithCorners(loop, params.position_um, params.corner);
         case SeamType::Random:
             return static_cast<std::size_t>(mix(seed) % loop.size());
         case SeamType::SharpestCorner:

@@ -1,8 +1,12 @@
 #pragma once
 // Where wall loops start (Cura's z_seam_type, z_seam_x/y, z_seam_relative, z_seam_corner).
 //
-//   back            — the vertex nearest to (z_seam_x, z_seam_y); with z_seam_relative the point is
-//                     taken relative to the centre of the mesh's bounding box;
+//   back            — the vertex nearest to (z_seam_x, z_seam_y), corners of the preferred kind
+//                     (z_seam_corner) drawing it as CuraEngine 4.13 does: a vertex's squared
+//                     distance is lessened by a tenth of itself times how much its corner (measured
+//                     from its two neighbours) bends the preferred way — twice for concave corners
+//                     with "weighted"; with z_seam_relative the point is taken relative to the centre
+//                     of the mesh's bounding box;
 //   sharpest_corner — the sharpest corner of the preferred kind (z_seam_corner: inner = concave,
 //                     outer = convex, any, weighted = concave first); the turn at a vertex is
 //                     measured between points `corner_lookaround_um` before and after it, so a

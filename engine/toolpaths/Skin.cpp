@@ -34,6 +34,18 @@ Paths prefixIntersection(const std::vector<Paths>& present, int i) {
     return result;
 }
 
+/// The skin of layer i with air directly above or below it (SkinAreas::outer_surfaces).
+Paths outerSurfaces(const Paths& skin, const std::vector<Paths>& reference, std::size_t i) {
+    if (skin.empty())
+        return {};
+    Paths above = i + 1 < reference.size() ? reference[i + 1] : Paths{};
+    if (i > 0)
+        above = unionOf(above, differenceOf(reference[i], reference[i - 1]));
+    const Paths top_most = differenceOf(skin, above);
+    const Paths bottom_most = i > 0 ? differenceOf(skin, reference[i - 1]) : skin;
+    return unionOf(top_most, bottom_most);
+}
+
 }  // namespace
 
 SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_width, coord_um inner_width) {
@@ -51,14 +63,17 @@ SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_w
     return ref;
 }
 
-std::vector<SkinAreas> computeSkinAreas(const std::vector<Paths>& top_reference,
-                                        const std::vector<Paths>& bottom_reference,
+std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                                         const std::vector<Paths>& inner_areas, const SkinParams& p,
                                         int threads) {
+    const std::vector<Paths>& top_reference = *references.top;
+    const std::vector<Paths>& bottom_reference = *references.bottom;
+    const std::vector<Paths>& roof_reference = references.roofing ? *references.roofing : top_reference;
     const int n = static_cast<int>(top_reference.size());
+    const int roofing_layers = std::min(p.roofing_layers, p.top_layers);
     const std::vector<Paths> above = windowIntersections(top_reference, p.top_layers, threads);
     const std::vector<Paths> below = windowIntersections(bottom_reference, p.bottom_layers, threads);
-    const std::vector<Paths> roof_above = windowIntersections(top_reference, p.roofing_layers, threads);
+    const std::vector<Paths> roof_above = windowIntersections(roof_reference, roofing_layers, threads);
     std::vector<SkinAreas> result(inner_areas.size());
     parallelFor(inner_areas.size(), threads, [&](std::size_t index) {
         const int i = static_cast<int>(index);
@@ -82,15 +97,18 @@ std::vector<SkinAreas> computeSkinAreas(const std::vector<Paths>& top_reference,
                          p.min_width_for_expansion_um, inner);
         SkinAreas& out = result[index];
         out.skin = removeSmallIslands(unionOf(top, bottom), kMinSkinAreaUm2);
-        out.infill = removeSmallIslands(differenceOf(inner, out.skin),
-                                        std::max(kMinSkinAreaUm2, p.min_infill_area_um2));
-        if (p.roofing_layers > 0 && !out.skin.empty()) {
-            Paths covered = i + p.roofing_layers < n ? roof_above[index + 1] : Paths{};
+        Paths infill = differenceOf(inner, out.skin);
+        if (p.infill_opening_um > 0)
+            infill = openPolygons(infill, p.infill_opening_um / 2);
+        out.infill = removeSmallIslands(infill, std::max(kMinSkinAreaUm2, p.min_infill_area_um2));
+        if (roofing_layers > 0 && !out.skin.empty()) {
+            Paths covered = i + roofing_layers < n ? roof_above[index + 1] : Paths{};
             if (i > 0)
-                covered = unionOf(covered, differenceOf(top_reference[index], top_reference[index - 1]));
+                covered = unionOf(covered, differenceOf(roof_reference[index], roof_reference[index - 1]));
             out.roofing = differenceOf(out.skin, covered);
-            out.skin = intersectAll(out.skin, covered);
         }
+        if (p.outer_surfaces)
+            out.outer_surfaces = outerSurfaces(out.skin, roof_reference, index);
     });
     return result;
 }

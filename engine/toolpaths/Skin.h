@@ -10,9 +10,13 @@
 // each skin then loses its parts narrower than what is left of the removal width, is
 // grown by the expand distance (top/bottom_skin_expand_distance; only the parts at least
 // min_skin_width_for_expansion wide when that is set) and clipped to inner_area[i]. The union is
-// the skin; pieces under 0.16 mm² are dropped. The infill area is inner_area[i] minus the skin
-// (pieces under 0.16 mm² and under min_infill_area dropped). With roofing_layer_count > 0, the part
-// of the skin with air within roofing_layer_count layers above (or air directly below) is roofing.
+// the skin; pieces under 0.16 mm² are dropped. The infill area is inner_area[i] minus the skin,
+// less its parts narrower than infill_line_width (pieces under 0.16 mm² and under min_infill_area
+// dropped). With roofing_layer_count > 0 (at most
+// top_layers), the part of the skin with air within roofing_layer_count layers above is roofing, as
+// CuraEngine 4.13 finds it: "no air above" is the roofing reference region (the centre region of
+// wall min(2, wall count)) of every layer up to roofing_layer_count above, plus where that region
+// has nothing of it on the layer below (air below: such skin stays skin).
 //
 // The "present in every layer of a window" intersections come from toolpaths/LayerWindows.h.
 #include <vector>
@@ -42,18 +46,33 @@ struct SkinParams {
     coord_um min_width_for_expansion_um = 0;
     int roofing_layers = 0;
     double min_infill_area_um2 = 0;
+    /// Also find the outer surfaces (SkinAreas::outer_surfaces), against the roofing reference.
+    bool outer_surfaces = false;
+    /// As CuraEngine: the infill area loses what is narrower than this (infill_line_width).
+    coord_um infill_opening_um = 0;
 };
 
 struct SkinAreas {
-    Paths skin;     ///< solid area (roofing excluded)
-    Paths roofing;  ///< solid area exposed at the top (empty unless roofing_layers > 0)
-    Paths infill;   ///< sparse infill area
+    Paths skin;  ///< solid area, roofing included (its loops run around both, as CuraEngine's skin parts)
+    /// The part of `skin` with air above, to be printed as roofing inside the skin's loops (empty
+    /// unless roofing_layers > 0); the rest of the skin is printed as skin.
+    Paths roofing;
+    Paths infill;  ///< sparse infill area
+    /// With SkinParams::outer_surfaces, the skin with air directly above (as roofing with one
+    /// layer) or directly below (nothing of the roofing reference on the layer below; all of it on
+    /// layer 0): CuraEngine's top- and bottom-most surfaces.
+    Paths outer_surfaces;
 };
 
-/// Per layer i: `top_reference[i]` / `bottom_reference[i]` the reference regions (see above),
-/// `inner_areas[i]` the area inside the innermost walls. Roofing compares with top_reference.
-std::vector<SkinAreas> computeSkinAreas(const std::vector<Paths>& top_reference,
-                                        const std::vector<Paths>& bottom_reference,
+/// The regions each layer's skin is compared with (see above), index = layer.
+struct SkinReferenceRegions {
+    const std::vector<Paths>* top = nullptr;
+    const std::vector<Paths>* bottom = nullptr;
+    const std::vector<Paths>* roofing = nullptr;  ///< nullptr: the top reference
+};
+
+/// Per layer i: the reference regions, and `inner_areas[i]` the area inside the innermost walls.
+std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                                         const std::vector<Paths>& inner_areas, const SkinParams& params,
                                         int threads);
 

@@ -4,6 +4,7 @@
 
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/PolygonOps.h"
+#include "toolpaths/WallOrder.h"
 
 namespace mixengine {
 namespace {
@@ -26,6 +27,62 @@ Paths referenceRegion(const Paths& outlines, const std::vector<Paths>& regions,
     return unionOf(regions[last], differenceOf(regions[0], offsetMiter(regions[last], depths[last] + 10)));
 }
 
+FeatureStyle levelStyle(const WallParams& p, std::size_t level) {
+    return level == 0 ? FeatureStyle{p.outer_width_um, p.outer_speed_mm_s, p.outer_flow, p.outer_extruder}
+                      : FeatureStyle{p.inner_width_um, p.inner_speed_mm_s, p.inner_flow, p.inner_extruder};
+}
+
+/// The loops of every level as paths: level by level, or grouped by outline (WallParams).
+std::vector<ExtrusionPath> wallPaths(const std::vector<Paths>& levels, const std::vector<coord_um>& depths,
+                                     const WallParams& p) {
+    std::vector<ExtrusionPath> out;
+    if (levels.empty())
+        return out;
+    if (!p.group_by_outline) {
+        for (std::size_t k = 0; k < levels.size(); ++k)
+            appendStyledLoops(levels[k], k == 0 ? Feature::WallOuter : Feature::WallInner, levelStyle(p, k),
+                              out);
+        return out;
+    }
+    std::vector<coord_um> steps(depths.size(), 0);
+    for (std::size_t k = 1; k < depths.size(); ++k)
+        steps[k] = depths[k] - depths[k - 1];
+    const std::vector<std::vector<std::size_t>> families = wallFamilies(levels, steps);
+    auto appendLevel = [&](std::size_t k) {
+        for (std::size_t i = 0; i < levels[k].size(); ++i) {
+            if (levels[k][i].size() < 3)
+                continue;
+            out.push_back(styledPath(levels[k][i], true, k == 0 ? Feature::WallOuter : Feature::WallInner,
+                                     levelStyle(p, k)));
+            out.back().sequence = static_cast<std::uint32_t>(families[k][i] + 1);
+        }
+    };
+    appendLevel(0);
+    for (std::size_t n = 1; n < levels.size(); ++n)
+        appendLevel(p.outer_first ? n : levels.size() - n);
+    return out;
+}
+
+/// The gaps between consecutive walls (WallResult::perimeter_gaps); inside the innermost wall too
+/// when no part has all its walls (nothing else fills it then).
+Paths gapsBetweenWalls(const std::vector<Paths>& levels, const WallParams& p) {
+    constexpr coord_um kSlackUm = 15;  // CuraEngine's: no gaps everywhere from rounding
+    const bool walls_missing = static_cast<int>(levels.size()) < p.wall_count;
+    Paths gaps;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        const bool last = k + 1 == levels.size();
+        if (last && !walls_missing)
+            break;  // inside the innermost wall: skin and infill, and their gaps (MeshToolpaths)
+        const coord_um width = k == 0 ? p.outer_width_um : p.inner_width_um;
+        const Paths outer = offsetMiter(levels[k], -width / 2 - kSlackUm);
+        gaps = unionOf(gaps,
+                       last ? outer : differenceOf(outer, offsetMiter(levels[k + 1], p.inner_width_um / 2)));
+    }
+    if (p.filter_tiny_gaps)
+        gaps = removeSmallIslands(gaps, 2.0 * double(p.outer_width_um) * double(p.outer_width_um));
+    return gaps;
+}
+
 }  // namespace
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params) {
@@ -33,16 +90,14 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     if (params.wall_count <= 0) {
         result.inner_area = outlines;
         result.top_reference = result.bottom_reference = outlines;
+        if (params.roofing_reference >= 0)
+            result.roofing_reference = outlines;
         return result;
     }
     std::vector<Paths> regions;    // centre region of each wall that exists somewhere
     std::vector<coord_um> depths;  // its distance inside the outer wall's centre line
     Paths region = wallRegion(offsetMiter(outlines, -(params.outer_width_um / 2 + params.outer_inset_um)),
                               params.outer_width_um);
-    appendStyledLoops(
-        region, Feature::WallOuter,
-        {params.outer_width_um, params.outer_speed_mm_s, params.outer_flow, params.outer_extruder},
-        result.walls);
     if (!region.empty()) {
         regions.push_back(region);
         depths.push_back(0);
@@ -52,10 +107,6 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     coord_um last_half = params.outer_width_um / 2;
     for (int i = 1; i < params.wall_count && !region.empty(); ++i) {
         region = wallRegion(offsetMiter(region, -step), params.inner_width_um);
-        appendStyledLoops(
-            region, Feature::WallInner,
-            {params.inner_width_um, params.inner_speed_mm_s, params.inner_flow, params.inner_extruder},
-            result.walls);
         if (!region.empty()) {
             depths.push_back(depths.back() + step);
             regions.push_back(region);
@@ -63,11 +114,16 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
         step = params.inner_width_um;
         last_half = params.inner_width_um / 2;
     }
+    result.walls = wallPaths(regions, depths, params);
+    if (params.perimeter_gaps)
+        result.perimeter_gaps = gapsBetweenWalls(regions, params);
     result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half);
     result.top_reference = referenceRegion(outlines, regions, depths, params.top_reference);
     result.bottom_reference = params.bottom_reference == params.top_reference
                                   ? result.top_reference
                                   : referenceRegion(outlines, regions, depths, params.bottom_reference);
+    if (params.roofing_reference >= 0)
+        result.roofing_reference = referenceRegion(outlines, regions, depths, params.roofing_reference);
     return result;
 }
 

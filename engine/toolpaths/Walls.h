@@ -30,14 +30,32 @@ struct WallParams {
     /// outline, k = the centre region of wall k (1 = outer wall).
     int top_reference = 2;
     int bottom_reference = 2;
+    /// The region roofing compares with (CuraEngine's min(2, wall count)); −1 = not wanted.
+    int roofing_reference = -1;
+    /// optimize_wall_printing_order: the loops of each outline (part outline or hole) form one
+    /// sequence (ExtrusionPath::sequence, toolpaths/WallOrder.h), its inner loops listed from the
+    /// innermost out — or from the outermost in with `outer_first` (outer_inset_first).
+    bool group_by_outline = false;
+    bool outer_first = false;
+    /// fill_perimeter_gaps: find the gaps between consecutive walls (WallResult::perimeter_gaps),
+    /// less the pieces under 2 outer wall widths squared with `filter_tiny_gaps`.
+    bool perimeter_gaps = false;
+    bool filter_tiny_gaps = true;
 };
 
 struct WallResult {
-    std::vector<ExtrusionPath> walls;  ///< outer walls first, then the inner ones, wall by wall
-    Paths inner_area;                  ///< the area inside the innermost wall (its inner edge)
+    /// Outer walls first, then the inner ones, wall by wall (with group_by_outline the inner ones
+    /// from the innermost wall out, unless outer_first).
+    std::vector<ExtrusionPath> walls;
+    Paths inner_area;  ///< the area inside the innermost wall (its inner edge)
     /// The reference regions asked for in WallParams; a part with fewer walls than the reference
     /// uses its innermost wall's region (as CuraEngine 4.13 takes insets[min(k, count) − 1]).
     Paths top_reference, bottom_reference;
+    Paths roofing_reference;  ///< empty when WallParams::roofing_reference is −1
+    /// As CuraEngine 4.13 finds them: wall k's centre region less half its width and 15 µm, less
+    /// wall k+1's centre region grown by half its width — where a part lacks wall k+1, all of its
+    /// inside (WallParams::perimeter_gaps).
+    Paths perimeter_gaps;
 };
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params);

@@ -2,13 +2,14 @@
 
 check_gcode(path) returns a GcodeCheck:
   layer_count   the value of ;LAYER_COUNT: (None when absent)
-  layers        the number of ;LAYER:n comment lines
+  layers        the number of ;LAYER:n comment lines of the model (n >= 0; raft layers, negative, are not
+                counted in ;LAYER_COUNT:, as CuraEngine writes it)
   problems      a list of readable defects, empty for a valid file:
                 - gcodeparser (an independent parser, PyPI) fails on the file, or reads a motion value
                   (G0/G1/G2/G3/G92) that is not a finite number (it reads "Xnan" as a flag, "X1e400" as
                   two words);
                 - a motion line, as written, holds a word that is not a letter and a plain decimal number;
-                - the number of ;LAYER: lines differs from ;LAYER_COUNT:, or ;LAYER_COUNT: is missing.
+                - the number of model ;LAYER: lines differs from ;LAYER_COUNT:, or ;LAYER_COUNT: is missing.
 gcodeparser is pure Python (about 40k lines a second), so it reads the first GCODEPARSER_BYTES of the
 file; the written-word check and the layer count cover the whole file with compiled regular expressions.
 """
@@ -20,7 +21,7 @@ GCODEPARSER_BYTES = 4 << 20
 MOTION = {("G", 0), ("G", 1), ("G", 2), ("G", 3), ("G", 92)}
 MOTION_LINE = re.compile(r"^(?:G[0-3]|G92)(?=[ \t;]|$)[^;\n]*", re.M)
 GOOD_MOTION = re.compile(r"G\d+(?:[ \t]+[A-Z][-+]?(?:\d+\.?\d*|\.\d+))*[ \t]*")
-LAYER_LINE = re.compile(r"^;LAYER:-?\d+[ \t]*$", re.M)
+LAYER_LINE = re.compile(r"^;LAYER:\d+[ \t]*$", re.M)  # model layers only: raft layers are negative
 LAYER_COUNT = re.compile(r"^;LAYER_COUNT:(-?\d+)", re.M)
 MAX_LISTED = 5
 
@@ -63,5 +64,5 @@ def check_gcode(path):
     if result.layer_count is None:
         result.problems.append("no ;LAYER_COUNT: line")
     elif result.layer_count != result.layers:
-        result.problems.append(f";LAYER_COUNT:{result.layer_count} but {result.layers} ;LAYER: lines")
+        result.problems.append(f";LAYER_COUNT:{result.layer_count} but {result.layers} model ;LAYER: lines")
     return result

@@ -124,6 +124,37 @@ TEST(GCodeExport, RetractionHopLiftsAndLowers) {
     EXPECT_LT(prime, extrude) << t;
 }
 
+TEST(GCodeExport, ExtraPrimeAfterEachRetractionButNotAfterASwitch) {
+    ExportParams p = marlin175();
+    p.retraction_extra_prime_mm3 = 1.0;  // 0.415752 mm of 1.75 mm filament
+    GCodeExport g(p);
+    g.extrude({10'000, 0}, 1.0, 30);
+    g.retract();
+    g.travel({0, 0}, 150);
+    g.extrude({10'000, 0}, 1.0, 30);  // primes 6.5 mm back plus the extra 1 mm³ in one move, as CuraEngine
+    EXPECT_EQ(g.text(),
+              "G1 F1800 X10 Y0 E0.41575\n"
+              "G1 F1500 E-6.08425\n"
+              "G0 F9000 X0 Y0\n"
+              "G1 F1500 E0.8315\n"
+              "G1 F1800 X10 Y0 E1.24726\n");
+    EXPECT_NEAR(g.totalExtruded(), 3.0 / (std::numbers::pi * 0.875 * 0.875), 1e-12);  // the extra counts
+    ToolChange change;
+    change.extruder = 1;
+    change.filament_diameter_mm = 1.75;
+    g.selectExtruder(change);  // the switch retraction is the planner's; a switch primes nothing extra
+    const std::size_t before = g.text().size();
+    g.extrude({0, 0}, 1.0, 30);
+    EXPECT_EQ(g.text().substr(before), "G1 X0 Y0 E0.41575\n");  // no prime, extra or not
+}
+
+TEST(GCodeExport, DwellInMillisecondsCountsInTheTime) {
+    GCodeExport g(marlin175());
+    g.dwell(1.25);
+    EXPECT_EQ(g.text(), "G4 P1250\n");
+    EXPECT_NEAR(g.elapsedSeconds(), 1.25, 1e-12);
+}
+
 TEST(GCodeExport, NoRetractionWhenAmountIsZero) {
     ExportParams p = marlin175();
     p.retraction_amount_mm = 0;

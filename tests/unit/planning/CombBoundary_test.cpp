@@ -81,5 +81,17 @@ TEST(CombBoundary, EmptyBoundaryHasNothingInside) {
     EXPECT_FALSE(comb.inside({0, 0}));
 }
 
+TEST(CombBoundary, EntryTowardAPointAndMovingInside) {
+    const CombBoundary comb(squareWithHole());
+    // From the hole towards the right: enters at x = 20 mm, 20 µm further in.
+    EXPECT_EQ(comb.entryToward({15'000, 15'000}, {25'000, 15'000}), (Point2{20'020, 15'000}));
+    EXPECT_EQ(comb.entryToward({-5'000, 5'000}, {5'000, 5'000}), (Point2{20, 5'000}));
+    EXPECT_FALSE(comb.entryToward({-5'000, -5'000}, {-1'000, -5'000}).has_value());  // never enters
+    // Inside stays; 1 mm into the hole from its edge comes back out to the edge and 20 µm on.
+    EXPECT_EQ(comb.moveInside({5'000, 5'000}, 1'000), (Point2{5'000, 5'000}));
+    EXPECT_EQ(comb.moveInside({11'000, 15'000}, 1'500), (Point2{9'980, 15'000}));
+    EXPECT_FALSE(comb.moveInside({15'000, 15'000}, 1'500).has_value());  // 5 mm from any edge
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -45,6 +45,28 @@ TEST(Cooling, NeverBelowMinimumSpeed) {
     EXPECT_DOUBLE_EQ(layer.steps[1].speed_mm_s, 10);
 }
 
+TEST(Cooling, LiftHeadWaitsOutWhatTheMinimumSpeedLeaves) {
+    CoolingParams p = params();
+    p.lift_head = true;
+    p.bed_middle_um = {110'000, 0};
+    p.travel_speed_mm_s = 150;
+    PlannedLayer layer = layerOf(10, 50);  // 10 mm at the 10 mm/s minimum: 1 s of the 5
+    applyCooling(layer, {0, 0}, p);
+    ASSERT_EQ(layer.steps.size(), 3U);
+    const PlanStep& lift = layer.steps.back();
+    EXPECT_EQ(lift.kind, PlanStep::Kind::LiftHead);
+    EXPECT_EQ(lift.to, (Point2{30'000, 0}));  // 20 mm from the last position towards the middle
+    EXPECT_NEAR(lift.dwell_seconds, 4.0, 1e-9);
+    EXPECT_EQ(lift.speed_mm_s, 150.0);
+    PlannedLayer slowed = layerOf(100, 50);  // reaches the 5 s by slowing down: no lift
+    applyCooling(slowed, {0, 0}, p);
+    EXPECT_EQ(slowed.steps.size(), 2U);
+    p.lift_head = false;
+    PlannedLayer off = layerOf(10, 50);
+    applyCooling(off, {0, 0}, p);
+    EXPECT_EQ(off.steps.size(), 2U);
+}
+
 TEST(Cooling, FanBetweenMinAndMaxByLayerTime) {
     PlannedLayer slow = layerOf(600, 50);  // 12 s: regular fan
     applyCooling(slow, {0, 0}, params());

@@ -100,6 +100,34 @@ TEST(PathOrder, OneFeatureMarkerPerChange) {
     EXPECT_EQ(feature, Feature::Fill);
 }
 
+TEST(PathOrder, ASequenceIsEnteredAtItsFirstPathAndPrintedInOrder) {
+    // Three lines of sequence 1 listed far-middle-near, and a free line between: the head is nearest
+    // to the sequence's last line, but the sequence is entered at its first path and printed as
+    // listed, each line from its end nearer to the head; the free line comes after.
+    std::vector<ExtrusionPath> paths{line({9'000, 0}, {9'000, 5'000}), line({6'000, 0}, {6'000, 5'000}),
+                                     line({3'000, 0}, {3'000, 5'000}), line({1'000, 0}, {1'000, 5'000})};
+    for (std::size_t i = 0; i < 3; ++i)
+        paths[i].sequence = 1;
+    Point2 head{12'000, 0};
+    std::optional<Feature> feature = Feature::Fill;
+    std::vector<PlanStep> steps;
+    appendOrderedPaths(paths, travelParams(), head, feature, steps);
+    std::vector<Point2> starts;
+    for (const PlanStep& s : steps) {
+        if (s.kind == PlanStep::Kind::Travel)
+            starts.push_back(s.to);
+    }
+    EXPECT_EQ(starts, (std::vector<Point2>{{9'000, 0}, {6'000, 5'000}, {3'000, 0}, {1'000, 5'000}}));
+    // Without the sequence the same lines go nearest-first: the same order here, but entered
+    // anywhere: from a head at the far left the free line and then 3, 6, 9 mm.
+    for (ExtrusionPath& path : paths)
+        path.sequence = 0;
+    head = {0, 0};
+    steps.clear();
+    appendOrderedPaths(paths, travelParams(), head, feature, steps);
+    EXPECT_EQ(steps.front().to, (Point2{1'000, 0}));
+}
+
 TEST(PathOrder, KeepOrderPrintsTheGroupAsGivenFromTheNearerEnds) {
     // Nearest first would take x = 1, 3, 5 mm; kept in order (monotonic ironing) it is 5, 1, 3 mm, each
     // line entered from its end nearer the nozzle (the second ends at y = 0, so the third starts there).

@@ -58,5 +58,20 @@ TEST(OutlineCleanup, SmallLoopsAreDropped) {
     EXPECT_NEAR(loopLengthUm(layers[0].outlines[0]), 2 * std::numbers::pi * 10'000, 100);
 }
 
+TEST(OutlineCleanup, RemoveHolesFillsThemAndMergesWhatWasInside) {
+    // A 30 mm square with a 10 mm hole holding a 4 mm island: one filled square is left.
+    const Path outer{{0, 0}, {30'000, 0}, {30'000, 30'000}, {0, 30'000}};
+    const Path hole{{10'000, 10'000}, {10'000, 20'000}, {20'000, 20'000}, {20'000, 10'000}};  // clockwise
+    const Path island{{13'000, 13'000}, {17'000, 13'000}, {17'000, 17'000}, {13'000, 17'000}};
+    std::vector<SlicedLayer> layers(2);
+    layers[0].outlines = {outer, hole, island};
+    layers[1].outlines = {island};
+    removeHoles(layers, 2);
+    ASSERT_EQ(layers[0].outlines.size(), 1U);
+    EXPECT_DOUBLE_EQ(ClipperLib::Area(layers[0].outlines[0]), 900e6);
+    ASSERT_EQ(layers[1].outlines.size(), 1U);
+    EXPECT_DOUBLE_EQ(ClipperLib::Area(layers[1].outlines[0]), 16e6);
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -42,6 +42,13 @@ Group twoMeshes(const SettingValues& user) {
     return g;
 }
 
+Paths pointsOf(const std::vector<ExtrusionPath>& paths) {
+    Paths points;
+    for (const ExtrusionPath& p : paths)
+        points.push_back(p.points);
+    return points;
+}
+
 std::set<int> extrudersOf(const std::vector<ExtrusionPath>& paths) {
     std::set<int> used;
     for (const ExtrusionPath& p : paths)
@@ -230,6 +237,26 @@ TEST(GroupToolpaths, EmptyBottomLayersAreDroppedAndThePrintStartsAtTheFirstHeigh
     EXPECT_FALSE(g.meshes[0].layers[0].outer_walls.empty());
     EXPECT_EQ(g.meshes[0].sliced, &s.layers);
     EXPECT_EQ(g.notes, std::vector<std::string>{"removing 3 empty layer(s) at the bottom of the print"});
+}
+
+TEST(GroupToolpaths, TheSkirtGoesAroundTheFirstLayerThatPrints) {
+    // Layers 0–1 and 28–29 empty (as slicing_tolerance exclusive leaves the last one): the skirt
+    // surrounds the square on what becomes layer 0; the empty top layers stay (the writer writes
+    // nothing for them, gcode/PlanWriter.h).
+    ResolvedMachine m = test::fdmMachine({{"adhesion_type", "skirt"}});
+    test::Stack s = test::prismStack(30);
+    test::fill(s, 2, 28, {square(50'000, 50'000, 10'000)});
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "middle", &s.layers, std::nullopt}}};
+    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    EXPECT_EQ(g.first_sliced_layer, 2U);
+    ASSERT_EQ(g.heights.size(), 28U);
+    EXPECT_EQ(g.meshes[0].layers.size(), 28U);
+    EXPECT_FALSE(g.meshes[0].layers[25].outer_walls.empty());
+    EXPECT_TRUE(g.meshes[0].layers.back().outer_walls.empty());
+    ASSERT_FALSE(g.adhesion.empty());
+    const ClipperLib::IntRect box = boundsOf(pointsOf(g.adhesion));
+    EXPECT_LT(box.left, 50'000);
+    EXPECT_GT(box.right, 60'000);
 }
 
 TEST(GroupToolpaths, NothingToPrintDropsEveryLayer) {

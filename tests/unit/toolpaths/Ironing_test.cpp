@@ -100,13 +100,27 @@ TEST(Ironing, MonotonicKeepsTheLinesInOrderAcrossThem) {
         ironingParams(ironingSettings({{"ironing_pattern", "lines"}, {"ironing_monotonic", "True"}}), 0);
     p.angle_degrees = 0;
     EXPECT_TRUE(p.monotonic);
-    // Two islands: the lines of both are sorted by x, so they alternate between the islands' rows.
+    // Two islands: the lines of both are sorted by x — falling, along CuraEngine's monotonic vector
+    // (−cos 0°, sin 0°) — so they alternate between the islands' rows.
     const std::vector<ExtrusionPath> lines =
         ironingPaths({rect(0, 0, 5'000, 5'000), rect(0, 10'000, 5'000, 15'000)}, p);
     ASSERT_GT(lines.size(), 10U);
     for (std::size_t i = 1; i < lines.size(); ++i) {
-        EXPECT_LE(lines[i - 1].points.front().X, lines[i].points.front().X);
+        EXPECT_GE(lines[i - 1].points.front().X, lines[i].points.front().X);
         EXPECT_TRUE(lines[i].keep_order);
+    }
+}
+
+TEST(Ironing, MonotonicZigzagStartsAtTheEndFurthestBack) {
+    // A zigzag crosses the surface: monotonic, it starts at the end with the lower projection on
+    // CuraEngine's monotonic vector (−cos a, sin a), whichever end the nozzle is nearer.
+    IroningParams p = ironingParams(ironingSettings({{"ironing_monotonic", "True"}}), 0);
+    p.angle_degrees = 0;  // lines along Y; the vector (−1, 0): from the right
+    const std::vector<ExtrusionPath> zigzag = ironingPaths({square(0, 0, 10'000)}, p);
+    ASSERT_FALSE(zigzag.empty());
+    for (const ExtrusionPath& path : zigzag) {
+        EXPECT_TRUE(path.fixed_start);
+        EXPECT_GT(path.points.front().X, path.points.back().X);
     }
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
+#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 namespace {
@@ -100,6 +101,55 @@ TEST(MeshToolpaths, SameResultOnOneOrTwoThreads) {
 TEST(MeshToolpaths, NoInfillAtZeroDensity) {
     for (const MeshLayerGroups& g : toolpaths({{"infill_sparse_density", "0"}}))
         EXPECT_TRUE(g.infill.empty());
+}
+
+TEST(MeshToolpaths, CombAreaFollowsTheCombingMode) {
+    // Layer 29 is top skin all over, layer 15 is infill inside the walls.
+    const auto area = [](const std::string& mode, int layer) {
+        return toolpaths({{"retraction_combing", mode}})[static_cast<std::size_t>(layer)].comb_area;
+    };
+    EXPECT_FALSE(area("all", 15).has_value());  // the sliced outlines
+    EXPECT_FALSE(area("off", 15).has_value());
+    const double outline = 400e6;
+    // noskin: the outline less the skin — all of it on a top layer but the walls' 0.8 mm ring.
+    const double ring = outline - 18'400.0 * 18'400.0;
+    ASSERT_TRUE(area("noskin", 29).has_value());
+    EXPECT_NEAR(areaUm2(*area("noskin", 29)), ring, 1e6);
+    EXPECT_DOUBLE_EQ(areaUm2(*area("noskin", 15)), outline);
+    // infill: the infill area only (none on a top layer).
+    EXPECT_TRUE(area("infill", 29)->empty());
+    EXPECT_GT(areaUm2(*area("infill", 15)), 0.8 * outline);
+    EXPECT_LT(areaUm2(*area("infill", 15)), outline);
+    // no_outer_surfaces: the skin with air above (layer 29) is out, the skin under it (27) stays in.
+    EXPECT_NEAR(areaUm2(*area("no_outer_surfaces", 29)), ring, 1e6);
+    EXPECT_DOUBLE_EQ(areaUm2(*area("no_outer_surfaces", 27)), outline);
+}
+
+TEST(MeshToolpaths, SurfaceModePrintsTheOutlineOnceAsOuterWall) {
+    const std::vector<MeshLayerGroups> layers = toolpaths({{"magic_mesh_surface_mode", "surface"}});
+    ASSERT_EQ(layers.size(), 30U);
+    for (const MeshLayerGroups& g : layers) {
+        ASSERT_EQ(g.outer_walls.size(), 1U);
+        EXPECT_TRUE(g.inner_walls.empty() && g.skin.empty() && g.infill.empty());
+        EXPECT_DOUBLE_EQ(std::abs(ClipperLib::Area(g.outer_walls[0].points)), 400e6);  // along the outline
+        EXPECT_TRUE(g.outer_walls[0].fixed_start);                                     // seam placed
+    }
+}
+
+TEST(MeshToolpaths, PerimeterGapsAreFilledWithHalfWidthSkinLines) {
+    // A 1.4 mm wide wall of a part: room for the outer wall only, the 0.57 mm left inside is a gap
+    // filled with lines half an outer wall wide (fill_perimeter_gaps), unless that is off.
+    test::Stack strip = test::prismStack(10);
+    test::fill(strip, 0, 10, {test::rect(10'000, 10'000, 30'000, 11'400)});
+    const auto gapLines = [&](const std::string& mode) {
+        const ResolvedMachine m = test::fdmMachine({{"fill_perimeter_gaps", mode}}, {{1, {}}});
+        std::size_t count = 0;
+        for (const ExtrusionPath& p : generateMeshToolpaths(strip.layers, m.global, 2)[5].skin)
+            count += p.width_um == 200 && p.feature == Feature::Skin ? 1 : 0;
+        return count;
+    };
+    EXPECT_GT(gapLines("everywhere"), 10U);
+    EXPECT_EQ(gapLines("nowhere"), 0U);
 }
 
 }  // namespace

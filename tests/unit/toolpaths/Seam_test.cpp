@@ -47,6 +47,33 @@ TEST(Seam, BackPicksTheVertexNearestToThePoint) {
     EXPECT_EQ(sq[seamVertex(sq, p, 0)], (Point2{0, 10'000}));
 }
 
+TEST(Seam, BackIsDrawnToCornersOfThePreferredKindAsInCuraEngine) {
+    // From (15.05, 10) mm the convex corner (20, 10) is nearest (4.95 mm), the concave corner (10, 10)
+    // a little farther (5.05 mm): a corner of the preferred kind takes a tenth off its squared
+    // distance per unit of bend (0.5 for a right angle, doubled for concave corners when weighted).
+    SeamParams p;
+    p.type = SeamType::Back;
+    p.position_um = {15'050, 10'000};
+    const Path l = lShape();
+    p.corner = SeamCorner::None;
+    EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{20'000, 10'000}));
+    p.corner = SeamCorner::Inner;
+    EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{10'000, 10'000}));
+    p.corner = SeamCorner::Outer;
+    EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{20'000, 10'000}));
+    p.corner = SeamCorner::Weighted;
+    EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{10'000, 10'000}));
+}
+
+TEST(Seam, BackTiesGoToTheBackMostVertex) {
+    SeamParams p;
+    p.type = SeamType::Back;
+    p.corner = SeamCorner::Weighted;
+    p.position_um = {5'000, 100'000};  // straight behind the middle: the two back corners tie
+    const Path sq = square(0, 0, 10'000);
+    EXPECT_EQ(sq[seamVertex(sq, p, 0)], (Point2{10'000, 10'000}));
+}
+
 TEST(Seam, PlaceSeamsRotatesTheLoopAndFixesItsStart) {
     SeamParams p;
     p.type = SeamType::Back;

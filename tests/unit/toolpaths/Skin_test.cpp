@@ -22,7 +22,7 @@ SkinParams layersOnly(int top, int bottom) {
 }
 
 std::vector<SkinAreas> skins(const std::vector<Paths>& areas, const SkinParams& p, int threads = 1) {
-    return computeSkinAreas(areas, areas, areas, p, threads);
+    return computeSkinAreas({&areas, &areas, nullptr}, areas, p, threads);
 }
 
 TEST(Skin, StackOfIdenticalSquares) {
@@ -109,8 +109,56 @@ TEST(Skin, RoofingIsTheSkinWithAirAbove) {
     p.roofing_layers = 1;
     const std::vector<SkinAreas> s = skins(areas, p);
     EXPECT_EQ(areaUm2(s[2].roofing), 400e6 - 100e6);  // nothing above the L-shaped part
-    EXPECT_EQ(areaUm2(s[2].skin), 100e6);             // covered by layer 3
+    EXPECT_EQ(areaUm2(s[2].skin), 400e6);             // the skin holds its roofing
     EXPECT_EQ(areaUm2(s[3].roofing), 100e6);
+}
+
+TEST(Skin, RoofingComparesWithItsOwnReferenceAndAtMostTopLayers) {
+    // The outline reference says layer 1 is covered, the roofing reference (a wall's centre region,
+    // smaller above) leaves a 1 mm band of layer 1 uncovered: roofing follows the roofing reference.
+    const std::vector<Paths> outlines{sq(0, 20'000), sq(0, 20'000)};
+    const std::vector<Paths> walls{sq(0, 20'000), sq(1'000, 18'000)};
+    SkinParams p = layersOnly(2, 0);
+    p.roofing_layers = 1;
+    const std::vector<SkinAreas> s = computeSkinAreas({&outlines, &outlines, &walls}, outlines, p, 1);
+    EXPECT_EQ(areaUm2(s[0].roofing), 400e6 - 18'000.0 * 18'000.0);
+    EXPECT_EQ(areaUm2(s[0].skin), 400e6);
+    // roofing_layer_count above top_layers counts as top_layers.
+    const std::vector<Paths> stack{sq(0, 20'000), sq(0, 20'000), sq(0, 20'000), sq(0, 20'000)};
+    SkinParams capped = layersOnly(1, 0);
+    capped.roofing_layers = 3;
+    EXPECT_TRUE(skins(stack, capped)[1].roofing.empty());  // layer 2 covers it
+    EXPECT_EQ(areaUm2(skins(stack, capped)[3].roofing), 400e6);
+}
+
+TEST(Skin, OuterSurfacesHaveAirDirectlyAboveOrBelow) {
+    // Four layers: a 20 mm square, then a 10 mm one on layers 2 and 3; all skin (2 top, 2 bottom).
+    const std::vector<Paths> areas{sq(0, 20'000), sq(0, 20'000), sq(0, 10'000), sq(0, 10'000)};
+    SkinParams p = layersOnly(2, 2);
+    p.outer_surfaces = true;
+    const std::vector<SkinAreas> s = skins(areas, p);
+    EXPECT_EQ(areaUm2(s[0].outer_surfaces), 400e6);          // layer 0: air below
+    EXPECT_EQ(areaUm2(s[1].outer_surfaces), 400e6 - 100e6);  // the L with nothing above
+    EXPECT_EQ(areaUm2(s[2].outer_surfaces), 0.0);            // covered, and standing on layer 1
+    EXPECT_EQ(areaUm2(s[3].outer_surfaces), 100e6);          // the top
+    EXPECT_TRUE(skins(areas, layersOnly(2, 2))[3].outer_surfaces.empty());  // not asked for
+}
+
+TEST(Skin, InfillLosesWhatIsNarrowerThanItsLine) {
+    // Inside the walls: a 10 mm square with a 0.3 mm wide, 5 mm long tongue; no skin.
+    const Paths inner{{{0, 0},
+                       {10'000, 0},
+                       {10'000, 4'850},
+                       {15'000, 4'850},
+                       {15'000, 5'150},
+                       {10'000, 5'150},
+                       {10'000, 10'000},
+                       {0, 10'000}}};
+    const std::vector<Paths> areas(5, inner);
+    SkinParams p = layersOnly(0, 0);
+    EXPECT_EQ(areaUm2(skins(areas, p)[2].infill), areaUm2(inner));
+    p.infill_opening_um = 400;  // infill_line_width: the tongue goes
+    EXPECT_NEAR(areaUm2(skins(areas, p)[2].infill), 100e6, 1e3);
 }
 
 }  // namespace

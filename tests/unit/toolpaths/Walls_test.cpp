@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "ToolpathTestSupport.h"
 #include "toolpaths/PolygonOps.h"
@@ -90,6 +91,63 @@ TEST(Walls, SquareWithHoleGetsLoopsAroundBoth) {
     EXPECT_EQ(outer_loops, 2);
     // Inner area: the 18.4 mm square minus the hole grown by 0.8 mm.
     EXPECT_EQ(areaUm2(result.inner_area), 18'400.0 * 18'400.0 - 11'600.0 * 11'600.0);
+}
+
+TEST(Walls, GroupedByOutlineEachHoleAndOutlineIsOneSequence) {
+    // Two holes in a 40 mm square, three walls: each hole's three loops share a sequence with the
+    // hole's outer wall, the outline's with the outline's; inner loops are listed innermost first.
+    Path left = square(5'000, 5'000, 10'000), right = square(25'000, 5'000, 10'000);
+    std::reverse(left.begin(), left.end());
+    std::reverse(right.begin(), right.end());
+    WallParams p;
+    p.wall_count = 3;
+    p.group_by_outline = true;
+    const WallResult result = generateWalls({square(0, 0, 40'000), left, right}, p);
+    ASSERT_EQ(result.walls.size(), 9U);
+    std::map<std::uint32_t, std::vector<const ExtrusionPath*>> by_sequence;
+    for (const ExtrusionPath& w : result.walls)
+        by_sequence[w.sequence].push_back(&w);
+    ASSERT_EQ(by_sequence.size(), 3U);
+    EXPECT_EQ(by_sequence.count(0), 0U);
+    for (const auto& [sequence, loops] : by_sequence) {
+        ASSERT_EQ(loops.size(), 3U) << sequence;
+        EXPECT_EQ(loops[0]->feature, Feature::WallOuter);
+        const ClipperLib::IntRect outer = boundsOf({loops[0]->points});
+        const ClipperLib::IntRect deepest = boundsOf({loops[1]->points});
+        const ClipperLib::IntRect middle = boundsOf({loops[2]->points});
+        const bool hole = ClipperLib::Area(loops[0]->points) < 0;
+        // Walls of a hole grow outwards, those of the outline shrink inwards.
+        EXPECT_EQ(deepest.right - deepest.left > middle.right - middle.left, hole) << sequence;
+        EXPECT_EQ(middle.right - middle.left > outer.right - outer.left, hole) << sequence;
+    }
+    // Outer walls first in the list, then the inner ones level by level from the innermost.
+    EXPECT_EQ(result.walls[0].feature, Feature::WallOuter);
+    EXPECT_EQ(result.walls[3].feature, Feature::WallInner);
+    p.outer_first = true;  // the inner ones from the outermost in
+    const WallResult outer_first = generateWalls({square(0, 0, 40'000), left, right}, p);
+    EXPECT_EQ(boundsOf({outer_first.walls[3].points}).left, 600);  // the outline's first inner wall
+    p.group_by_outline = false;
+    for (const ExtrusionPath& w : generateWalls({square(0, 0, 40'000), left, right}, p).walls)
+        EXPECT_EQ(w.sequence, 0U);
+    p.group_by_outline = true;  // too thin for any wall
+    EXPECT_TRUE(generateWalls({rect(0, 0, 10'000, 300)}, p).walls.empty());
+}
+
+TEST(Walls, PerimeterGapsWhereTheNextWallIsMissing) {
+    // Walls touch where they all exist: a 20 mm square has no gaps.
+    WallParams p;
+    p.perimeter_gaps = true;
+    EXPECT_TRUE(generateWalls({square(0, 0, 20'000)}, p).perimeter_gaps.empty());
+    // A 1.4 mm strip fits the outer wall (centre region 1.0 mm wide) but no inner wall: what the
+    // outer wall leaves, 1.0 − 0.4 − 2 × 15 µm = 0.57 mm across, is a gap (11 mm², over the filter's
+    // two outer wall widths squared).
+    const WallResult strip = generateWalls({rect(0, 0, 20'000, 1'400)}, p);
+    const ClipperLib::IntRect box = boundsOf(strip.perimeter_gaps);
+    EXPECT_EQ(box.top, 415);
+    EXPECT_EQ(box.bottom, 985);
+    EXPECT_NEAR(areaUm2(strip.perimeter_gaps), 19'170.0 * 570.0, 1e3);  // 0.415 mm in from each end
+    p.perimeter_gaps = false;
+    EXPECT_TRUE(generateWalls({rect(0, 0, 20'000, 1'400)}, p).perimeter_gaps.empty());
 }
 
 TEST(Walls, ThinPartsGetFewerWallsNeverOverlapping) {

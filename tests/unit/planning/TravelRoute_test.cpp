@@ -1,0 +1,94 @@
+// One travel (planning/TravelRoute.h): combing, moving its ends inside, the combing limit, going
+// around other parts, and which travels retract.
+#include "planning/TravelRoute.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace mixengine {
+namespace {
+
+Path square(coord_um x0, coord_um y0, coord_um size) {
+    return {{x0, y0}, {x0 + size, y0}, {x0 + size, y0 + size}, {x0, y0 + size}};
+}
+
+TravelParams params() {
+    TravelParams p;
+    p.retraction_enable = true;
+    p.retraction_min_travel_um = 1'500;
+    return p;
+}
+
+/// The space outside two 10 mm parts at x 0 and 30 mm, with a third one between them (x 15 … 25,
+/// y 0 … 10 mm): a rectangle around them with the parts as holes.
+Paths freeAroundThreeParts() {
+    return {{{-5'000, -5'000}, {45'000, -5'000}, {45'000, 15'000}, {-5'000, 15'000}},
+            square(0, 0, 10'000),
+            square(15'000, 0, 10'000),
+            square(30'000, 0, 10'000)};
+}
+
+TEST(TravelRoute, ShortTravelGoesStraightWithoutRetracting) {
+    const CombBoundary comb({square(0, 0, 10'000)});
+    TravelParams p = params();
+    p.comb = &comb;
+    const TravelRoute r = planTravel({1'000, 1'000}, {50'000, 1'000}, p);  // leaves the part, but is
+    EXPECT_TRUE(r.retract);                                                // long: retracts
+    const TravelRoute short_one = planTravel({1'000, 1'000}, {2'000, 1'500}, p);
+    EXPECT_FALSE(short_one.retract);
+    EXPECT_EQ(short_one.points, (Path{{2'000, 1'500}}));
+}
+
+TEST(TravelRoute, CombsInsideAndMovesEndsInFromNearby) {
+    const CombBoundary comb({square(0, 0, 10'000)});
+    TravelParams p = params();
+    p.comb = &comb;
+    const TravelRoute inside = planTravel({1'000, 1'000}, {9'000, 9'000}, p);
+    EXPECT_FALSE(inside.retract);
+    EXPECT_EQ(inside.points, (Path{{9'000, 9'000}}));
+    // The end is 0.5 mm outside: without reach it goes through the air and retracts; with 1.6 mm of
+    // reach the travel combs to the edge (20 µm inside) and moves out to it.
+    EXPECT_TRUE(planTravel({1'000, 5'000}, {10'500, 5'000}, p).retract);
+    p.comb_move_inside_um = 1'600;
+    const TravelRoute moved = planTravel({1'000, 5'000}, {10'500, 5'000}, p);
+    EXPECT_FALSE(moved.retract);
+    EXPECT_EQ(moved.points, (Path{{9'980, 5'000}, {10'500, 5'000}}));
+    // retraction_combing_max_distance: a combed travel longer than it retracts.
+    p.combing_max_distance_um = 5'000;
+    EXPECT_TRUE(planTravel({1'000, 1'000}, {9'000, 9'000}, p).retract);
+}
+
+TEST(TravelRoute, ThroughTheAirAroundTheOtherParts) {
+    const CombBoundary free(freeAroundThreeParts());
+    TravelParams p = params();
+    p.free = &free;
+    // From the left part to the right one: out of the left part, around the middle one, in.
+    const TravelRoute r = planTravel({5'000, 5'000}, {35'000, 5'000}, p);
+    EXPECT_TRUE(r.retract);
+    ASSERT_GE(r.points.size(), 4U);
+    EXPECT_EQ(r.points.front(), (Point2{10'020, 5'000}));
+    EXPECT_EQ(r.points.back(), (Point2{35'000, 5'000}));
+    for (const Point2& q : r.points)  // never through the middle part
+        EXPECT_FALSE(q.X > 15'000 && q.X < 25'000 && q.Y > 0 && q.Y < 10'000) << q.X << "," << q.Y;
+    p.free = nullptr;  // travel_avoid_other_parts off: straight
+    EXPECT_EQ(planTravel({5'000, 5'000}, {35'000, 5'000}, p).points, (Path{{35'000, 5'000}}));
+}
+
+TEST(TravelRoute, SupportToSupportClearOfThePartsNeedNotRetract) {
+    const CombBoundary free(freeAroundThreeParts());
+    TravelParams p = params();
+    p.free = &free;
+    p.limit_support_retractions = true;
+    EXPECT_FALSE(planTravel({0, 12'000}, {40'000, 12'000}, p).retract);  // above the parts, clear
+    EXPECT_TRUE(planTravel({0, -2'000}, {40'000, 12'000}, p).retract);   // across the parts
+    p.limit_support_retractions = false;
+    EXPECT_TRUE(planTravel({0, 12'000}, {40'000, 12'000}, p).retract);
+    const CombBoundary comb({square(0, 0, 10'000)});
+    p.limit_support_retractions = true;
+    p.comb = &comb;  // a mesh travel through the air always retracts
+    EXPECT_TRUE(planTravel({0, 12'000}, {40'000, 12'000}, p).retract);
+}
+
+}  // namespace
+}  // namespace mixengine
