@@ -23,6 +23,14 @@ inline Path square(coord_um x0, coord_um y0, coord_um size) {
     return rect(x0, y0, x0 + size, y0 + size);
 }
 
+/// Length of an open polyline in µm.
+inline double polylineLength(const Path& p) {
+    double total = 0;
+    for (std::size_t i = 1; i < p.size(); ++i)
+        total += std::hypot(double(p[i].X - p[i - 1].X), double(p[i].Y - p[i - 1].Y));
+    return total;
+}
+
 inline double pathLength(const ExtrusionPath& p) {
     double total = 0;
     for (std::size_t i = 1; i < p.points.size(); ++i)

@@ -10,12 +10,7 @@
 namespace mixengine {
 namespace {
 
-double polylineLength(const Path& p) {
-    double total = 0;
-    for (std::size_t i = 1; i < p.size(); ++i)
-        total += std::hypot(double(p[i].X - p[i - 1].X), double(p[i].Y - p[i - 1].Y));
-    return total;
-}
+using test::polylineLength;
 
 TEST(ZigZag, SquareBecomesOneConnectedPolyline) {
     // Lines x = 1 … 9 mm in a square 0.5 … 9.5 mm: nine 9 mm lines joined by eight 1 mm pieces.
