@@ -41,32 +41,33 @@ def free_port():
 
 
 class Listener(Arcus.SocketListener):
-    def __init__(self):
-        super().__init__()
-        self.states, self.errors = [], []
-        self.event = threading.Event()
-        self.pending = 0  # messages announced and not yet taken (takeNextMessage raises when none)
-        self.lock = threading.Lock()
+    """The frontend's listener. Its state lives in the class (one job per process): libArcus calls back
+    from its own thread, and python3-arcus may hand that call a fresh Python wrapper of the same C++
+    listener, which has none of the instance's attributes (seen once in CI as an AttributeError)."""
+    states, errors = [], []
+    event = threading.Event()
+    pending = 0  # messages announced and not yet taken (takeNextMessage raises when none)
+    lock = threading.Lock()
 
     def stateChanged(self, state):
-        self.states.append(int(state))
-        self.event.set()
+        Listener.states.append(int(state))
+        Listener.event.set()
 
     def messageReceived(self):
-        with self.lock:
-            self.pending += 1
-        self.event.set()
+        with Listener.lock:
+            Listener.pending += 1
+        Listener.event.set()
 
     def take(self, sock):
-        with self.lock:
-            if self.pending == 0:
+        with Listener.lock:
+            if Listener.pending == 0:
                 return None
-            self.pending -= 1
+            Listener.pending -= 1
         return sock.takeNextMessage()
 
     def error(self, error):
-        self.errors.append(str(error.getErrorMessage()))
-        self.event.set()
+        Listener.errors.append(str(error.getErrorMessage()))
+        Listener.event.set()
 
 
 def add_settings(container, items):
