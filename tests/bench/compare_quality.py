@@ -79,8 +79,10 @@ def picture(path, index, engines, sections, overrides):
     # a raft layer (index < 0) is drawn over the model's first section: what the raft carries
     mids = {label: pq.layer_mid_heights(m, sbs.raft_lift_mm(overrides)).get(index, 0.1) for label, m, _ in present}
     secs = dict(zip(mids, sections.at(mids.values())))
-    boxes = np.array([pq.layer_extent(m, m.layers[index], secs[label], offset, diameter, nozzle)
-                      for label, m, _ in present])
+    extents = [pq.layer_extent(m, m.layers[index], secs[label], offset, diameter, nozzle) for label, m, _ in present]
+    if any(e is None for e in extents):
+        return None
+    boxes = np.array(extents)
     grid = pq.Grid.around(boxes[:, 0].min(), boxes[:, 1].min(), boxes[:, 2].max(), boxes[:, 3].max(), pq.GRID_MM)
     panels = []
     for label, m, lq in present:

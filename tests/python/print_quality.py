@@ -265,6 +265,8 @@ def layer_extent(model, layer, section, offset_xy, filament_diameter_mm, nozzle_
         x0, y0, x1, y1 = section.bounds
         boxes.append((x0 + offset_xy[0], y0 + offset_xy[1], x1 + offset_xy[0], y1 + offset_xy[1]))
     b = np.array([x for x in boxes if x is not None])
+    if b.size == 0:  # nothing printed and no section on this layer (e.g. an open scan's stray top)
+        return None
     return (b[:, 0].min() - margin_mm, b[:, 1].min() - margin_mm, b[:, 2].max() + margin_mm,
             b[:, 3].max() + margin_mm)
 
