@@ -8,8 +8,8 @@ its end vertex ("a_material_color", the "colors" attribute). So giving each vert
 line it belongs to colours every line exactly.
 
 A line is matched to the G-code move that printed it by layer and end point: the layer view's
-layers are numbered from the first layer with moves (ProcessSlicedLayersJob), the G-code's by
-";LAYER:n"; within a layer both lists are in print order. The points are (x, -y) of the G-code's
+layers are numbered as ProcessSlicedLayersJob numbers them (MixGCode.viewLayerIds: from the lowest id,
+model layers right after a raft's), the G-code's by ";LAYER:n"; within a layer both lists are in print order. The points are (x, -y) of the G-code's
 (x, y) (LayerPolygon's scene frame). Lines without a match keep Cura's colour.
 """
 import numpy
@@ -52,21 +52,22 @@ class RecolourResult:
         self.matched = matched  # of which coloured from a G-code move
 
 
-def recolour(layers, material_colours, gcode_mixes, move_rgb, layer_offset):
+def recolour(layers, material_colours, gcode_mixes, move_rgb, layer_ids):
     """New per-vertex colours for `material_colours` (the built "colors" attribute, not changed).
 
     layers: {abs layer number: Layer with .polygons} as LayerDataBuilder holds them;
     gcode_mixes: MixGCode.read() result; move_rgb: {layer id: (k, 3) colour of each extruding move};
-    layer_offset: G-code layer id of abs layer 0 (MixGCode.firstLayerWithMoves).
+    layer_ids: {abs layer number: G-code layer id} (MixGCode.viewLayerIds).
     Returns None when the vertex count does not follow the builder's rule (nothing is changed then)."""
     colours = numpy.array(material_colours, dtype=numpy.float32, copy=True)
     vertex = 0
     lines = matched = 0
     for number in sorted(layers):
-        layer_moves = gcode_mixes.layers.get(number + layer_offset)
+        layer_id = layer_ids.get(number)
+        layer_moves = gcode_mixes.layers.get(layer_id)
         polygons = layers[number].polygons
         arrays = [_polygonArrays(p) for p in polygons]
-        line_colours, counts = _layerLineColours(arrays, layer_moves, move_rgb.get(number + layer_offset))
+        line_colours, counts = _layerLineColours(arrays, layer_moves, move_rgb.get(layer_id))
         lines += counts[0]
         matched += counts[1]
         for (types, _), rgb in zip(arrays, line_colours):

@@ -204,7 +204,13 @@ def read(chunks, dialect, channels):
     return reader.result
 
 
-def firstLayerWithMoves(result):
-    """The lowest layer id that has any extruding move (Cura numbers its layer view from there)."""
-    ids = [i for i in result.order if result.layers[i].xy]
-    return min(ids) if ids else None
+def viewLayerIds(result):
+    """{abs layer number of Cura's layer view: G-code layer id}, numbered as Cura 4.13's ProcessSlicedLayersJob
+    numbers the layers it receives: from the lowest id, with the ids at and above 0 moved down to follow the
+    negative (raft) ones directly, so the ids a raft's air gap leaves out take no place in the view."""
+    ids = sorted(i for i in result.order if result.layers[i].xy)
+    if not ids:
+        return {}
+    negative = sum(1 for i in ids if i < 0)
+    lowest = ids[0]
+    return {(i + negative if i >= 0 and negative else i - lowest): i for i in ids}

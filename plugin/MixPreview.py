@@ -155,8 +155,8 @@ class MixPreview:
             return {"state": "no mix in the G-code"}
         move_rgb = self._moveColours(moves, settings)
         attribute = layer_data.getAttribute("colors")
-        offset = MixGCode.firstLayerWithMoves(moves)
-        result = LayerRecolour.recolour(builder.getLayers(), attribute["value"], moves, move_rgb, offset)
+        layer_ids = MixGCode.viewLayerIds(moves)
+        result = LayerRecolour.recolour(builder.getLayers(), attribute["value"], moves, move_rgb, layer_ids)
         if result is None:
             return {"state": "vertex count differs from the layer view; colours left alone"}
         attribute["value"] = result.colours

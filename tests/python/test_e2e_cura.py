@@ -12,8 +12,9 @@ and the CuraHarness plugin drives the session without clicks (tests/e2e/README.m
   the layer slider at the middle (cura_gradient_material_color_layer99.png: no B yet), Line Type
   unchanged (cura_gradient_line_type.png); and that backend/location is given back.
 - CMYK+W: the 5-channel M165 mixer with a multi-stop gradient (cura_cmykw_material_color.png).
+- raft: the MakerPi with a raft under a gradient (cura_raft_material_color.png): raft layers below 0, filament A.
 - single colour: the MakerPi in single mode stays one colour (cura_single_material_color.png), and
-  fuzzy skin, which MixEngine does not act on yet, is named in one Cura message (not_honoured.json).
+  wire printing, which MixEngine does not act on yet, is named in one Cura message (not_honoured.json).
 - orientation: the package installed by Cura's own installer this time; the 18 mm dual-nozzle printer,
   a bar on each nozzle, the menu item "Optimize dual-nozzle orientation", its undo and redo, then a slice;
   then "Uninstall" as the Marketplace does it, and Cura's own engine is back in cura.cfg.
@@ -44,7 +45,8 @@ SHOTS = {"material": ARTIFACTS / "cura_gradient_material_color.png",
          "layer99": ARTIFACTS / "cura_gradient_material_color_layer99.png",
          "line_type": ARTIFACTS / "cura_gradient_line_type.png",
          "cmykw": ARTIFACTS / "cura_cmykw_material_color.png",
-         "single": ARTIFACTS / "cura_single_material_color.png"}
+         "single": ARTIFACTS / "cura_single_material_color.png",
+         "raft": ARTIFACTS / "cura_raft_material_color.png"}
 # the 3D view in the 1600 x 1000 screenshots: below the stage menu, right of the mix legend (whose swatches
 # carry the channel colours), left of the print settings panel
 VIEW_ROWS, VIEW_COLS = slice(170, 900), slice(260, 1040)
@@ -310,10 +312,49 @@ def test_cmykw_multi_stop_gradient_in_material_color(tmp_path, package, report):
     report(f"Cura e2e CMYK+W: {SHOTS['cmykw']} (C/M/Y median rows {[round(m) for m in medians]})")
 
 
+# ---- a raft under a gradient (issue 15): raft layers in the Preview, printed with filament A ----------------
+def test_raft_under_a_gradient_shows_in_the_preview_with_filament_a(tmp_path, package, report):
+    """Cura asks for a raft on the mixing printer: MixEngine prints the raft's layers (numbered below zero as
+    CuraEngine numbers them) with mixing_raft_ratio (filament A), Cura's layer view holds every layer, and
+    the Material Color screenshot shows the raft, 15 mm wider than the cube on each side, in channel A's colour."""
+    job = {"name": "cura_raft", "machine": "mixengine_makerpi_m2030x",
+           "global": {"mixing_mode": "gradient", "mixing_gradient_start": 0, "mixing_gradient_end": 100,
+                      "mixing_channel_colors": f"{CHANNEL_A},{CHANNEL_B}", "adhesion_type": "raft"},
+           "models": [{"path": box(tmp_path / "cube20.stl", (20, 20, 20))}], "plugin_status": "MixEngine",
+           "gcode_output": str(tmp_path / "gcode.json"), "preview": True,
+           "screenshots": [{"path": str(SHOTS["raft"]), "layer_view_type": 0}], "camera": CAMERA}
+    summary, status, fixture = run_cura(job, tmp_path, package)
+    assert summary["backend_state"] == "Done" and fixture["global_settings"]["adhesion_type"] == "raft"
+    chunks = json.loads((tmp_path / "gcode.json").read_text())["chunks"]
+    ids = [int(c.split("\n", 1)[0][7:]) for c in chunks if c.startswith(";LAYER:")]
+    raft_ids = [i for i in ids if i < 0]
+    # base, interface, 2 surfaces; as in CuraEngine the ids left for the air gap's filler layers are not written
+    assert len(raft_ids) == 4 and raft_ids == list(range(raft_ids[0], raft_ids[0] + 4))
+    assert ids[4:] == list(range(len(ids) - 4))
+    preview = status["plugin_status_end"]["preview"]
+    assert status["scene_layers"] == len(ids) == preview["layers"]
+    assert preview["state"] == "coloured" and preview["matched"] == preview["lines"], preview  # every line by its mix
+    gcode = tmp_path / "cura.gcode"
+    gcode.write_text("".join(chunks))
+    totals = read_mixing_gcode(gcode, "eb_axes").layer_totals()
+    for layer in raft_ids:
+        _, (a, b) = totals[layer]
+        assert a > 0 and b == pytest.approx(0, abs=1e-6), layer  # the raft: filament A only
+    image = screenshot(SHOTS["raft"])
+    a_rows, a_cols = pixels_of(image, CHANNEL_A)
+    b_rows, b_cols = pixels_of(image, CHANNEL_B)
+    assert len(a_rows) > 3000 and len(b_rows) > 3000, (len(a_rows), len(b_rows))
+    raft_width = numpy.percentile(a_cols, 99) - numpy.percentile(a_cols, 1)  # teal: the raft and the cube's foot
+    cube_width = numpy.percentile(b_cols, 99) - numpy.percentile(b_cols, 1)  # the magenta top of the cube
+    assert raft_width > 1.5 * cube_width, (raft_width, cube_width)
+    report(f"Cura e2e raft: {SHOTS['raft']} ({len(raft_ids)} raft layers below 0, raft {raft_width:.0f} px "
+           f"wide under a {cube_width:.0f} px cube)")
+
+
 # ---- single colour on the mixing printer, and a setting MixEngine does not act on -----------------------
 def test_single_colour_print_stays_one_colour_and_unsupported_settings_are_named(tmp_path, package):
     job = {"name": "cura_single", "machine": "mixengine_makerpi_m2030x",
-           "extruders": {"0": {"magic_fuzzy_skin_enabled": True}},  # settings/mixengine/not_honoured.json lists it
+           "global": {"wireframe_enabled": True},  # settings/mixengine/not_honoured.json lists it
            "models": [{"path": box(tmp_path / "cube20.stl", (20, 20, 20))}], "plugin_status": "MixEngine",
            "preview": True, "screenshots": [{"path": str(SHOTS["single"]), "layer_view_type": 0}], "camera": CAMERA}
     summary, status, fixture = run_cura(job, tmp_path, package)
@@ -328,8 +369,8 @@ def test_single_colour_print_stays_one_colour_and_unsupported_settings_are_named
     assert spread < 8, spread  # one colour: Cura's material colour
     # one Cura message names the setting MixEngine does not act on yet
     texts = [t for t in status["visible_messages"] if "MixEngine does not act on" in t]
-    assert len(texts) == 1 and "Fuzzy Skin" in texts[0] and "fuzzy skin is not built yet" in texts[0], texts
-    assert [row[0] for row in end["not_honoured"]] == ["magic_fuzzy_skin_enabled"]
+    assert len(texts) == 1 and "Wire Printing" in texts[0] and "wire printing is not built" in texts[0], texts
+    assert [row[0] for row in end["not_honoured"]] == ["wireframe_enabled"]
 
 
 # ---- the orientation menu item on the dual-nozzle printer ------------------------------------------------

@@ -175,10 +175,13 @@ def socket_slice(engine, cube, tmp_path_factory):
 
 
 def layer_view(result):
-    """{abs layer number: Layer} numbered from the first layer with path segments, as Cura does."""
+    """{abs layer number: Layer} numbered as Cura 4.13's ProcessSlicedLayersJob numbers the layers it receives:
+    from the lowest id, and the layers at and above 0 right after the negative (raft) ones."""
     messages = [m for m in result["layers"] if m["segments"]]
     first = min(m["id"] for m in messages)
-    return {m["id"] - first: Layer([Polygon(s, m["height"] / 1000) for s in m["segments"]]) for m in messages}
+    negative = sum(1 for m in messages if m["id"] < 0)
+    number = {m["id"]: (m["id"] + negative if m["id"] >= 0 and negative else m["id"] - first) for m in messages}
+    return {number[m["id"]]: Layer([Polygon(s, m["height"] / 1000) for s in m["segments"]]) for m in messages}
 
 
 def test_every_line_of_the_layer_view_gets_the_mix_of_its_gcode_move(socket_slice):
@@ -189,7 +192,7 @@ def test_every_line_of_the_layer_view_gets_the_mix_of_its_gcode_move(socket_slic
     moves = MixGCode.read(result["gcode_list"], "eb_axes", 2)
     channel_rgb = MixColours.channelColours(settings["mixing_channel_colors"], 2, "")
     move_rgb = {i: MixColours.mixColours(moves.mixes[moves.layers[i].arrays()[1]], channel_rgb) for i in moves.order}
-    out = LayerRecolour.recolour(layers, cura_colours, moves, move_rgb, MixGCode.firstLayerWithMoves(moves))
+    out = LayerRecolour.recolour(layers, cura_colours, moves, move_rgb, MixGCode.viewLayerIds(moves))
     assert out is not None and out.matched == out.lines > 5000
     assert numpy.array_equal(cura_colours[:, 0], numpy.full(vertices, 1.0, dtype=numpy.float32))  # input untouched
     # per layer: the extrusion vertices carry the layer's colour, travel keeps Cura's
@@ -211,7 +214,17 @@ def test_every_line_of_the_layer_view_gets_the_mix_of_its_gcode_move(socket_slic
             start += count
     assert start == vertices
     # a vertex list that does not follow Cura's rule is left alone
-    assert LayerRecolour.recolour(layers, cura_colours[:-1], moves, move_rgb, 0) is None
+    assert LayerRecolour.recolour(layers, cura_colours[:-1], moves, move_rgb, MixGCode.viewLayerIds(moves)) is None
+
+
+def test_view_layer_ids_follow_cura_under_a_raft():
+    """Under a raft CuraEngine writes ;LAYER:-8..-5 and then 0..: Cura's layer view numbers them 0..3 and 4..,
+    so the ids the raft's air gap leaves out (-4..-1) take no place, and a print without a raft starts at 0."""
+    chunks = [f";LAYER:{i}\nG1 X{10 + i} Y10 E{i + 20}\nG1 X{10 + i} Y20 E{i + 21} B0.1\n" for i in (-8, -7, -6, -5, 0, 1, 2)]
+    ids = MixGCode.viewLayerIds(MixGCode.read(chunks, "eb_axes", 2))
+    assert ids == {0: -8, 1: -7, 2: -6, 3: -5, 4: 0, 5: 1, 6: 2}
+    plain = MixGCode.viewLayerIds(MixGCode.read(chunks[4:], "eb_axes", 2))
+    assert plain == {0: 0, 1: 1, 2: 2}
 
 
 def test_matching_skips_moves_the_layer_view_does_not_show():
