@@ -150,8 +150,12 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     SliceOptions options;
     options.tolerance = toleranceOf(s);
     options.threads = threads;
-    for (const SceneMesh& m : group.meshes)
-        sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
+    for (const SceneMesh& m : group.meshes) {
+        SliceOptions own = options;
+        own.union_all = !m.settings.has("meshfix_union_all") || m.settings.boolean("meshfix_union_all");
+        own.keep_open_polygons = flagOf(m.settings, "meshfix_keep_open_polygons");
+        sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, own, log));
+    }
     OutlineCleanupParams cleanup;
     cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
     cleanup.maximum_resolution_um = simplify ? s.lengthMicrons("meshfix_maximum_resolution") : 0;

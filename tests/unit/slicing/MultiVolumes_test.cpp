@@ -108,9 +108,11 @@ TEST(MultiVolumes, OverlapGrowsTouchingMeshesIntoEachOtherByHalfOfIt) {
     std::vector<VolumeRole> roles{roleAround(a), roleAround(b)};
     roles[0].overlap_um = roles[1].overlap_um = 150;
     combineVolumes(meshes, roles, {}, 1);
-    // each reaches 75 µm into the other along the 10 mm seam
-    EXPECT_NEAR(areaOf(meshes[0][0].outlines), 100 * kMm2 + 75 * 10'000, 5'000);
-    EXPECT_NEAR(areaOf(meshes[1][0].outlines), 100 * kMm2 + 75 * 10'000, 5'000);
+    // each reaches 75 µm into the other along the 10 mm seam (the 20 µm merge margin and the second mesh
+    // seeing the first one already grown add slivers of a few 1000 µm² at the seam's ends)
+    EXPECT_NEAR(areaOf(meshes[0][0].outlines), 100 * kMm2 + 75 * 10'000, 15'000);
+    EXPECT_NEAR(areaOf(meshes[1][0].outlines), 100 * kMm2 + 75 * 10'000, 15'000);
+    EXPECT_LT(areaOf(meshes[0][0].outlines), areaOf(meshes[1][0].outlines));
 }
 
 TEST(MultiVolumes, NoOverlapForFarMeshesOrZeroOverlap) {
