@@ -40,6 +40,13 @@ def _cylinder(trimesh, radius, z0, z1, x=0.0, y=0.0):
     return cyl
 
 
+def _open_box(trimesh):
+    """A 20 x 20 x 10 mm box without its -y side: every layer's cut is an open U, 20 mm across the gap."""
+    box = _box(trimesh, (-10, -10, 0), (10, 10, 10))
+    keep = [i for i, n in enumerate(box.face_normals) if not n[1] < -0.9]
+    return trimesh.Trimesh(box.vertices, box.faces[keep], process=False)
+
+
 def _tee(trimesh, shapely):
     """A 30 x 10 mm bar 6 mm thick at z 16..22 on an 8 x 10 mm stem: 11 mm of 90-degree overhang each side."""
     import math
@@ -55,6 +62,7 @@ SHAPES = {
     "box30": lambda t, s: _box(t, (-15, -15, 0), (15, 15, 30)),
     "cyl8_in_box": lambda t, s: _cylinder(t, 8.0, 5.0, 25.0),
     "cyl8_through": lambda t, s: _cylinder(t, 8.0, 0.0, 30.0),
+    "cyl6_shifted": lambda t, s: _cylinder(t, 6.0, 8.0, 22.0, x=6.0),
     "tee": _tee,
     "blocker_right": lambda t, s: _box(t, (3, -7, 0), (17, 7, 24)),
     "box20x10": lambda t, s: _box(t, (-10, -10, 0), (10, 10, 10)),
@@ -62,6 +70,10 @@ SHAPES = {
     "float_beside": lambda t, s: _box(t, (14, -4, 8), (22, 4, 12)),
     "box_left": lambda t, s: _box(t, (-14, -8, 0), (4, 8, 12)),
     "box_right": lambda t, s: _box(t, (-4, -8, 0), (14, 8, 12)),
+    # one mesh of two overlapping shells (meshfix_union_all), and a box open on its -y side (the open pieces
+    # of meshfix_keep_open_polygons / meshfix_extensive_stitching)
+    "two_shells": lambda t, s: t.util.concatenate([_box(t, (-14, -8, 0), (4, 8, 12)), _box(t, (-4, -8, 0), (14, 8, 12))]),
+    "open_box": lambda t, s: _open_box(t),
 }
 
 
