@@ -90,12 +90,26 @@ void warnAboutDialect(const MixingOutput& output, const Settings& global, Log& l
             "the G-code is written with relative extrusion (M83)");
 }
 
+/// Mixing is the print's choice: a model asking for a mix in a single-filament print is told so.
+void warnAboutMeshModes(const MixingGroup& group, Log& log) {
+    for (const MixingMesh& m : group.meshes) {
+        if (m.settings->has("mixing_mode") && m.settings->text("mixing_mode") != "single") {
+            log.warning("mixing_mode " + m.settings->text("mixing_mode") +
+                        " of a model is not used: mixing is off for the print (mixing_mode single); set the "
+                        "print's mixing_mode to dual or gradient");
+            return;
+        }
+    }
+}
+
 }  // namespace
 
 void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     const MixingOutput output = parseMixingOutput(*group.settings);
-    if (!output.enabled())
+    if (!output.enabled()) {
+        warnAboutMeshModes(group, log);
         return;
+    }
     GroupSchedules schedules;
     schedules.meshes = meshSchedules(group, output);
     schedules.nonmesh = groupSchedule(group, output, schedules.meshes);

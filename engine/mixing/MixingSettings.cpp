@@ -223,6 +223,13 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output) {
     m.mode = output.mode;
     if (!output.enabled())
         return m;
+    if (scope.has("mixing_mode"))
+        m.mode = parseMode(scope);       // a model's own mode (e.g. a cutting mesh's region)
+    if (m.mode == MixingMode::Single) {  // within a mixed print: the first filament alone
+        m.mode = MixingMode::Dual;
+        m.fixed = parseMixRatio("mixing_mode", "1", output.channels);
+        return m;
+    }
     const std::string unit = textOf(scope, "mixing_gradient_unit");
     if (unit == "percent")
         m.unit = HeightUnit::Percent;

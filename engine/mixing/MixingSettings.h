@@ -52,7 +52,10 @@ MixingOutput parseMixingOutput(const Settings& global);
 /// relative_extrusion, or true when the mixing dialect only works with relative extrusion (M83).
 bool relativeExtrusion(const Settings& global);
 
-/// One scope's schedule (mesh view, or the group's view for non-mesh extrusions).
+/// One scope's schedule (mesh view, or the group's view for non-mesh extrusions). With mixing on
+/// (the print's mixing_mode), a scope's own mixing_mode picks its kind of schedule: a model (a
+/// cutting mesh's region, an infill mesh) may be dual while the print is a gradient, or the reverse;
+/// `single` there means the first filament alone.
 MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output);
 
 /// mixing_raft_ratio: the mix the raft is printed with (mixing on).

@@ -7,6 +7,7 @@
 #include "mixing/MixingSettings.h"
 #include "pipeline/OutputParams.h"
 #include "planning/PrintPlanner.h"
+#include "slicing/MultiVolumes.h"
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/GroupToolpaths.h"
 #include "toolpaths/RaftLayout.h"
@@ -23,6 +24,10 @@ SlicingTolerance toleranceOf(const Settings& s) {
     return SlicingTolerance::Middle;
 }
 
+bool flagOf(const Settings& s, std::string_view key) {
+    return s.has(key) && s.boolean(key);
+}
+
 PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
                     PlannerState& state, Log& log) {
     ToolpathInput input;
@@ -32,8 +37,8 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
         const AABB3 box = group.meshes[m].mesh.bounds();
         const Point2 middle{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
-        input.meshes.push_back(
-            {&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m], middle});
+        input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m],
+                                middle, sliced.roles[m]});
     }
     const GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
     for (const std::string& warning : toolpaths.warnings)
@@ -102,7 +107,30 @@ std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& write
     return gcode.takeText();
 }
 
+/// Whether any mesh prints layers of its own (CuraEngine's print_layer_count counts neither infill
+/// meshes, cutting meshes nor support blockers; support meshes count).
+bool anyLayerMesh(const std::vector<VolumeRole>& roles) {
+    return std::any_of(roles.begin(), roles.end(), [](const VolumeRole& r) {
+        return !r.infill_mesh && !r.cutting_mesh && !r.anti_overhang_mesh;
+    });
+}
+
 }  // namespace
+
+VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
+    VolumeRole role;
+    role.infill_mesh = flagOf(s, "infill_mesh");
+    role.cutting_mesh = flagOf(s, "cutting_mesh");
+    role.support_mesh = flagOf(s, "support_mesh");
+    role.anti_overhang_mesh = flagOf(s, "anti_overhang_mesh");
+    role.surface_only = s.has("magic_mesh_surface_mode") && s.text("magic_mesh_surface_mode") == "surface";
+    role.union_all = !s.has("meshfix_union_all") || s.boolean("meshfix_union_all");
+    role.infill_mesh_order =
+        s.has("infill_mesh_order") ? static_cast<int>(s.integer("infill_mesh_order")) : 0;
+    role.overlap_um = s.has("multiple_mesh_overlap") ? s.lengthMicrons("multiple_mesh_overlap") : 0;
+    role.bounds = mesh.bounds();
+    return role;
+}
 
 std::string GCodeOutput::joined() const {
     std::string text = header + start;
@@ -122,8 +150,12 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     SliceOptions options;
     options.tolerance = toleranceOf(s);
     options.threads = threads;
-    for (const SceneMesh& m : group.meshes)
-        sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
+    for (const SceneMesh& m : group.meshes) {
+        SliceOptions own = options;
+        own.union_all = !m.settings.has("meshfix_union_all") || m.settings.boolean("meshfix_union_all");
+        own.keep_open_polygons = flagOf(m.settings, "meshfix_keep_open_polygons");
+        sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, own, log));
+    }
     OutlineCleanupParams cleanup;
     cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
     cleanup.maximum_resolution_um = simplify ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
@@ -133,6 +165,15 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         const Settings& own = group.meshes[m].settings;
         if (own.has("meshfix_union_all_remove_holes") && own.boolean("meshfix_union_all_remove_holes"))
             removeHoles(sliced.meshes[m], threads);
+        sliced.roles.push_back(volumeRoleOf(own, group.meshes[m].mesh));
+    }
+    const VolumeParams volumes{flagOf(s, "carve_multiple_volumes"),
+                               !s.has("alternate_carve_order") || s.boolean("alternate_carve_order")};
+    combineVolumes(sliced.meshes, sliced.roles, volumes, threads);
+    if (!anyLayerMesh(sliced.roles)) {  // only modifiers: nothing prints, as CuraEngine (0 layers)
+        sliced.heights.clear();
+        for (std::vector<SlicedLayer>& layers : sliced.meshes)
+            layers.clear();
     }
     return sliced;
 }

@@ -9,14 +9,20 @@
 #include "gcode/Header.h"
 #include "pipeline/Scene.h"
 #include "planning/LayerPlan.h"
+#include "slicing/MultiVolumes.h"
 #include "slicing/Slicer.h"
 
 namespace mixengine {
 
 struct SlicedGroup {
     std::vector<LayerZ> heights;
-    std::vector<std::vector<SlicedLayer>> meshes;  ///< [mesh][layer]
+    std::vector<std::vector<SlicedLayer>> meshes;  ///< [mesh][layer], combined (slicing/MultiVolumes.h)
+    std::vector<VolumeRole> roles;                 ///< [mesh] what each mesh is (a model or a modifier)
 };
+
+/// The mesh's part in its group from its resolved settings (infill_mesh, cutting_mesh, support_mesh,
+/// anti_overhang_mesh, infill_mesh_order, multiple_mesh_overlap, meshfix_union_all, …).
+VolumeRole volumeRoleOf(const Settings& settings, const Mesh& mesh);
 
 struct GCodeOutput {
     std::string header;  ///< ;FLAVOR: … or the Griffin block (Cura's GCodePrefix)
@@ -31,7 +37,9 @@ struct GCodeOutput {
     std::string joined() const;
 };
 
-/// Layer heights and outlines of every mesh of `group`.
+/// Layer heights and outlines of every mesh of `group`, combined as CuraEngine combines them (cutting
+/// meshes, carve_multiple_volumes, multiple_mesh_overlap: slicing/MultiVolumes.h). A group of modifier
+/// meshes alone (no mesh that prints layers of its own) has no layers.
 /// `simplify` false keeps the raw slices (only loops under minimum_polygon_circumference go).
 SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simplify = true);
 

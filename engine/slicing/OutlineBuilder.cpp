@@ -103,4 +103,17 @@ Paths buildOutlines(const std::vector<StitchedPath>& loops, double min_area_um2)
     return outlines;
 }
 
+Paths evenOddOutlines(const std::vector<StitchedPath>& loops, double min_area_um2) {
+    Paths kept;
+    for (const StitchedPath& loop : loops) {
+        if (std::abs(ClipperLib::Area(loop.points)) > std::max(min_area_um2, 0.0))
+            kept.push_back(loop.points);
+    }
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(kept, ClipperLib::ptSubject, true);
+    Paths outlines;
+    clipper.Execute(ClipperLib::ctUnion, outlines, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
+    return outlines;
+}
+
 }  // namespace mixengine

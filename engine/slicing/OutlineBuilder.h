@@ -26,4 +26,9 @@ namespace mixengine {
 
 Paths buildOutlines(const std::vector<StitchedPath>& loops, double min_area_um2);
 
+/// meshfix_union_all off (CuraEngine 4.13's even-odd parts): every loop toggles inside and outside,
+/// whatever its winding, so where two shells of one mesh overlap there is a hole. Loops with |area| ≤
+/// min_area_um2 are dropped. Outer contours counter-clockwise, holes clockwise.
+Paths evenOddOutlines(const std::vector<StitchedPath>& loops, double min_area_um2);
+
 }  // namespace mixengine

@@ -47,8 +47,13 @@ Paths PlaneCutter::cut(const Mesh& mesh, std::span<const std::uint32_t> facets, 
     }
     segment_count_ += segments_.size();
     StitchResult stitched = stitcher_.stitch(segments_, options.max_gap_um);
-    for (Path& open : stitched.open_polylines)
+    for (Path& open : stitched.open_polylines) {
+        if (options.keep_open_polygons && open.size() >= 3)
+            stitched.loops.push_back({open, 0.0, 0.0});  // closed by its chord, as CuraEngine 4.13
         open_polylines.push_back(std::move(open));
+    }
+    if (!options.union_all)
+        return evenOddOutlines(stitched.loops, static_cast<double>(options.min_polygon_area_um2));
     return buildOutlines(stitched.loops, static_cast<double>(options.min_polygon_area_um2));
 }
 

@@ -40,6 +40,10 @@ struct SliceOptions {
     coord_um max_gap_um = 100;          ///< gaps up to this size are closed while stitching
     coord_um min_polygon_area_um2 = 0;  ///< loops with |area| below this are dropped (noise)
     int threads = 2;                    ///< layers are sliced in parallel (values < 1 mean 1)
+    /// meshfix_union_all: overlapping shells united (slicing/OutlineBuilder.h); off: even-odd.
+    bool union_all = true;
+    /// meshfix_keep_open_polygons: open pieces closed by their chord and kept in the outlines too.
+    bool keep_open_polygons = false;
 };
 
 struct SlicedLayer {

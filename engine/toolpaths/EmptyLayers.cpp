@@ -10,7 +10,8 @@ bool layerEmpty(const GroupToolpaths& toolpaths, const ToolpathInput& input, std
         return false;
     return std::none_of(input.meshes.begin(), input.meshes.end(), [&](const ToolpathMeshInput& mesh) {
         const std::vector<SlicedLayer>& layers = *mesh.layers;
-        return i < layers.size() && (!layers[i].outlines.empty() || !layers[i].open_polylines.empty());
+        return mesh.role.printsAlone() && i < layers.size() &&
+               (!layers[i].outlines.empty() || !layers[i].open_polylines.empty());
     });
 }
 

@@ -7,6 +7,7 @@
 #include "toolpaths/Adhesion.h"
 #include "toolpaths/EmptyLayers.h"
 #include "toolpaths/ExtruderSkirts.h"
+#include "toolpaths/InfillMeshes.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/PrimeTower.h"
 #include "toolpaths/Support.h"
@@ -19,7 +20,7 @@ std::vector<Paths> unitedModel(const ToolpathInput& input, int threads) {
     parallelFor(model.size(), threads, [&](std::size_t i) {
         Paths all;
         for (const ToolpathMeshInput& mesh : input.meshes) {
-            if (i < mesh.layers->size())
+            if (mesh.role.printsAlone() && i < mesh.layers->size())
                 all.insert(all.end(), (*mesh.layers)[i].outlines.begin(), (*mesh.layers)[i].outlines.end());
         }
         model[i] = input.meshes.size() > 1 ? unionOf(all) : std::move(all);
@@ -131,20 +132,13 @@ void dropEmptyBottomLayers(const ToolpathInput& input, GroupToolpaths& result) {
 GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     GroupToolpaths result;
     result.heights = input.heights;
-    for (const ToolpathMeshInput& mesh : input.meshes) {
-        MeshToolpaths paths;
-        paths.settings = mesh.settings;
-        paths.name = mesh.name;
-        paths.sliced = mesh.layers;
-        paths.layers = generateMeshToolpaths(*mesh.layers, *mesh.settings, threads, mesh.middle_um);
-        result.meshes.push_back(std::move(paths));
-    }
+    result.meshes = generateModelToolpaths(input, threads);
     const std::vector<Paths> model = unitedModel(input, threads);
 
     const RaftLayout raft = raftLayout(*input.global, input.extruders);
     SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled};
     for (const ToolpathMeshInput& mesh : input.meshes)
-        support.meshes.push_back({mesh.settings, mesh.layers});
+        support.meshes.push_back({mesh.settings, mesh.layers, mesh.role});
     SupportResult support_result = generateSupport(support, threads);
     result.support = std::move(support_result.paths);
 

@@ -7,7 +7,8 @@
 // grouped, not yet ordered: ordering, travel and retraction belong to planning. Wall loops with a
 // chosen seam start at points.front() and have fixed_start set.
 //
-// Order of work: each mesh (toolpaths/MeshToolpaths.h), then the support around all meshes
+// Order of work: each mesh (toolpaths/MeshToolpaths.h; infill meshes inside the others,
+// toolpaths/InfillMeshes.h), then the support around all meshes
 // (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
 // (toolpaths/PrimeTower.h), and last the skirt or brim around everything on layer 0
 // (toolpaths/Adhesion.h) with the other extruders' lines outside it (toolpaths/ExtruderSkirts.h);
@@ -23,6 +24,7 @@
 
 #include "settings/Settings.h"
 #include "slicing/LayerHeights.h"
+#include "slicing/MultiVolumes.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/MeshToolpaths.h"
 #include "toolpaths/Raft.h"
@@ -36,6 +38,9 @@ struct ToolpathMeshInput {
     /// The middle of the mesh's bounding box in x and y (the infill pattern's origin); unset: the
     /// middle of its outlines' bounds.
     std::optional<Point2> middle_um;
+    /// A model, or a modifier of the others (infill mesh, support mesh, support blocker;
+    /// toolpaths/InfillMeshes.h, toolpaths/Support.h). Cutting meshes arrive carved and print as models.
+    VolumeRole role;
 };
 
 struct ToolpathInput {
@@ -49,7 +54,8 @@ struct MeshToolpaths {
     const Settings* settings = nullptr;
     std::string name;
     std::vector<MeshLayerGroups> layers;  ///< index = layer
-    /// The mesh's sliced layers (the input's); sliced layer first_sliced_layer + i is layer i.
+    /// The mesh's sliced layers (the input's); sliced layer first_sliced_layer + i is layer i. Null
+    /// for modifier meshes (infill meshes, support meshes, support blockers).
     const std::vector<SlicedLayer>* sliced = nullptr;
 };
 

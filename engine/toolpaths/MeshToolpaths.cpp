@@ -246,55 +246,63 @@ bool outerWallFirst(const Settings& s, int layer) {
            (layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim");
 }
 
-std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
-                                                   const Settings& settings, int threads,
-                                                   const std::optional<Point2>& mesh_middle_um) {
-    std::vector<MeshLayerGroups> result(layers.size());
+MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settings& settings, int threads) {
+    MeshAreas out;
+    out.walls.resize(layers.size());
+    out.inner_areas.resize(layers.size());
+    out.wall_gaps.resize(layers.size());
     std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size()),
         roofing_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
-    std::vector<Paths> inner_areas(layers.size()), wall_gaps(layers.size());
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
-    if (surfaceOnly(settings))
-        return surfaceToolpaths(layers, settings, seam, threads);
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         WallResult walls = generateWalls(adjustedOutlines(layers[i].outlines, settings, layer),
                                          wallParams(settings, meshStyles(settings, layer), refs, layer));
         placeSeams(walls.walls, seam, layer);
         for (ExtrusionPath& path : walls.walls) {
-            (path.feature == Feature::WallOuter ? result[i].outer_walls : result[i].inner_walls)
+            (path.feature == Feature::WallOuter ? out.walls[i].outer_walls : out.walls[i].inner_walls)
                 .push_back(std::move(path));
         }
-        inner_areas[i] = std::move(walls.inner_area);
+        out.inner_areas[i] = std::move(walls.inner_area);
         top_reference[i] = std::move(walls.top_reference);
         bottom_reference[i] = std::move(walls.bottom_reference);
         roofing_reference[i] = std::move(walls.roofing_reference);
-        wall_gaps[i] = std::move(walls.perimeter_gaps);
+        out.wall_gaps[i] = std::move(walls.perimeter_gaps);
     });
-
-    const std::vector<SkinAreas> areas = computeSkinAreas(
+    out.skin = computeSkinAreas(
         {&top_reference, &bottom_reference, refs.roofing_wall >= 0 ? &roofing_reference : nullptr},
-        inner_areas, skinParams(settings, refs), threads);
-    std::vector<Paths> infill_areas(layers.size());
+        out.inner_areas, skinParams(settings, refs), threads);
+    out.own_infill.resize(layers.size());
     for (std::size_t i = 0; i < layers.size(); ++i)
-        infill_areas[i] = areas[i].infill;
-    const std::vector<LayerInfill> infill = arrangeInfill(infill_areas, infillLayerParams(settings), threads);
+        out.own_infill[i] = out.skin[i].infill;
+    return out;
+}
+
+std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vector<SlicedLayer>& layers,
+                                               const Settings& settings, int threads,
+                                               const std::optional<Point2>& mesh_middle_um) {
+    std::vector<MeshLayerGroups> result = std::move(areas.walls);
+    result.resize(layers.size());
+    const std::vector<LayerInfill> infill =
+        arrangeInfill(areas.own_infill, infillLayerParams(settings), threads);
     const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
     const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
 
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         const coord_um z = layers[i].print_z;
+        const SkinAreas& skin = areas.skin[i];
         const MeshStyles styles = meshStyles(settings, layer);
         const SkinPathParams skin_params = skinPathParams(settings, layer, z, styles);
-        result[i].skin = generateSkinPaths(areas[i].skin, areas[i].roofing, skin_params);
+        result[i].skin = generateSkinPaths(skin.skin, skin.roofing, skin_params);
         if (fillsPerimeterGaps(settings)) {
             for (ExtrusionPath& line : perimeterGapLines(
-                     perimeterGaps(wall_gaps[i], inner_areas[i], areas[i], settings, layer), skin_params))
+                     perimeterGaps(areas.wall_gaps[i], areas.inner_areas[i], skin, settings, layer),
+                     skin_params))
                 result[i].skin.push_back(std::move(line));
         }
-        result[i].comb_area = combAreaFor(layers[i].outlines, areas[i], settings);
+        result[i].comb_area = combAreaFor(layers[i].outlines, skin, settings);
         InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
         const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
@@ -305,6 +313,19 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         result[i].ironing = ironing(layers, settings, i);
     });
     return result;
+}
+
+bool surfaceOnlyMesh(const Settings& settings) {
+    return surfaceOnly(settings);
+}
+
+std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
+                                                   const Settings& settings, int threads,
+                                                   const std::optional<Point2>& mesh_middle_um) {
+    if (surfaceOnly(settings))
+        return surfaceToolpaths(layers, settings, seamParamsFrom(settings, meshCentre(layers)), threads);
+    return generateMeshPaths(generateMeshAreas(layers, settings, threads), layers, settings, threads,
+                             mesh_middle_um);
 }
 
 }  // namespace mixengine

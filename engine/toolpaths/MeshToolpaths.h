@@ -26,6 +26,7 @@
 #include "settings/Settings.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/Skin.h"
 
 namespace mixengine {
 
@@ -49,6 +50,31 @@ struct MeshLayerGroups {
 /// CuraEngine 4.13) always on layer 0 with a brim.
 bool outerWallFirst(const Settings& s, int layer);
 
+/// A mesh half done, in two steps as CuraEngine 4.13 works so that infill meshes can take part of
+/// the infill of the meshes before them (toolpaths/InfillMeshes.h): the walls (in `walls`, the
+/// other groups still empty), the areas left inside them, the skin areas, and the infill area the
+/// mesh prints with its own pattern (`own_infill`; at first the skin areas' infill).
+struct MeshAreas {
+    std::vector<MeshLayerGroups> walls;  ///< [layer] inner and outer walls only
+    std::vector<Paths> inner_areas;      ///< [layer] inside the innermost wall
+    std::vector<Paths> wall_gaps;        ///< [layer] the gaps between the walls
+    std::vector<SkinAreas> skin;         ///< [layer]
+    std::vector<Paths> own_infill;       ///< [layer]
+};
+
+/// Step 1: walls and areas (not for magic_mesh_surface_mode "surface": see surfaceOnlyMesh).
+MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settings& settings, int threads);
+
+/// Step 2: the skin, infill (in `own_infill`) and ironing lines added to the walls. Perimeter gaps
+/// and combing see the skin areas' infill, not `own_infill`, as CuraEngine's.
+std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vector<SlicedLayer>& layers,
+                                               const Settings& settings, int threads,
+                                               const std::optional<Point2>& mesh_middle_um);
+
+/// magic_mesh_surface_mode "surface": generateMeshToolpaths prints the outlines alone.
+bool surfaceOnlyMesh(const Settings& settings);
+
+/// Both steps (or the surface alone).
 /// `mesh_middle_um`: the middle of the mesh's bounding box in x and y (CuraEngine's infill origin);
 /// without it, the middle of the bounds of all its outlines.
 std::vector<MeshLayerGroups> generateMeshToolpaths(

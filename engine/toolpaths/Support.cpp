@@ -101,15 +101,61 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
     return fills;
 }
 
+bool supportsOverhangs(const SupportMesh& mesh) {
+    return mesh.role.printsAlone() && mesh.settings->boolean("support_enable");
+}
+
+/// Per layer the union of the outlines of the meshes `which` picks (empty vector: none picked).
+template <typename Pick>
+std::vector<Paths> outlinesOf(const SupportInput& in, Pick which, int threads) {
+    std::vector<const SupportMesh*> picked;
+    for (const SupportMesh& mesh : in.meshes) {
+        if (which(mesh))
+            picked.push_back(&mesh);
+    }
+    if (picked.empty())
+        return {};
+    std::vector<Paths> layers(in.heights->size());
+    parallelFor(layers.size(), threads, [&](std::size_t i) {
+        Paths all;
+        for (const SupportMesh* mesh : picked) {
+            if (i < mesh->layers->size())
+                all.insert(all.end(), (*mesh->layers)[i].outlines.begin(), (*mesh->layers)[i].outlines.end());
+        }
+        layers[i] = unionOf(all);
+    });
+    return layers;
+}
+
+SupportMeshAreas supportMeshAreas(const SupportInput& in, int threads) {
+    SupportMeshAreas areas;
+    areas.drop_down = outlinesOf(
+        in,
+        [](const SupportMesh& m) {
+            return m.role.support_mesh && m.settings->boolean("support_mesh_drop_down");
+        },
+        threads);
+    areas.in_place = outlinesOf(
+        in,
+        [](const SupportMesh& m) {
+            return m.role.support_mesh && !m.settings->boolean("support_mesh_drop_down");
+        },
+        threads);
+    return areas;
+}
+
 Overhangs collectOverhangs(const SupportInput& in, int threads) {
     Overhangs all;
     all.basic.resize(in.heights->size());
     all.full.resize(in.heights->size());
+    const std::vector<Paths> blockers = outlinesOf(
+        in, [](const SupportMesh& m) { return m.role.anti_overhang_mesh; }, threads);
     for (const SupportMesh& mesh : in.meshes) {
-        if (!mesh.settings->boolean("support_enable"))
+        if (!supportsOverhangs(mesh))
             continue;
         const Overhangs own =
-            detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees("support_angle"), threads);
+            detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees("support_angle"), threads,
+                            blockers.empty() ? nullptr : &blockers);
         parallelFor(all.basic.size(), threads, [&](std::size_t i) {
             if (i >= own.basic.size())
                 return;
@@ -135,13 +181,14 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
     paths.resize(in.heights->size());
     bool wanted = false;
     for (const SupportMesh& mesh : in.meshes)
-        wanted = wanted || mesh.settings->boolean("support_enable");
+        wanted = wanted || supportsOverhangs(mesh) || mesh.role.support_mesh;
     if (!wanted)
         return result;
     const Settings& g = *in.global;
     const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
     const std::vector<SupportLayerAreas> areas = computeSupportAreas(
-        *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads);
+        *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads,
+        supportMeshAreas(in, threads));
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())

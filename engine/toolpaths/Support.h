@@ -1,5 +1,6 @@
 #pragma once
-// Support for one mesh group: overhangs of every mesh with support_enable (its own support_angle),
+// Support for one mesh group: overhangs of every mesh with support_enable (its own support_angle) less
+// the support blockers, the support meshes (SupportMesh::role),
 // support areas (toolpaths/SupportAreas.h) around all meshes, and their lines
 // (toolpaths/SupportPaths.h). The support keys are read from the extruder train that prints the
 // support infill (support_infill_extruder_nr; on layer 0 support_extruder_nr_layer_0), the
@@ -13,6 +14,7 @@
 
 #include "settings/Settings.h"
 #include "slicing/LayerHeights.h"
+#include "slicing/MultiVolumes.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/ExtrusionPath.h"
 
@@ -21,6 +23,11 @@ namespace mixengine {
 struct SupportMesh {
     const Settings* settings = nullptr;
     const std::vector<SlicedLayer>* layers = nullptr;
+    /// Models with support_enable have their overhangs supported; a support mesh (support_mesh) is
+    /// support where it is — carried down to the plate or the model with support_mesh_drop_down —
+    /// even without support_enable; a support blocker (anti_overhang_mesh) takes its volume out of
+    /// every overhang, so nothing under it is supported for it. Infill meshes take no part.
+    VolumeRole role;
 };
 
 struct SupportInput {

@@ -61,6 +61,24 @@ void removeFloating(std::vector<SupportLayerAreas>& layers, int threads) {
         layers[i].support = std::move(kept[i]);
 }
 
+/// Top-down: the support meshes' areas, the drop-down ones carried down, less the model here and
+/// bottom_gap layers below.
+std::vector<Paths> supportMeshSupport(const SupportMeshAreas& meshes, const std::vector<Paths>& blocked) {
+    const std::size_t n = blocked.size();
+    std::vector<Paths> support(n);
+    Paths current;
+    for (std::size_t i = n; i-- > 0;) {
+        if (i < meshes.drop_down.size() && !meshes.drop_down[i].empty())
+            current = unionOf(current, meshes.drop_down[i]);
+        if (!current.empty())
+            current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
+        support[i] = current;
+        if (i < meshes.in_place.size() && !meshes.in_place[i].empty())
+            support[i] = unionOf(support[i], differenceOf(meshes.in_place[i], blocked[i]));
+    }
+    return support;
+}
+
 void keepColumnsOnThePlate(std::vector<SupportLayerAreas>& layers) {
     for (std::size_t i = 1; i < layers.size(); ++i)
         layers[i].support = intersectAll(layers[i].support, layers[i - 1].support);
@@ -93,7 +111,7 @@ void splitInterfaces(std::vector<SupportLayerAreas>& out, const std::vector<Path
 }  // namespace
 
 Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vector<LayerZ>& heights,
-                          double angle_degrees, int threads) {
+                          double angle_degrees, int threads, const std::vector<Paths>* blockers) {
     Overhangs result;
     result.basic.resize(layers.size());
     result.full.resize(layers.size());
@@ -105,6 +123,8 @@ Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vec
         const coord_um allowed = std::max<coord_um>(0, std::llround(double(thickness) * slope));
         const Paths& here = layers[i].outlines;
         result.basic[i] = differenceOf(here, offsetPolygons(layers[i - 1].outlines, allowed));
+        if (blockers && i < blockers->size() && !(*blockers)[i].empty())
+            result.basic[i] = differenceOf(result.basic[i], (*blockers)[i]);
         if (!result.basic[i].empty())
             result.full[i] = intersectAll(offsetPolygons(result.basic[i], allowed + 100), here);
     });
@@ -113,7 +133,7 @@ Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vec
 
 std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& model,
                                                    const Overhangs& overhangs, const SupportAreaParams& p,
-                                                   int threads) {
+                                                   int threads, const SupportMeshAreas& meshes) {
     const std::size_t n = model.size();
     std::vector<Paths> simple(n), blocked(n);
     parallelFor(n, threads, [&](std::size_t i) { simple[i] = cleanPolygons(model[i], kSimplifyUm); });
@@ -122,12 +142,15 @@ std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& mod
         blocked[i] = gap > 0 && i >= gap ? unionOf(simple[i], simple[i - gap]) : simple[i];
     });
     const std::vector<Paths> propagated = propagateDown(overhangs.full, blocked, p);
+    const std::vector<Paths> from_meshes = supportMeshSupport(meshes, blocked);
     std::vector<SupportLayerAreas> out(n);
     const std::size_t top = static_cast<std::size_t>(std::max(0, p.top_gap_layers));
     parallelFor(n, threads, [&](std::size_t i) {
-        if (propagated[i].empty())
+        if (propagated[i].empty() && from_meshes[i].empty())
             return;
         Paths area = p.offset_um != 0 ? offsetMiter(propagated[i], p.offset_um) : propagated[i];
+        if (!from_meshes[i].empty())
+            area = unionOf(area, from_meshes[i]);
         area = differenceOf(area, disallowedArea(simple[i], overhangs.basic[i], p));
         if (top > 0 && i + top < n)  // the overhangs' extension must not reach into the top gap
             area = differenceOf(area, simple[i + top]);

@@ -49,14 +49,25 @@ struct Overhangs {
     std::vector<Paths> full;   ///< [layer] basic grown by d + 0.1 mm within the layer: to support
 };
 
-/// Per layer the overhangs of `layers` (angle in degrees from vertical).
+/// Per layer the overhangs of `layers` (angle in degrees from vertical). `blockers` (may be null):
+/// per layer the support blockers' area, taken out of the basic overhang (as CuraEngine 4.13: the
+/// full overhang grows from what is left).
 Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vector<LayerZ>& heights,
-                          double angle_degrees, int threads);
+                          double angle_degrees, int threads, const std::vector<Paths>* blockers = nullptr);
+
+/// The support meshes' areas per layer: `drop_down` (support_mesh_drop_down) is carried down to the
+/// plate or the model, `in_place` stays on its layer; both are handled apart from the overhangs'
+/// support, as CuraEngine's support-mesh placeholder (no support_offset).
+struct SupportMeshAreas {
+    std::vector<Paths> drop_down;  ///< [layer], or empty
+    std::vector<Paths> in_place;   ///< [layer], or empty
+};
 
 /// `model[n]`: every mesh's outlines on layer n (united); `overhangs`: those of the meshes with
 /// support_enable, united per layer.
 std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& model,
                                                    const Overhangs& overhangs,
-                                                   const SupportAreaParams& params, int threads);
+                                                   const SupportAreaParams& params, int threads,
+                                                   const SupportMeshAreas& meshes = {});
 
 }  // namespace mixengine

@@ -143,7 +143,8 @@ def test_mixing_settings_exist_show_and_carry_the_printer_defaults(gradient):
     # the printer's overrides of MixEngine keys, which Uranium drops, were applied by the plugin
     assert probe["mixing_dialect"]["default_value"] == "eb_axes"
     assert probe["mixing_channel_colors"]["default_value"] == "#f4f4f4,#d7263d"
-    assert probe["mixing_gradient_start"]["settable_per_mesh"] and not probe["mixing_mode"]["settable_per_mesh"]
+    # issue 16: a model (e.g. a cutting mesh's region) may have its own mixing_mode
+    assert probe["mixing_gradient_start"]["settable_per_mesh"] and probe["mixing_mode"]["settable_per_mesh"]
     assert probe["mixing_mode"]["options_type"] == "OrderedDict"  # else the drop-down shows no items
     assert (sent["mixing_mode"], sent["mixing_gradient_start"], sent["mixing_gradient_end"]) == ("gradient", "40", "80")
     assert sent["mixing_dialect"] == "eb_axes"

@@ -61,7 +61,8 @@ def test_per_object_keys_follow_settable_per_mesh():
     mixing = dict(SettingFragments.categories(SettingFragments.loadFragment(SETTINGS / "mixengine" / "mixing.def.json")))
     per_mesh = SettingFragments.settablePerMesh("mixing", mixing["mixing"])
     assert "mixing_gradient_start" in per_mesh and "mixing_ratio" in per_mesh
-    assert "mixing_mode" not in per_mesh and "mixing_dialect" not in per_mesh
+    assert "mixing_mode" in per_mesh  # issue 16: a model's own mode (a cutting mesh's region)
+    assert "mixing_dialect" not in per_mesh
 
 
 @pytest.mark.parametrize("printer, expected", [

@@ -46,6 +46,7 @@ class HarnessExtension(Extension):
         self._finished = False
         self._models = list(self._job.get("models") or [DEFAULT_MODEL])
         self._loaded_nodes = set()
+        self._model_nodes = []  # [nodes of model n], in load order
         self._installSendHook()
         app.initializationFinished.connect(self._onInitializationFinished)
         Logger.log("i", "[CuraHarness] job %s", job_path)
@@ -149,6 +150,10 @@ class HarnessExtension(Extension):
         loaded = self._status.setdefault("models", [])
         if len(loaded) == len(self._models):
             self._event("models_loaded")
+            if self._job.get("support_blockers"):
+                added = HarnessSteps.addSupportBlockers(self._app, self._model_nodes, self._job["support_blockers"])
+                self._status["support_blockers"] = added
+                self._event("support_blockers_added")
             if self._job.get("actions"):
                 HarnessSteps.ActionRunner(self._app, self._status, self._job["actions"], self._afterActions).start()
             else:
@@ -167,6 +172,7 @@ class HarnessExtension(Extension):
         new_nodes = [n for n in DepthFirstIterator(root)
                      if n.callDecoration("isSliceable") and id(n) not in self._loaded_nodes]
         self._loaded_nodes.update(id(n) for n in new_nodes)
+        self._model_nodes.append(new_nodes)
         if isinstance(entry, dict) and "extruder" in entry:
             extruder = self._app.getGlobalContainerStack().extruderList[int(entry["extruder"])]
             for node in new_nodes:

@@ -174,6 +174,26 @@ def setPerObjectSettings(node, values):
         top.addInstance(instance)
 
 
+def addSupportBlockers(app, model_nodes, blockers):
+    """Support blockers as the toolbar's Support Blocker tool adds them: the tool's own method makes its
+    10 mm cube (anti_overhang_mesh) on model `model` at `position` (scene frame, mm, Y up), as a click on
+    that model at that point does. Returns the names and anti_overhang_mesh values of the cubes added."""
+    tool = app.getController().getTool("SupportEraser")
+    if tool is None:
+        raise RuntimeError("the Support Blocker tool (SupportEraser) is not loaded")
+    added = []
+    for blocker in blockers:
+        parent = model_nodes[int(blocker.get("model", 0))][0]
+        before = set(id(n) for n in DepthFirstIterator(app.getController().getScene().getRoot()))
+        tool._createEraserMesh(parent, Vector(*blocker["position"]))
+        for node in DepthFirstIterator(app.getController().getScene().getRoot()):
+            if id(node) not in before:
+                stack = node.callDecoration("getStack")
+                added.append({"name": node.getName(),
+                              "anti_overhang_mesh": bool(stack and stack.getProperty("anti_overhang_mesh", "value"))})
+    return added
+
+
 def dumpGcode(app, path):
     """scene.gcode_dict[0] as {"chunks": [...]} (chunk boundaries kept)."""
     scene = app.getController().getScene()

@@ -36,7 +36,7 @@ RaftPrint raftPrint() {
     ToolpathInput in{&r.machine.global,
                      &r.machine.extruders,
                      r.stack.heights,
-                     {{&r.machine.global, "cube", &r.stack.layers, std::nullopt}}};
+                     {{&r.machine.global, "cube", &r.stack.layers, std::nullopt, {}}}};
     r.toolpaths = generateGroupToolpaths(in, 2);
     PlannerState state;
     r.plan = planPrint(r.toolpaths, r.machine.global, r.machine.extruders, state);

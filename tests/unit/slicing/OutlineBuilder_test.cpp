@@ -82,5 +82,26 @@ TEST(SlicingOutlines, DropsZeroAndTinyLoops) {
     EXPECT_EQ(sortedAreas(buildOutlines(loops, 30)), (std::vector<double>{10000}));
 }
 
+TEST(SlicingOutlines, WithoutUnionAllOverlappingShellsLeaveAHoleWhereTheyOverlap) {
+    // meshfix_union_all off: two outward shells overlapping by 50 x 100 — even-odd, so the overlap is empty
+    const std::vector<StitchedPath> loops{loopAlongFacets(square(0, 0, 100)),
+                                          loopAlongFacets(square(50, 0, 100))};
+    double united = 0, even_odd = 0;
+    for (const Path& p : buildOutlines(loops, 0))
+        united += ClipperLib::Area(p);
+    for (const Path& p : evenOddOutlines(loops, 0))
+        even_odd += ClipperLib::Area(p);
+    EXPECT_DOUBLE_EQ(united, 15000);
+    EXPECT_DOUBLE_EQ(even_odd, 10000);
+    EXPECT_EQ(evenOddOutlines(loops, 0).size(), 2U);  // the two 50 x 100 strips left
+}
+
+TEST(SlicingOutlines, EvenOddDropsTinyLoopsAndIgnoresWinding) {
+    const std::vector<StitchedPath> loops{loopMixedFacets(reversed(square(0, 0, 100))),
+                                          loopMixedFacets(square(25, 25, 50)),
+                                          loopMixedFacets(square(500, 0, 1))};
+    EXPECT_EQ(sortedAreas(evenOddOutlines(loops, 10)), (std::vector<double>{-2500, 10000}));
+}
+
 }  // namespace
 }  // namespace mixengine

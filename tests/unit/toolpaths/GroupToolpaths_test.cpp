@@ -36,8 +36,8 @@ Group twoMeshes(const SettingValues& user) {
     test::fill(g.a, 0, 30, {square(50'000, 50'000, 10'000)});
     test::fill(g.b, 0, 30, {square(70'000, 50'000, 10'000)});
     ToolpathInput in{&g.machine.global, &g.machine.extruders, g.a.heights, {}};
-    in.meshes.push_back({&g.meshes[0], "a", &g.a.layers, std::nullopt});
-    in.meshes.push_back({&g.meshes[1], "b", &g.b.layers, std::nullopt});
+    in.meshes.push_back({&g.meshes[0], "a", &g.a.layers, std::nullopt, {}});
+    in.meshes.push_back({&g.meshes[1], "b", &g.b.layers, std::nullopt, {}});
     g.paths = generateGroupToolpaths(in, 2);
     return g;
 }
@@ -156,7 +156,7 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
     test::Stack s = test::prismStack(60);
     test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
     test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt, {}}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     const Paths stem{rect(50'000 - 699, 50'000 - 699, 60'000 + 699, 60'000 + 699)};
     for (int i = 0; i < 60; ++i) {
@@ -187,7 +187,7 @@ TEST(GroupToolpaths, RaftUnderATeeLiftsTheModelAndTakesTheFirstLayersSupport) {
     test::Stack s = test::prismStack(60);  // 0.3 mm first layer, then 0.1 mm
     test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
     test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt, {}}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     const RaftLayout layout = raftLayout(m.global, &m.extruders);
     EXPECT_TRUE(g.adhesion.empty());  // no skirt or brim under a raft
@@ -227,7 +227,7 @@ TEST(GroupToolpaths, EmptyBottomLayersAreDroppedAndThePrintStartsAtTheFirstHeigh
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
     test::Stack s = test::prismStack(30);
     test::fill(s, 3, 30, {square(50'000, 50'000, 10'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "late", &s.layers, std::nullopt}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "late", &s.layers, std::nullopt, {}}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     EXPECT_EQ(g.first_sliced_layer, 3U);
     ASSERT_EQ(g.heights.size(), 27U);
@@ -246,7 +246,8 @@ TEST(GroupToolpaths, TheSkirtGoesAroundTheFirstLayerThatPrints) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "skirt"}});
     test::Stack s = test::prismStack(30);
     test::fill(s, 2, 28, {square(50'000, 50'000, 10'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "middle", &s.layers, std::nullopt}}};
+    ToolpathInput in{
+        &m.global, &m.extruders, s.heights, {{&m.global, "middle", &s.layers, std::nullopt, {}}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     EXPECT_EQ(g.first_sliced_layer, 2U);
     ASSERT_EQ(g.heights.size(), 28U);
@@ -262,7 +263,7 @@ TEST(GroupToolpaths, TheSkirtGoesAroundTheFirstLayerThatPrints) {
 TEST(GroupToolpaths, NothingToPrintDropsEveryLayer) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
     test::Stack s = test::prismStack(5);
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "empty", &s.layers, std::nullopt}}};
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "empty", &s.layers, std::nullopt, {}}}};
     const GroupToolpaths g = generateGroupToolpaths(in, 2);
     EXPECT_TRUE(g.heights.empty());
     EXPECT_EQ(g.first_sliced_layer, 5U);
