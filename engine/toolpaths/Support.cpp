@@ -1,8 +1,10 @@
 #include "toolpaths/Support.h"
 
 #include <cmath>
+#include <optional>
 
 #include "common/ParallelFor.h"
+#include "toolpaths/InfillLayers.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/SupportAreas.h"
 #include "toolpaths/SupportPaths.h"
@@ -101,6 +103,28 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
     return fills;
 }
 
+/// The body's infill arrangement (toolpaths/InfillLayers.h) as CuraEngine's gradual support
+/// (gradual_support_infill_steps, every gradual_support_infill_step_height; its upper layers are
+/// looked at about every 8 layers) and combined support layers (support_infill_sparse_thickness);
+/// nullopt when neither is on.
+std::optional<InfillLayerParams> arrangement(const Settings& body, coord_um layer_height) {
+    const coord_um h = std::max<coord_um>(layer_height, 1);
+    InfillLayerParams p;
+    if (body.has("gradual_support_infill_steps"))
+        p.gradual_steps =
+            static_cast<int>(std::max<long long>(0, body.integer("gradual_support_infill_steps")));
+    if (body.has("gradual_support_infill_step_height"))
+        p.gradual_step_layers = static_cast<int>(
+            std::max<coord_um>(1, (body.lengthMicrons("gradual_support_infill_step_height") + h / 2) / h));
+    p.small_gaps_heuristic = true;
+    if (body.has("support_infill_sparse_thickness"))
+        p.combine_layers = static_cast<int>(
+            std::max<coord_um>(1, (body.lengthMicrons("support_infill_sparse_thickness") + h / 2) / h));
+    if (p.gradual_steps <= 0 && p.combine_layers <= 1)
+        return std::nullopt;
+    return p;
+}
+
 Overhangs collectOverhangs(const SupportInput& in, int threads) {
     Overhangs all;
     all.basic.resize(in.heights->size());
@@ -142,11 +166,19 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
     const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
     const std::vector<SupportLayerAreas> areas = computeSupportAreas(
         *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads);
+    std::vector<LayerInfill> arranged;
+    if (const std::optional<InfillLayerParams> params = arrangement(body, g.lengthMicrons("layer_height"))) {
+        std::vector<Paths> bodies(areas.size());
+        for (std::size_t i = 0; i < areas.size(); ++i)
+            bodies[i] = areas[i].support;
+        arranged = arrangeInfill(bodies, *params, threads);
+    }
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())
             return;
-        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z);
+        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z,
+                                     arranged.empty() ? nullptr : &arranged[i]);
     });
     if (areas.empty())
         return result;
