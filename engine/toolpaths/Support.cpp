@@ -82,6 +82,10 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
     fills.body.angle_degrees = angleFor(body, "support_infill_angles", layer, 0);
     fills.body.connect_zigzags =
         body.has("support_connect_zigzags") && body.boolean("support_connect_zigzags");
+    if (body.has("support_skip_some_zags") && body.boolean("support_skip_some_zags") &&
+        body.has("support_zag_skip_count"))
+        fills.body.zag_skip_count =
+            static_cast<int>(std::max<long long>(0, body.integer("support_zag_skip_count")));
     fills.body.wall_count =
         body.has("support_wall_count") ? static_cast<int>(body.integer("support_wall_count")) : 0;
     if (layer <= 0) {  // as CuraEngine: the first layer of support is a grid with one more wall

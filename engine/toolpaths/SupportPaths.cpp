@@ -33,6 +33,7 @@ InfillParams infillParams(const SupportFill& fill, Feature feature, coord_um z) 
     p.flow = fill.style.flow;
     p.extruder = fill.style.extruder;
     p.zigzag_end_pieces = fill.connect_zigzags;
+    p.zag_skip_count = fill.zag_skip_count;
     return p;
 }
 

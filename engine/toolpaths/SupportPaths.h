@@ -30,6 +30,7 @@ struct SupportFill {
     double angle_degrees = 0;
     int wall_count = 0;
     bool connect_zigzags = false;  ///< support_connect_zigzags: zigzag with its end pieces
+    int zag_skip_count = 0;        ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
     FeatureStyle style;
 };
 
