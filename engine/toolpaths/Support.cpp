@@ -129,6 +129,18 @@ std::optional<InfillLayerParams> arrangement(const Settings& body, coord_um laye
     return p;
 }
 
+/// The bodies' infill arrangement; empty when neither gradual support nor combined layers are on.
+std::vector<LayerInfill> arrangedBodies(const std::vector<SupportLayerAreas>& areas, const Settings& body,
+                                        coord_um layer_height, int threads) {
+    const std::optional<InfillLayerParams> params = arrangement(body, layer_height);
+    if (!params)
+        return {};
+    std::vector<Paths> bodies(areas.size());
+    for (std::size_t i = 0; i < areas.size(); ++i)
+        bodies[i] = areas[i].support;
+    return arrangeInfill(bodies, *params, threads);
+}
+
 Overhangs collectOverhangs(const SupportInput& in, int threads) {
     Overhangs all;
     all.basic.resize(in.heights->size());
@@ -146,6 +158,35 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
         });
     }
     return all;
+}
+
+/// The support brim's loops inside `outline` (see the header); `outline` becomes what is left inside them.
+std::vector<ExtrusionPath> supportBrim(const Settings& s, int extruder, Paths& outline) {
+    std::vector<ExtrusionPath> loops;
+    const int count =
+        s.has("support_brim_line_count") ? static_cast<int>(s.integer("support_brim_line_count")) : 0;
+    if (outline.empty() || count <= 0)
+        return loops;
+    FeatureStyle style = featureStyle(s,
+                                      {"skirt_brim_line_width", "skirt_brim_speed",
+                                       "skirt_brim_material_flow", "support_infill_extruder_nr"},
+                                      0);
+    style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");
+    style.extruder = extruder;
+    const coord_um w = std::max<coord_um>(style.width_um, 1);
+    const double smallest_hole_um2 = 100.0 * double(w) * double(w);
+    for (int i = 0; i < count; ++i) {
+        Paths ring = offsetPolygons(outline, -(w / 2 + coord_um(i) * w));
+        if (ring.empty())
+            break;
+        std::erase_if(ring, [&](const Path& p) {
+            const double area = ClipperLib::Area(p);
+            return area < 0 && area > -smallest_hole_um2;
+        });
+        appendStyledLoops(ring, Feature::Skirt, style, loops);
+    }
+    outline = intersectAll(outline, offsetPolygons(outline, -coord_um(count) * w));
+    return loops;
 }
 
 }  // namespace
@@ -168,15 +209,15 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         return result;
     const Settings& g = *in.global;
     const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
-    const std::vector<SupportLayerAreas> areas = computeSupportAreas(
+    std::vector<SupportLayerAreas> areas = computeSupportAreas(
         *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads);
-    std::vector<LayerInfill> arranged;
-    if (const std::optional<InfillLayerParams> params = arrangement(body, g.lengthMicrons("layer_height"))) {
-        std::vector<Paths> bodies(areas.size());
-        for (std::size_t i = 0; i < areas.size(); ++i)
-            bodies[i] = areas[i].support;
-        arranged = arrangeInfill(bodies, *params, threads);
-    }
+    if (areas.empty())
+        return result;
+    result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
+    if (!in.raft && body.has("support_brim_enable") && body.boolean("support_brim_enable"))
+        result.brim = supportBrim(body, extruderOf(g, "support_infill_extruder_nr"), areas[0].support);
+    const std::vector<LayerInfill> arranged =
+        arrangedBodies(areas, body, g.lengthMicrons("layer_height"), threads);
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())
@@ -184,9 +225,6 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z,
                                      arranged.empty() ? nullptr : &arranged[i]);
     });
-    if (areas.empty())
-        return result;
-    result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
     if (in.raft && !paths.empty() && !paths[0].empty()) {
         result.filler = supportLayerPaths(areas[0], layerFills(in, -1), 0);
         paths[0].clear();
