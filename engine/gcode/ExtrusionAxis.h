@@ -25,6 +25,7 @@ class ExtrusionAxis {
     ExtrusionAxis(char letter, bool relative) : letter_(letter), relative_(relative) {}
 
     char letter() const { return letter_; }
+    void setLetter(char letter) { letter_ = letter; }  ///< MACH3: A, B, ... per extruder
     bool relative() const { return relative_; }
 
     /// Moves the axis by `delta` (axis unit) and returns the word to write, e.g. "E12.34567".

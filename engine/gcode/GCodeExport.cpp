@@ -19,6 +19,8 @@ GCodeExport::GCodeExport(const ExportParams& params)
       motion_(params.motion_flavor),
       temperatures_(params.temperatures) {
     state().prime_speed_mm_s = params.prime_speed_mm_s;
+    if (params.mach3_axes)
+        dialect_->setAxisLetter('A');
 }
 
 GCodeExport::ExtruderState& GCodeExport::state() {
@@ -43,6 +45,8 @@ std::string GCodeExport::xyWords(const Point2& to) const {
 void GCodeExport::selectExtruder(const ToolChange& change) {
     if (change.extruder == extruder_)
         return;
+    if (params_.bfb)
+        out_ += bfb_.stop();
     line("T" + std::to_string(change.extruder));
     extruder_ = change.extruder;
     params_.filament_diameter_mm = change.filament_diameter_mm;
@@ -54,6 +58,8 @@ void GCodeExport::selectExtruder(const ToolChange& change) {
         fan_ratio_ = -1;
     }
     state();  // a first use starts with nothing retracted, primed at its own prime speed
+    if (params_.mach3_axes)
+        dialect_->setAxisLetter(static_cast<char>('A' + change.extruder));
     resetExtrusionAxis();
 }
 
@@ -111,9 +117,32 @@ double GCodeExport::volumeOnAxis(double volume_mm3) const {
     return params_.volumetric ? volume_mm3 : filamentMm(volume_mm3);
 }
 
+void GCodeExport::bfbTravel(const Point2& to, coord_um z, double speed_mm_s) {
+    out_ += bfb_.stop();
+    line(bfbMove({to.X - offset_.X, to.Y - offset_.Y}, z, static_cast<float>(speed_mm_s * 60.0)));
+    timeMove(to, z, 0, speed_mm_s, moveFeature());
+    position_ = to;
+    z_ = z;
+}
+
+void GCodeExport::bfbExtrude(const Point2& to, double volume_mm3, double speed_mm_s) {
+    const double filament_mm = filamentMm(volume_mm3);
+    const double length_mm = std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / 1000.0;
+    std::string before;
+    const double feedrate =
+        bfb_.extrude(length_mm > 0 ? filament_mm / length_mm : 0.0, speed_mm_s, extruder_, before);
+    out_ += before;
+    state().extruded += volumeOnAxis(volume_mm3);
+    line(bfbMove({to.X - offset_.X, to.Y - offset_.Y}, z_, feedrate));
+    timeMove(to, z_, filament_mm, speed_mm_s, extrusion_feature_);
+    position_ = to;
+}
+
 void GCodeExport::travel(const Point2& to, double speed_mm_s) {
     if (to == position_)
         return;
+    if (params_.bfb)
+        return bfbTravel(to, z_, speed_mm_s);
     line("G0" + feedrateWord(speed_mm_s) + xyWords(to));
     timeMove(to, z_, 0, speed_mm_s, moveFeature());
     position_ = to;
@@ -123,6 +152,11 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
     layer_z_ = z - hop_um_;
     if (z == z_)
         return;
+    if (params_.bfb) {  // every BFB move carries Z: the next one goes there (as CuraEngine)
+        timeMove(position_, z, 0, speed_mm_s, moveFeature());
+        z_ = z;
+        return;
+    }
     timeMove(position_, z, 0, speed_mm_s, moveFeature());
     line("G0" + feedrateWord(speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z)));
     z_ = z;
@@ -134,6 +168,8 @@ void GCodeExport::hopTo(coord_um hop_um, bool rewrite) {
     const coord_um layer = layer_z_;
     hop_um_ = hop_um;
     if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
+        if (params_.bfb)
+            return;
         line("G0" + feedrateWord(params_.z_hop_speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z_)));
         return;
     }
@@ -141,6 +177,8 @@ void GCodeExport::hopTo(coord_um hop_um, bool rewrite) {
 }
 
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {
+    if (params_.bfb)
+        return bfbExtrude(to, volume_mm3, speed_mm_s);
     if (retracted() || hop_um_ > 0 || state().extra_prime_mm3 > 0)
         unretract();
     const double e = volumeOnAxis(volume_mm3);
@@ -161,6 +199,8 @@ void GCodeExport::retract() {
 }
 
 void GCodeExport::retractTo(const RetractionConfig& config) {
+    if (params_.bfb)
+        return;  // the firmware retracts when the motor stops (M103)
     ExtruderState& s = state();
     const double change_mm = config.amount_mm - s.retracted_mm;
     if (std::abs(change_mm) < 1e-6)
@@ -184,6 +224,19 @@ void GCodeExport::retractTo(const RetractionConfig& config) {
 
 void GCodeExport::unretract() {
     hopTo(0);
+    writePrime();
+}
+
+void GCodeExport::primeInPlace() {
+    if (params_.bfb) {
+        if (params_.firmware_retract)
+            out_ += bfb_.prime();
+        return;
+    }
+    writePrime();
+}
+
+void GCodeExport::writePrime() {
     ExtruderState& s = state();
     const double prime_mm = s.retracted_mm + filamentMm(s.extra_prime_mm3);
     if (params_.firmware_retract && s.retracted_mm > 0)

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gcode/Bfb.h"
 #include "gcode/ExtrusionAxis.h"
 #include "gcode/MixDialect.h"
 #include "gcode/MotionCommands.h"
@@ -41,6 +42,8 @@ struct ExportParams {
     double z_hop_speed_mm_s = 10;    ///< speed_z_hop: the lifts and lowerings of z-hops
     bool firmware_retract = false;   ///< G10/G11 instead of E moves (machine_firmware_retract)
     bool makerbot_fan = false;       ///< M126 T0 / M127 T0 instead of M106 / M107 (Makerbot flavor)
+    bool mach3_axes = false;         ///< MACH3 flavor: extruder n's axis is 'A' + n instead of E
+    bool bfb = false;                ///< BFB flavor: RPM-driven extrusion, firmware retraction (gcode/Bfb.h)
     Kinematics kinematics;
     MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
     MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
@@ -67,6 +70,7 @@ class GCodeExport {
     void comment(std::string_view text);  ///< ";text"
     void travel(const Point2& to, double speed_mm_s);
     /// A Z move to `z`, which (less the z-hop in force) becomes the layer's height.
+    /// BFB: no line of its own; the next move carries the new Z.
     void moveZ(coord_um z, double speed_mm_s);
     /// A new layer at `z`: Z goes there (plus the z-hop in force, kept until the next prime).
     void startLayer(coord_um z, double speed_mm_s) { moveZ(z + hop_um_, speed_mm_s); }
@@ -90,6 +94,9 @@ class GCodeExport {
     void assumePrimed(int extruder, double retracted_mm);
     /// Primes what is retracted, plus the extra prime owed (after lowering a z-hop).
     void unretract();
+    /// Primes what is retracted and the extra prime owed where the head is, leaving a z-hop up
+    /// (CuraEngine's prime before the last travel move onto an outer wall; BFB: G11).
+    void primeInPlace();
     /// Material primed in addition at the next prime of the active extruder
     /// (switch_extruder_extra_prime_amount).
     void addExtraPrime(double volume_mm3) { state().extra_prime_mm3 += volume_mm3; }
@@ -154,6 +161,11 @@ class GCodeExport {
     ExtruderState& state();
     double filamentOnAxis(double filament_mm) const;  ///< filament in the axis unit
     std::string xyWords(const Point2& to) const;      ///< " X.. Y..", relative to the active nozzle
+    /// BFB: a move without extrusion (the motor stops first).
+    void bfbTravel(const Point2& to, coord_um z, double speed_mm_s);
+    void bfbExtrude(const Point2& to, double volume_mm3, double speed_mm_s);
+    /// Primes the retracted filament and the extra prime owed (no z-hop change).
+    void writePrime();
 
     ExportParams params_;
     std::unique_ptr<MixDialect> dialect_;  ///< extrusion words, retraction, resets, mix commands
@@ -175,6 +187,7 @@ class GCodeExport {
     int fan_number_ = 0;
     MotionCommands motion_;
     TemperatureCommands temperatures_;
+    BfbMotor bfb_;
 };
 
 }  // namespace mixengine

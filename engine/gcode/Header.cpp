@@ -19,6 +19,14 @@ Flavor flavorFromSetting(const std::string& text) {
         return Flavor::Griffin;
     if (text == "UltiGCode")
         return Flavor::UltiGCode;
+    if (text == "BFB")
+        return Flavor::Bfb;
+    if (text == "MACH3")
+        return Flavor::Mach3;
+    if (text == "Repetier")
+        return Flavor::Repetier;
+    if (text == "Makerbot")
+        return Flavor::Makerbot;
     return Flavor::Other;
 }
 
@@ -34,6 +42,14 @@ std::string flavorName(Flavor flavor) {
             return "Griffin";
         case Flavor::UltiGCode:
             return "UltiGCode";
+        case Flavor::Bfb:
+            return "BFB";
+        case Flavor::Mach3:
+            return "Mach3";
+        case Flavor::Repetier:
+            return "Repetier";
+        case Flavor::Makerbot:
+            return "Makerbot";
         case Flavor::Other:
             break;
     }
@@ -125,8 +141,13 @@ std::string makeHeader(const PrintSummary& summary) {
     std::string h;
     h += ";FLAVOR:" + flavorName(summary.flavor) + "\n";
     h += ";TIME:" + std::to_string(static_cast<long long>(summary.print_time_s)) + "\n";
-    h += ";Filament used: " + filamentList(summary) + "\n";
-    h += ";Layer height: " + formatDecimal(summary.layer_height_mm, 3) + "\n";
+    const bool reprap_family = summary.flavor == Flavor::Marlin ||
+                               summary.flavor == Flavor::MarlinVolumetric ||
+                               summary.flavor == Flavor::RepRap || summary.flavor == Flavor::Other;
+    if (reprap_family) {
+        h += ";Filament used: " + filamentList(summary) + "\n";
+        h += ";Layer height: " + formatDecimal(summary.layer_height_mm, 3) + "\n";
+    }
     return h + boundsLines(summary, ";MIN", ";MAX") + generated;
 }
 

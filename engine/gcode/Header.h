@@ -9,7 +9,18 @@
 
 namespace mixengine {
 
-enum class Flavor { Marlin, MarlinVolumetric, RepRap, Griffin, UltiGCode, Other };
+enum class Flavor {
+    Marlin,
+    MarlinVolumetric,
+    RepRap,
+    Griffin,
+    UltiGCode,
+    Bfb,
+    Mach3,
+    Repetier,
+    Makerbot,
+    Other
+};
 
 /// From machine_gcode_flavor ("RepRap (Marlin/Sprinter)", ...); unknown text → Other.
 Flavor flavorFromSetting(const std::string& text);
@@ -42,7 +53,8 @@ struct PrintSummary {
 };
 
 /// The header for summary.flavor: Griffin's ;START_OF_HEADER block, UltiGCode's ;MATERIAL: lines,
-/// or the Marlin/RepRap lines (;FLAVOR:, ;TIME:, ;Filament used:, ;Layer height:, bounds).
+/// or the Marlin/RepRap lines (;FLAVOR:, ;TIME:, ;Filament used:, ;Layer height:, bounds); BFB and
+/// Mach3, Repetier and Makerbot, as CuraEngine, only ;FLAVOR:, ;TIME: and the bounds.
 std::string makeHeader(const PrintSummary& summary);
 
 }  // namespace mixengine

@@ -35,6 +35,9 @@ class MixDialect {
     virtual std::string prime(double amount, std::string& before) = 0;
     /// The line resetting absolute positions at a layer start ("G92 E0", "G92 E0 B0"), or "".
     virtual std::string reset() = 0;
+    /// The letter of the (total) extrusion axis: E, or MACH3's A, B, ... per extruder. The split-axis
+    /// mixing dialects keep their own letters.
+    virtual void setAxisLetter(char /*letter*/) {}
     /// Forward filament of all channels together (retractions and their primes excluded).
     virtual double totalExtruded() const = 0;
     /// Forward filament per channel (one entry in single mode).

@@ -21,6 +21,7 @@ class MixTotalAxis : public MixDialect {
     std::string retract(double amount, std::string& before) override;
     std::string prime(double amount, std::string& before) override;
     std::string reset() override { return axis_.reset(); }
+    void setAxisLetter(char letter) override { axis_.setLetter(letter); }
     double totalExtruded() const override { return axis_.totalExtruded(); }
     std::vector<double> channelTotals() const override;
 

@@ -88,6 +88,8 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, true);
             if (step.retract)
                 gcode.retract();
+            if (step.prime_first)
+                gcode.primeInPlace();
             gcode.travel(step.to, step.speed_mm_s);
             break;
         case PlanStep::Kind::Extrude:

@@ -12,6 +12,13 @@ void appendLine(std::string& out, const std::string& line) {
         out += '\n';
 }
 
+/// The user's G-code block and a line end, as CuraEngine writes it (a block ending in a line end
+/// is followed by an empty line).
+void appendCode(std::string& out, const std::string& code) {
+    out += code;
+    out += '\n';
+}
+
 }  // namespace
 
 namespace {
@@ -112,7 +119,7 @@ std::string startCode(const Settings& global, const Settings& extruder0, bool re
     if (!griffin && flavor != "UltiGCode")
         out += prependedTemperatures(global, extruder0, flavor);
     appendLine(out, "M82 ;absolute extrusion mode");
-    appendLine(out, global.text("machine_start_gcode"));
+    appendCode(out, global.text("machine_start_gcode"));
     if (heatedBuildVolume(global) && flavor != "UltiGCode" && !griffin)
         appendLine(out, "M141 S" + formatDecimal(global.temperatureCelsius("build_volume_temperature"), 1));
     if (griffin)
@@ -172,7 +179,7 @@ std::string endCode(const Settings& global, bool relative_extrusion) {
     std::string out;
     if (relative_extrusion)
         appendLine(out, "M82 ;absolute extrusion mode");
-    appendLine(out, global.text("machine_end_gcode"));
+    appendCode(out, global.text("machine_end_gcode"));
     // As CuraEngine: the file ends in absolute mode, except on RepRap firmware (relative by default).
     const bool reprap =
         global.has("machine_gcode_flavor") && global.text("machine_gcode_flavor") == "RepRap (RepRap)";

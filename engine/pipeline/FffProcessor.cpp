@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "gcode/Bfb.h"
 #include "gcode/StartEndCode.h"
 #include "mixing/MixingPass.h"
 #include "mixing/MixingSettings.h"
@@ -113,6 +114,21 @@ bool anyLayerMesh(const std::vector<VolumeRole>& roles) {
     return std::any_of(roles.begin(), roles.end(), [](const VolumeRole& r) {
         return !r.infill_mesh && !r.cutting_mesh && !r.anti_overhang_mesh;
     });
+}
+
+/// BFB: every line the engine wrote ends in \r\n; the user's G-code blocks keep their own line ends.
+void useBfbLineEnds(const Scene& scene, GCodeOutput& output) {
+    std::vector<std::string> verbatim = {scene.machine.global.text("machine_start_gcode"),
+                                         scene.machine.global.text("machine_end_gcode")};
+    for (const Settings& e : scene.machine.extruders)
+        for (const char* key : {"machine_extruder_start_code", "machine_extruder_end_code"})
+            if (e.has(key))
+                verbatim.push_back(e.text(key));
+    output.header = withBfbLineEnds(output.header, {});
+    output.start = withBfbLineEnds(output.start, verbatim);
+    for (std::string& chunk : output.layer_chunks)
+        chunk = withBfbLineEnds(chunk, verbatim);
+    output.suffix = withBfbLineEnds(output.suffix, verbatim);
 }
 
 }  // namespace
@@ -239,10 +255,15 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     output.header = makeHeader(output.summary);
     output.start = startCode(global, scene.machine.extruders.front(), relative);
     if (!relative)
-        output.start += "G92 E0\n";
+        output.start += export_params.mach3_axes ? "G92 A0\n" : "G92 E0\n";
+    if (export_params.bfb)
+        output.start +=
+            bfbAutoRetraction(first.lengthMicrons("retraction_amount"), first.boolean("retraction_enable"));
     output.start += prime;
     output.start += ";LAYER_COUNT:" + std::to_string(model_layers) + "\n";  // as CuraEngine: not the raft's
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
+    if (export_params.bfb)
+        useBfbLineEnds(scene, output);
     log.progress(ProgressStage::Done, 1.0);
     return output;
 }

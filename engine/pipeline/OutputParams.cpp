@@ -46,6 +46,8 @@ ExportParams exportParams(const Scene& scene) {
     p.mixing = parseMixingOutput(global);
     p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
     p.makerbot_fan = global.text("machine_gcode_flavor") == "Makerbot";
+    p.mach3_axes = flavor == Flavor::Mach3;
+    p.bfb = flavor == Flavor::Bfb;
     return p;
 }
 
@@ -92,6 +94,7 @@ PlanWriterParams writerParams(const Scene& scene) {
     PlanWriterParams writer;
     writer.layer_change_speed_mm_s = global.velocityMmPerS("speed_z_hop");
     writer.griffin = global.text("machine_gcode_flavor") == "Griffin";
+    writer.reset_e_each_layer = global.text("machine_gcode_flavor") != "BFB";  // no E words to reset
     const bool offset_coords = !global.has("machine_use_extruder_offset_to_offset_coords") ||
                                global.boolean("machine_use_extruder_offset_to_offset_coords");
     for (std::size_t i = 0; i < scene.machine.extruders.size(); ++i) {

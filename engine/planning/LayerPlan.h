@@ -30,6 +30,7 @@ struct PlanStep {
     double speed_mm_s = 0;
     double volume_mm3 = 0;
     bool retract = false;
+    bool prime_first = false;  ///< Travel: prime (unretract) before it (the last move onto an outer wall)
     Feature feature = Feature::Fill;
     int mesh_index = -1;
     double fan_ratio = 0;

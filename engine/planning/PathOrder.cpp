@@ -41,8 +41,9 @@ void appendTravel(const Point2& from, const Point2& to, const TravelParams& para
     travel.kind = PlanStep::Kind::Travel;
     travel.speed_mm_s = params.travel_speed_mm_s;
     travel.retract = route.retract;
-    for (const Point2& point : route.points) {
-        travel.to = point;
+    for (std::size_t i = 0; i < route.points.size(); ++i) {
+        travel.to = route.points[i];
+        travel.prime_first = route.prime_before_last && i + 1 == route.points.size();
         steps.push_back(travel);
         travel.retract = false;
     }

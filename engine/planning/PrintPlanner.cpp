@@ -54,6 +54,8 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
     if (s.has("retraction_combing_max_distance"))
         p.combing_max_distance_um = s.lengthMicrons("retraction_combing_max_distance");
     p.comb_move_inside_um = combMoveInside(s, layer);
+    if (s.has("meshfix_maximum_travel_resolution"))
+        p.max_travel_resolution_um = s.lengthMicrons("meshfix_maximum_travel_resolution");
     p.travel_speed_mm_s = s.velocityMmPerS(layer == 0 ? "speed_travel_layer_0" : "speed_travel");
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");

@@ -10,7 +10,12 @@
 //     entering the one it ends on straight; and it retracts when longer than retraction_min_travel
 //     — except, with limit_support_retractions, a travel that neither starts nor ends in a part and
 //     crosses none (support to support);
-//   - a travel no longer than retraction_min_travel goes straight and never retracts.
+//   - a retracting travel to a mesh path whose end lies outside the comb area (an outer wall's
+//     start) goes to that end moved into the comb area first and primes there, before its last move
+//     (CuraEngine's unretract_before_last_travel_move; through the air: after entering the part);
+//   - a travel no longer than retraction_min_travel goes straight and never retracts;
+//   - meshfix_maximum_travel_resolution: a way point of a combed or around-the-parts travel closer
+//     than that to the way point kept before it is left out (the travel's end is always kept).
 #include <optional>
 
 #include "geometry/Point.h"
@@ -41,11 +46,13 @@ struct TravelParams {
     /// comb boundary counts at the length of its comb route (100 × the straight distance when there
     /// is none), as CuraEngine's line order optimizer with a combing boundary.
     bool comb_aware_order = false;
+    coord_um max_travel_resolution_um = 0;  ///< meshfix_maximum_travel_resolution (0: every point)
 };
 
 struct TravelRoute {
     Path points;  ///< after `from`, ending with `to`
     bool retract = false;
+    bool prime_before_last = false;  ///< prime (unretract) before the move to points.back()
 };
 
 TravelRoute planTravel(const Point2& from, const Point2& to, const TravelParams& params);
@@ -54,5 +61,10 @@ TravelRoute planTravel(const Point2& from, const Point2& to, const TravelParams&
 /// the other parts inside `free` → where it enters the part `to` is in → `to`; nothing when no such
 /// way is found.
 std::optional<Path> aroundParts(const CombBoundary& free, const Point2& from, const Point2& to);
+
+/// `points` (a travel's way after `from`, its end last) without the way points no farther than
+/// `resolution_um` from the point kept before them (`from` first); a first point `first_kept` (a
+/// start moved into the comb area) and the end are always kept.
+Path thinTravel(const Point2& from, const Path& points, coord_um resolution_um, bool first_kept);
 
 }  // namespace mixengine

@@ -165,6 +165,8 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
             adhesion.models.push_back(primeTowerOutline(*input.global, input.extruders));
         AdhesionResult skirt = generateAdhesion(adhesion);
         result.adhesion = std::move(skirt.paths);
+        // As CuraEngine: the support brim after the skirt or brim (toolpaths/Support.h).
+        result.adhesion.insert(result.adhesion.end(), support_result.brim.begin(), support_result.brim.end());
         result.adhesion.insert(result.adhesion.end(), prime_tower.brim.begin(), prime_tower.brim.end());
         result.warnings = std::move(skirt.warnings);
         addOtherExtruderSkirts(input, used, prime_tower.brim, result.adhesion);

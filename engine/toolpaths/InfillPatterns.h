@@ -70,6 +70,7 @@ struct InfillParams {
     double flow = 1.0;
     int extruder = 0;
     bool zigzag_end_pieces = false;       ///< zigzag: also print the area's ends (support_connect_zigzags)
+    int zag_skip_count = 0;               ///< zigzag: leave out every n-th connection (toolpaths/ZigZag.h)
     Point2 origin_um{0, 0};               ///< every line set passes through it
     coord_um shift_um = 0;                ///< extra shift of every line set across its lines
     coord_um overlap_um = 0;              ///< the lines reach this far beyond the area

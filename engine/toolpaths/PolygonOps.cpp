@@ -7,10 +7,11 @@ namespace {
 
 constexpr double kArcToleranceUm = 10.0;
 
-Paths offsetWith(const Paths& polygons, coord_um delta_um, ClipperLib::JoinType join) {
+Paths offsetWith(const Paths& polygons, coord_um delta_um, ClipperLib::JoinType join,
+                 double miter_limit = 2.0) {
     if (polygons.empty())
         return {};
-    ClipperLib::ClipperOffset offset(2.0, kArcToleranceUm);
+    ClipperLib::ClipperOffset offset(miter_limit, kArcToleranceUm);
     offset.AddPaths(polygons, join, ClipperLib::etClosedPolygon);
     Paths result;
     offset.Execute(result, static_cast<double>(delta_um));
@@ -46,6 +47,10 @@ Paths offsetPolygons(const Paths& polygons, coord_um delta_um) {
 
 Paths offsetMiter(const Paths& polygons, coord_um delta_um) {
     return offsetWith(polygons, delta_um, ClipperLib::jtMiter);
+}
+
+Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit) {
+    return offsetWith(polygons, delta_um, ClipperLib::jtMiter, miter_limit);
 }
 
 Paths openPolygons(const Paths& polygons, coord_um radius_um) {

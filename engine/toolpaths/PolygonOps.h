@@ -14,6 +14,9 @@ Paths offsetPolygons(const Paths& polygons, coord_um delta_um);
 /// Offset with mitred joins (limit 2 × delta): keeps corners down to about 60° sharp, as
 /// CuraEngine's walls, skin and infill areas are.
 Paths offsetMiter(const Paths& polygons, coord_um delta_um);
+/// The same with another miter limit (CuraEngine's Polygons::offset uses 1.2: corners sharper than
+/// about 113° are bevelled).
+Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit);
 
 /// Removes the parts narrower than 2·radius (erode, then grow back with mitred joins), so the
 /// corners of what is left stay as they were.

@@ -1,8 +1,10 @@
 #include "toolpaths/Support.h"
 
 #include <cmath>
+#include <optional>
 
 #include "common/ParallelFor.h"
+#include "toolpaths/InfillLayers.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/SupportAreas.h"
 #include "toolpaths/SupportPaths.h"
@@ -80,6 +82,10 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
     fills.body.angle_degrees = angleFor(body, "support_infill_angles", layer, 0);
     fills.body.connect_zigzags =
         body.has("support_connect_zigzags") && body.boolean("support_connect_zigzags");
+    if (body.has("support_skip_some_zags") && body.boolean("support_skip_some_zags") &&
+        body.has("support_zag_skip_count"))
+        fills.body.zag_skip_count =
+            static_cast<int>(std::max<long long>(0, body.integer("support_zag_skip_count")));
     fills.body.wall_count =
         body.has("support_wall_count") ? static_cast<int>(body.integer("support_wall_count")) : 0;
     if (layer <= 0) {  // as CuraEngine: the first layer of support is a grid with one more wall
@@ -144,6 +150,40 @@ SupportMeshAreas supportMeshAreas(const SupportInput& in, int threads) {
     return areas;
 }
 
+/// The body's infill arrangement (toolpaths/InfillLayers.h) as CuraEngine's gradual support
+/// (gradual_support_infill_steps, every gradual_support_infill_step_height; its upper layers are
+/// looked at about every 8 layers) and combined support layers (support_infill_sparse_thickness);
+/// nullopt when neither is on.
+std::optional<InfillLayerParams> arrangement(const Settings& body, coord_um layer_height) {
+    const coord_um h = std::max<coord_um>(layer_height, 1);
+    InfillLayerParams p;
+    if (body.has("gradual_support_infill_steps"))
+        p.gradual_steps =
+            static_cast<int>(std::max<long long>(0, body.integer("gradual_support_infill_steps")));
+    if (body.has("gradual_support_infill_step_height"))
+        p.gradual_step_layers = static_cast<int>(
+            std::max<coord_um>(1, (body.lengthMicrons("gradual_support_infill_step_height") + h / 2) / h));
+    p.small_gaps_heuristic = true;
+    if (body.has("support_infill_sparse_thickness"))
+        p.combine_layers = static_cast<int>(
+            std::max<coord_um>(1, (body.lengthMicrons("support_infill_sparse_thickness") + h / 2) / h));
+    if (p.gradual_steps <= 0 && p.combine_layers <= 1)
+        return std::nullopt;
+    return p;
+}
+
+/// The bodies' infill arrangement; empty when neither gradual support nor combined layers are on.
+std::vector<LayerInfill> arrangedBodies(const std::vector<SupportLayerAreas>& areas, const Settings& body,
+                                        coord_um layer_height, int threads) {
+    const std::optional<InfillLayerParams> params = arrangement(body, layer_height);
+    if (!params)
+        return {};
+    std::vector<Paths> bodies(areas.size());
+    for (std::size_t i = 0; i < areas.size(); ++i)
+        bodies[i] = areas[i].support;
+    return arrangeInfill(bodies, *params, threads);
+}
+
 Overhangs collectOverhangs(const SupportInput& in, int threads) {
     Overhangs all;
     all.basic.resize(in.heights->size());
@@ -166,6 +206,36 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
     return all;
 }
 
+/// The support brim's loops inside `outline` (see the header); `outline` becomes what is left inside
+/// them.
+std::vector<ExtrusionPath> supportBrim(const Settings& s, int extruder, Paths& outline) {
+    std::vector<ExtrusionPath> loops;
+    const int count =
+        s.has("support_brim_line_count") ? static_cast<int>(s.integer("support_brim_line_count")) : 0;
+    if (outline.empty() || count <= 0)
+        return loops;
+    FeatureStyle style = featureStyle(s,
+                                      {"skirt_brim_line_width", "skirt_brim_speed",
+                                       "skirt_brim_material_flow", "support_infill_extruder_nr"},
+                                      0);
+    style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");
+    style.extruder = extruder;
+    const coord_um w = std::max<coord_um>(style.width_um, 1);
+    const double smallest_hole_um2 = 100.0 * double(w) * double(w);
+    for (int i = 0; i < count; ++i) {
+        Paths ring = offsetPolygons(outline, -(w / 2 + coord_um(i) * w));
+        if (ring.empty())
+            break;
+        std::erase_if(ring, [&](const Path& p) {
+            const double area = ClipperLib::Area(p);
+            return area < 0 && area > -smallest_hole_um2;
+        });
+        appendStyledLoops(ring, Feature::Skirt, style, loops);
+    }
+    outline = intersectAll(outline, offsetPolygons(outline, -coord_um(count) * w));
+    return loops;
+}
+
 }  // namespace
 
 const Settings& trainSettings(const Settings& global, const std::vector<Settings>* extruders, int nr) {
@@ -186,18 +256,23 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         return result;
     const Settings& g = *in.global;
     const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
-    const std::vector<SupportLayerAreas> areas = computeSupportAreas(
+    std::vector<SupportLayerAreas> areas = computeSupportAreas(
         *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads,
         supportMeshAreas(in, threads));
+    if (areas.empty())
+        return result;
+    result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
+    if (!in.raft && body.has("support_brim_enable") && body.boolean("support_brim_enable"))
+        result.brim = supportBrim(body, extruderOf(g, "support_infill_extruder_nr"), areas[0].support);
+    const std::vector<LayerInfill> arranged =
+        arrangedBodies(areas, body, g.lengthMicrons("layer_height"), threads);
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())
             return;
-        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z);
+        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z,
+                                     arranged.empty() ? nullptr : &arranged[i]);
     });
-    if (areas.empty())
-        return result;
-    result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
     if (in.raft && !paths.empty() && !paths[0].empty()) {
         result.filler = supportLayerPaths(areas[0], layerFills(in, -1), 0);
         paths[0].clear();

@@ -10,6 +10,12 @@
 // the first layer's support area is printed on the raft's filler layers instead (SupportResult::
 // filler: as on layer 0 — grid, one wall more — but at support_line_distance, the regular speed and
 // flow and without initial_layer_line_width_factor), and no line width on layer 0 is widened.
+//
+// Support brim (support_brim_enable of the support infill train, no raft), as CuraEngine 4.13:
+// support_brim_line_count loops inside the support body's first-layer outline, the first w/2 in,
+// one width apart (w = skirt_brim_line_width × initial_layer_line_width_factor, round joins; holes
+// smaller than 100 w² dropped), printed with the skirt/brim (Feature Skirt, the skirt's speed and
+// flow); the first layer's support is what lies farther inside than count × w.
 #include <vector>
 
 #include "settings/Settings.h"
@@ -43,6 +49,7 @@ struct SupportResult {
     std::vector<std::vector<ExtrusionPath>> paths;  ///< [layer]; all empty without support_enable
     Paths first_layer_area;                         ///< the support's area on layer 0 (for the brim)
     std::vector<ExtrusionPath> filler;              ///< raft only: the paths of every raft filler layer
+    std::vector<ExtrusionPath> brim;                ///< the support brim (see above), outermost first
 };
 
 SupportResult generateSupport(const SupportInput& input, int threads);

@@ -24,6 +24,7 @@ Paths disallowedArea(const Paths& model, const Paths& own_overhang, const Suppor
 
 constexpr coord_um kSimplifyUm = 25;  // the model's outlines, once per layer
 constexpr coord_um kCleanUm = 5;      // the propagated support, every layer (must not accumulate)
+constexpr double kCuraMiterLimit = 1.2;
 
 /// Top-down: each layer's support is the layer above's plus the overhangs it must carry, joined
 /// (closing by the join distance), minus the model here and bottom_gap layers below, simplified.
@@ -39,8 +40,9 @@ std::vector<Paths> propagateDown(const std::vector<Paths>& full, const std::vect
             current = unionOf(current, full[source]);
         if (current.empty())
             continue;
-        if (p.join_distance_um > 0)
-            current = offsetMiter(offsetMiter(current, p.join_distance_um), -p.join_distance_um);
+        if (p.join_distance_um > 0)  // as CuraEngine: its offsets bevel at a miter limit of 1.2
+            current = offsetMiter(offsetMiter(current, p.join_distance_um, kCuraMiterLimit),
+                                  -p.join_distance_um, kCuraMiterLimit);
         current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
         support[i] = current;
     }

@@ -8,11 +8,17 @@
 //               speed_support_infill, support_material_flow);
 //   roof/floor — support_roof_* / support_bottom_* pattern, line distance, angles (default 90°),
 //               width, speed and flow; Feature SupportInterface.
+// With gradual_support_infill_steps or support_infill_sparse_thickness the body's infill follows its
+// arrangement (toolpaths/InfillLayers.h, as CuraEngine's gradual support and combined support
+// layers): inside the walls, the areas printed t layers thick first (t × the flow), then the
+// densities from the sparsest: density k of the last L at 2^(k+1)·d shifted by 2^k·d for k < L,
+// 2^L·d for L (d = the body's line distance), so that where all print the lines are d apart.
 #include <vector>
 
 #include "geometry/Point.h"
 #include "toolpaths/ExtrusionPath.h"
 #include "toolpaths/FeatureStyle.h"
+#include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
 #include "toolpaths/SupportAreas.h"
 
@@ -24,6 +30,7 @@ struct SupportFill {
     double angle_degrees = 0;
     int wall_count = 0;
     bool connect_zigzags = false;  ///< support_connect_zigzags: zigzag with its end pieces
+    int zag_skip_count = 0;        ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
     FeatureStyle style;
 };
 
@@ -31,7 +38,8 @@ struct SupportLayerFills {
     SupportFill body, roof, floor;
 };
 
+/// `arranged`: the body's infill arrangement on this layer (null: the whole inside at one density).
 std::vector<ExtrusionPath> supportLayerPaths(const SupportLayerAreas& areas, const SupportLayerFills& fills,
-                                             coord_um z_um);
+                                             coord_um z_um, const LayerInfill* arranged = nullptr);
 
 }  // namespace mixengine

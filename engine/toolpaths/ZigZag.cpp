@@ -43,13 +43,20 @@ void forEachBoundaryStep(const std::vector<Crossing>& cs, Visit&& visit) {
     }
 }
 
+/// Whether the connection from scanline `from` to its neighbour `to` is one of the skipped ones.
+bool skipped(long long from, long long to, int zag_skip_count) {
+    if (zag_skip_count <= 0)
+        return false;
+    return (to > from ? from : from - 1) % zag_skip_count == 0;
+}
+
 /// Keep the alternate boundary pieces between scanlines.
-void linkBoundary(std::vector<Crossing>& cs) {
-    forEachBoundaryStep(cs, [&cs](std::size_t i, std::size_t k) {
+void linkBoundary(std::vector<Crossing>& cs, int zag_skip_count) {
+    forEachBoundaryStep(cs, [&cs, zag_skip_count](std::size_t i, std::size_t k) {
         Crossing& from = cs[i];
         Crossing& to = cs[k];
         if (from.line % 2 == 0 && std::llabs(to.line - from.line) == 1 && from.scan_partner >= 0 &&
-            to.scan_partner >= 0) {
+            to.scan_partner >= 0 && !skipped(from.line, to.line, zag_skip_count)) {
             from.boundary_next = static_cast<long>(k);
             to.boundary_prev = static_cast<long>(i);
         }
@@ -129,14 +136,15 @@ void appendEndPieces(const Paths& polys, const std::vector<Crossing>& cs, Paths&
 
 }  // namespace
 
-Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um shift_um, bool end_pieces) {
+Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um shift_um, bool end_pieces,
+                  int zag_skip_count) {
     if (d <= 0 || area.empty())
         return {};
     const LineFrame frame(angle_degrees);  // the scanlines are vertical in it
     const Paths rotated = frame.into(area);
     const coord_um shift = linePhase(shift_um, d);
     std::vector<Crossing> cs = pairedCrossings(rotated, d, shift);
-    linkBoundary(cs);
+    linkBoundary(cs, zag_skip_count);
     Paths lines = chain(rotated, cs);
     if (end_pieces)
         appendEndPieces(rotated, cs, lines);

@@ -10,11 +10,14 @@
 // end points exactly and are chained into polylines. With `end_pieces` (support with
 // support_connect_zigzags) the boundary pieces that leave a scanline and come back to it — the
 // ends of the area beyond the outermost lines, notches — are printed too, as separate polylines.
+// `zag_skip_count` N > 0 (support_skip_some_zags with support_zag_skip_count) leaves out every N-th
+// connection, as CuraEngine: one from scanline s to s + 1 when s is a multiple of N, one from s to
+// s − 1 when s − 1 is, so the support breaks off in pieces N lines wide.
 #include "geometry/Point.h"
 
 namespace mixengine {
 
 Paths zigzagLines(const Paths& area, coord_um line_distance_um, double angle_degrees, coord_um shift_um,
-                  bool end_pieces);
+                  bool end_pieces, int zag_skip_count = 0);
 
 }  // namespace mixengine

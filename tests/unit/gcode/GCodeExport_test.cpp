@@ -55,6 +55,23 @@ TEST(GCodeExport, AbsoluteSequence) {
     EXPECT_FALSE(g.retracted());
 }
 
+// MACH3 (CuraEngine's extruderCharacter): extruder n's axis is 'A' + n in moves, retractions and resets.
+TEST(GCodeExport, Mach3WritesTheAAxisPerExtruder) {
+    ExportParams p = marlin175();
+    p.mach3_axes = true;
+    GCodeExport g(p);
+    g.extrude({20'000, 0}, 1.0, 30);
+    g.retract();
+    g.resetExtrusionAxis();
+    ToolChange change;
+    change.extruder = 1;
+    change.filament_diameter_mm = 1.75;
+    g.selectExtruder(change);
+    g.extrude({0, 0}, 1.0, 30);
+    EXPECT_EQ(g.text(),
+              "G1 F1800 X20 Y0 A0.41575\nG1 F1500 A-6.08425\nG92 A0\nT1\nG92 B0\nG1 F1800 X0 Y0 B0.41575\n");
+}
+
 TEST(GCodeExport, RelativeSequence) {
     ExportParams p = marlin175();
     p.relative_extrusion = true;

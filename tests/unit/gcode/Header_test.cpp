@@ -63,7 +63,8 @@ TEST(Header, FlavorFromSetting) {
     EXPECT_EQ(flavorFromSetting("RepRap (RepRap)"), Flavor::RepRap);
     EXPECT_EQ(flavorFromSetting("Griffin"), Flavor::Griffin);
     EXPECT_EQ(flavorFromSetting("UltiGCode"), Flavor::UltiGCode);
-    EXPECT_EQ(flavorFromSetting("MACH3"), Flavor::Other);
+    EXPECT_EQ(flavorFromSetting("MACH3"), Flavor::Mach3);
+    EXPECT_EQ(flavorFromSetting("BFB"), Flavor::Bfb);
     EXPECT_EQ(flavorFromSetting("marlin"), Flavor::Other);
     EXPECT_EQ(flavorFromSetting(""), Flavor::Other);
     EXPECT_EQ(flavorName(Flavor::Marlin), "Marlin");
@@ -96,13 +97,12 @@ TEST(Header, FilamentHasSixSignificantDigitsLikeCuraEngine) {
 
 // /usr/bin/CuraEngine (4.13) with machine_gcode_flavor=MACH3 / Repetier / BFB / Makerbot writes
 // ";FLAVOR:Mach3" / "Repetier" / "BFB" / "Makerbot" and no ";Filament used:" / ";Layer height:" lines
-// (those are written for Marlin, RepRap and Marlin(Volumetric) only). BUG (engine/gcode/Header.cpp:
-// flavorFromSetting maps them to Flavor::Other, flavorName(Other) is "Marlin", makeHeader always
-// writes the filament and layer-height lines).
-TEST(Header, DISABLED_OtherFlavoursKeepTheirNameLikeCuraEngine) {
+// (those are written for Marlin, RepRap and Marlin(Volumetric) only).
+TEST(Header, OtherFlavoursKeepTheirNameLikeCuraEngine) {
     const std::string header = makeHeader(summary(flavorFromSetting("MACH3")));
     EXPECT_EQ(header.rfind(";FLAVOR:Mach3\n;TIME:5626\n;MINX:", 0), 0U) << header;
     EXPECT_EQ(flavorName(flavorFromSetting("Repetier")), "Repetier");
+    EXPECT_EQ(makeHeader(summary(Flavor::Bfb)).rfind(";FLAVOR:BFB\n;TIME:5626\n;MINX:", 0), 0U);
 }
 
 TEST(Header, GriffinBlockWithRealValues) {

@@ -69,11 +69,13 @@ TEST(GCodeStartEndCode, CodeIsWrittenVerbatim) {
               std::string::npos);
 }
 
-TEST(GCodeStartEndCode, StartCodeEndingInNewlineGetsNoBlankLine) {
+// As CuraEngine (writeCode: the code, then a line end): a block ending in a line end is followed by an
+// empty line (the oracle's Ender-3 end code shows it).
+TEST(GCodeStartEndCode, StartCodeEndingInNewlineGetsABlankLine) {
     const Settings g = global({{"material_bed_temp_prepend", "False"},
                                {"material_print_temp_prepend", "False"},
                                {"machine_start_gcode", "G28\n"}});
-    EXPECT_EQ(startCode(g, extruder0(), false), std::string(kM82) + "G28\n");
+    EXPECT_EQ(startCode(g, extruder0(), false), std::string(kM82) + "G28\n\n");
 }
 
 // BUG (engine/gcode/StartEndCode.cpp, startCode: `appendLine(out, "M105")` after M140 and after M104

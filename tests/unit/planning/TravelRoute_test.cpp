@@ -90,5 +90,31 @@ TEST(TravelRoute, SupportToSupportClearOfThePartsNeedNotRetract) {
     EXPECT_TRUE(planTravel({0, 12'000}, {40'000, 12'000}, p).retract);
 }
 
+TEST(TravelRoute, WayPointsCloserThanTheTravelResolutionAreLeftOut) {
+    // From (0,0): (300,0) is within 0.5 mm of the start, (800,0) is not; (1'000,0) is within 0.5 mm of
+    // (800,0); (2'000,0) is kept; the end (2'100,0) is kept however close.
+    const Path way{{300, 0}, {800, 0}, {1'000, 0}, {2'000, 0}, {2'100, 0}};
+    EXPECT_EQ(thinTravel({0, 0}, way, 500, false), (Path{{800, 0}, {2'000, 0}, {2'100, 0}}));
+    // A start moved into the comb area is kept, and the next point is measured from it.
+    EXPECT_EQ(thinTravel({0, 0}, way, 500, true), (Path{{300, 0}, {1'000, 0}, {2'000, 0}, {2'100, 0}}));
+    EXPECT_EQ(thinTravel({0, 0}, way, 0, false), way);  // 0: every point
+    // A combed travel around a notch: with a coarse resolution only the end is left.
+    const Paths notch{{{0, 0},
+                       {10'000, 0},
+                       {10'000, 10'000},
+                       {6'000, 10'000},
+                       {6'000, 2'000},
+                       {4'000, 2'000},
+                       {4'000, 10'000},
+                       {0, 10'000}}};
+    const CombBoundary comb(notch);
+    TravelParams p = params();
+    p.comb = &comb;
+    const TravelRoute fine = planTravel({2'000, 9'000}, {8'000, 9'000}, p);
+    ASSERT_GE(fine.points.size(), 3U);
+    p.max_travel_resolution_um = 20'000;
+    EXPECT_EQ(planTravel({2'000, 9'000}, {8'000, 9'000}, p).points, (Path{{8'000, 9'000}}));
+}
+
 }  // namespace
 }  // namespace mixengine

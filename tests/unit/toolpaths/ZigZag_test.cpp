@@ -34,6 +34,19 @@ TEST(ZigZag, EndPiecesAddTheAreasEnds) {
     EXPECT_NEAR(total, 9 * 9'000.0 + 8 * 1'000.0 + 2 * (9'000.0 + 2 * 500.0), 1.0);
 }
 
+TEST(ZigZag, SkippedZagsBreakItIntoPieces) {
+    // Lines x = 1 … 9 mm (scanlines 1 … 9); connections start on even scanlines. With a skip count of 3,
+    // as CuraEngine, 6→7 (going right from a multiple of 3) and 4→3 (going left to a multiple of 3) are
+    // left out of the eight 1 mm connections: pieces of lines 1-3, 4-6 and 7-9.
+    const Paths lines = zigzagLines({test::square(500, 500, 9'000)}, 1'000, 0, 0, false, 3);
+    ASSERT_EQ(lines.size(), 3U);
+    double total = 0;
+    for (const Path& line : lines)
+        total += polylineLength(line);
+    EXPECT_NEAR(total, 9 * 9'000.0 + 6 * 1'000.0, 1.0);
+    EXPECT_EQ(zigzagLines({test::square(500, 500, 9'000)}, 1'000, 0, 0, false, 0).size(), 1U);  // 0: off
+}
+
 TEST(ZigZag, NothingWithoutDistance) {
     EXPECT_TRUE(zigzagLines({test::square(0, 0, 1'000)}, 0, 0, 0, false).empty());
 }
