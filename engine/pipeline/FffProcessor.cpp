@@ -7,6 +7,7 @@
 #include "mixing/MixingSettings.h"
 #include "pipeline/OutputParams.h"
 #include "planning/PrintPlanner.h"
+#include "slicing/AdaptiveLayers.h"
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/GroupToolpaths.h"
 #include "toolpaths/RaftLayout.h"
@@ -21,6 +22,39 @@ SlicingTolerance toleranceOf(const Settings& s) {
     if (text == "exclusive")
         return SlicingTolerance::Exclusive;
     return SlicingTolerance::Middle;
+}
+
+bool adaptiveOn(const Settings& s) {
+    return s.has("adaptive_layer_height_enabled") && s.boolean("adaptive_layer_height_enabled");
+}
+
+bool printedAsModel(const Settings& s) {
+    for (const char* key : {"infill_mesh", "cutting_mesh", "anti_overhang_mesh"}) {
+        if (s.has(key) && s.boolean(key))
+            return false;
+    }
+    return true;
+}
+
+/// adaptive_layer_height_enabled: the group's layers from the slopes of its printed meshes
+/// (slicing/AdaptiveLayers.h).
+std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance tolerance) {
+    const Settings& s = group.settings;
+    std::vector<FaceSlope> faces;
+    for (const SceneMesh& m : group.meshes) {
+        if (!printedAsModel(m.settings))
+            continue;
+        std::vector<FaceSlope> own = faceSlopes(m.mesh);
+        faces.insert(faces.end(), own.begin(), own.end());
+    }
+    AdaptiveLayerParams params;
+    params.layer_height_um = s.lengthMicrons("layer_height");
+    params.layer_height_0_um = s.lengthMicrons("layer_height_0");
+    params.variation_um = s.lengthMicrons("adaptive_layer_height_variation");
+    params.step_um = s.lengthMicrons("adaptive_layer_height_variation_step");
+    params.threshold_um = s.lengthMicrons("adaptive_layer_height_threshold");
+    params.middle = tolerance == SlicingTolerance::Middle;
+    return adaptiveLayerHeights(faces, params);
 }
 
 PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
@@ -117,10 +151,11 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     for (const SceneMesh& m : group.meshes)
         max_z = std::max(max_z, m.mesh.bounds().max.z);
     const Settings& s = group.settings;
-    sliced.heights =
-        computeLayerHeights(max_z, s.lengthMicrons("layer_height_0"), s.lengthMicrons("layer_height"));
     SliceOptions options;
     options.tolerance = toleranceOf(s);
+    sliced.heights = adaptiveOn(s) ? adaptiveHeights(group, options.tolerance)
+                                   : computeLayerHeights(max_z, s.lengthMicrons("layer_height_0"),
+                                                         s.lengthMicrons("layer_height"));
     options.threads = threads;
     for (const SceneMesh& m : group.meshes)
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
