@@ -6,6 +6,7 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
+#include "toolpaths/FuzzySkin.h"
 #include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
 #include "toolpaths/Ironing.h"
@@ -211,6 +212,7 @@ std::vector<MeshLayerGroups> surfaceToolpaths(const std::vector<SlicedLayer>& la
         std::vector<ExtrusionPath>& walls = result[i].outer_walls;
         appendStyledLoops(adjustedOutlines(layers[i].outlines, settings, layer), Feature::WallOuter, style,
                           walls);
+        applyFuzzySkin(walls, fuzzySkinParams(settings, layer), layer);
         placeSeams(walls, seam, layer);
         for (const Path& piece : layers[i].open_polylines) {
             if (piece.size() >= 2)
@@ -296,6 +298,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
             if (layer >= spiralBottomLayers(settings))
                 walls.walls = generateWalls(parts.others, params).walls;
         }
+        applyFuzzySkin(walls.walls, fuzzySkinParams(settings, layer), layer);
         placeSeams(walls.walls, seam, layer);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? result[i].outer_walls : result[i].inner_walls)

@@ -13,7 +13,7 @@ and the CuraHarness plugin drives the session without clicks (tests/e2e/README.m
   unchanged (cura_gradient_line_type.png); and that backend/location is given back.
 - CMYK+W: the 5-channel M165 mixer with a multi-stop gradient (cura_cmykw_material_color.png).
 - single colour: the MakerPi in single mode stays one colour (cura_single_material_color.png), and
-  fuzzy skin, which MixEngine does not act on yet, is named in one Cura message (not_honoured.json).
+  wire printing, which MixEngine does not act on yet, is named in one Cura message (not_honoured.json).
 - orientation: the package installed by Cura's own installer this time; the 18 mm dual-nozzle printer,
   a bar on each nozzle, the menu item "Optimize dual-nozzle orientation", its undo and redo, then a slice;
   then "Uninstall" as the Marketplace does it, and Cura's own engine is back in cura.cfg.
@@ -313,7 +313,7 @@ def test_cmykw_multi_stop_gradient_in_material_color(tmp_path, package, report):
 # ---- single colour on the mixing printer, and a setting MixEngine does not act on -----------------------
 def test_single_colour_print_stays_one_colour_and_unsupported_settings_are_named(tmp_path, package):
     job = {"name": "cura_single", "machine": "mixengine_makerpi_m2030x",
-           "extruders": {"0": {"magic_fuzzy_skin_enabled": True}},  # settings/mixengine/not_honoured.json lists it
+           "global": {"wireframe_enabled": True},  # settings/mixengine/not_honoured.json lists it
            "models": [{"path": box(tmp_path / "cube20.stl", (20, 20, 20))}], "plugin_status": "MixEngine",
            "preview": True, "screenshots": [{"path": str(SHOTS["single"]), "layer_view_type": 0}], "camera": CAMERA}
     summary, status, fixture = run_cura(job, tmp_path, package)
@@ -328,8 +328,8 @@ def test_single_colour_print_stays_one_colour_and_unsupported_settings_are_named
     assert spread < 8, spread  # one colour: Cura's material colour
     # one Cura message names the setting MixEngine does not act on yet
     texts = [t for t in status["visible_messages"] if "MixEngine does not act on" in t]
-    assert len(texts) == 1 and "Fuzzy Skin" in texts[0] and "fuzzy skin is not built yet" in texts[0], texts
-    assert [row[0] for row in end["not_honoured"]] == ["magic_fuzzy_skin_enabled"]
+    assert len(texts) == 1 and "Wire Printing" in texts[0] and "wire printing is not built" in texts[0], texts
+    assert [row[0] for row in end["not_honoured"]] == ["wireframe_enabled"]
 
 
 # ---- the orientation menu item on the dual-nozzle printer ------------------------------------------------
