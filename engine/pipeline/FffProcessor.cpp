@@ -9,6 +9,7 @@
 #include "planning/PrintPlanner.h"
 #include "slicing/AdaptiveLayers.h"
 #include "slicing/OutlineCleanup.h"
+#include "toolpaths/ConicalOverhang.h"
 #include "toolpaths/GroupToolpaths.h"
 #include "toolpaths/RaftLayout.h"
 
@@ -55,6 +56,14 @@ std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance to
     params.threshold_um = s.lengthMicrons("adaptive_layer_height_threshold");
     params.middle = tolerance == SlicingTolerance::Middle;
     return adaptiveLayerHeights(faces, params);
+}
+
+/// As CuraEngine 4.13 after slicing: each mesh's conical overhang (toolpaths/ConicalOverhang.h).
+void reshapeOutlines(const SceneGroup& group, SlicedGroup& sliced) {
+    for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
+        if (conicalOverhangWanted(group.meshes[m].settings))
+            applyConicalOverhang(sliced.meshes[m], conicalOverhangParams(group.meshes[m].settings));
+    }
 }
 
 PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
@@ -169,6 +178,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         if (own.has("meshfix_union_all_remove_holes") && own.boolean("meshfix_union_all_remove_holes"))
             removeHoles(sliced.meshes[m], threads);
     }
+    reshapeOutlines(group, sliced);
     return sliced;
 }
 
