@@ -11,6 +11,7 @@
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/ConicalOverhang.h"
 #include "toolpaths/GroupToolpaths.h"
+#include "toolpaths/Mold.h"
 #include "toolpaths/RaftLayout.h"
 
 namespace mixengine {
@@ -58,8 +59,13 @@ std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance to
     return adaptiveLayerHeights(faces, params);
 }
 
-/// As CuraEngine 4.13 after slicing: each mesh's conical overhang (toolpaths/ConicalOverhang.h).
+/// As CuraEngine 4.13 after slicing: molds (toolpaths/Mold.h), then each mesh's conical overhang
+/// (toolpaths/ConicalOverhang.h).
 void reshapeOutlines(const SceneGroup& group, SlicedGroup& sliced) {
+    std::vector<MoldMesh> molds;
+    for (std::size_t m = 0; m < sliced.meshes.size(); ++m)
+        molds.push_back({&sliced.meshes[m], &group.meshes[m].settings});
+    applyMolds(molds, group.settings.lengthMicrons("layer_height"));
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
         if (conicalOverhangWanted(group.meshes[m].settings))
             applyConicalOverhang(sliced.meshes[m], conicalOverhangParams(group.meshes[m].settings));
