@@ -253,6 +253,17 @@ std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const
     return ironingPaths(surface, ironingParams(s, layer));
 }
 
+/// The spiral's wall loops made fuzzy, as CuraEngine 4.13 spirals the fuzzy outer wall
+/// (toolpaths/FuzzySkin.h; seeds apart from the walls').
+Paths fuzzyLoops(Paths loops, const Settings& s, int layer) {
+    const FuzzySkinParams fuzz = fuzzySkinParams(s, layer);
+    if (!fuzz.enabled)
+        return loops;
+    for (std::size_t k = 0; k < loops.size(); ++k)
+        loops[k] = fuzzyLoop(loops[k], fuzz, ~((std::uint64_t(std::uint32_t(layer)) << 32) | k));
+    return loops;
+}
+
 /// Spiralize from initial_bottom_layers on: no skin, infill or perimeter gaps, and the spiral
 /// (toolpaths/Spiralize.h) with the outer walls.
 void addSpirals(const std::vector<Paths>& spiral_loops, const Settings& s, const Point2& centre,
@@ -294,7 +305,7 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
         WallResult walls = generateWalls(outlines, params);
         if (spiralize) {  // the first part's outer wall becomes the spiral (toolpaths/Spiralize.h)
             SpiralParts parts = splitSpiralPart(outlines);
-            spiral_loops[i] = spiralWallLoops(parts.first, params);
+            spiral_loops[i] = fuzzyLoops(spiralWallLoops(parts.first, params), settings, layer);
             if (layer >= spiralBottomLayers(settings))
                 walls.walls = generateWalls(parts.others, params).walls;
         }
