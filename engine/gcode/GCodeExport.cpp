@@ -191,6 +191,31 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
     position_ = to;
 }
 
+void GCodeExport::extrudeRising(const Point2& to, coord_um z_um, double volume_mm3, double speed_mm_s) {
+    if (volume_mm3 > 0) {
+        if (retracted() || hop_um_ > 0 || state().extra_prime_mm3 > 0)
+            unretract();
+    }
+    std::string words = "G1" + feedrateWord(speed_mm_s) + xyWords(to);
+    if (z_um != z_)
+        words += " Z" + formatCoordMm(micronsToMm(z_um));
+    double filament_mm = 0;
+    if (volume_mm3 > 0) {
+        const double e = volumeOnAxis(volume_mm3);
+        state().extruded += e;
+        std::string before;
+        const std::string extrusion = dialect_->extrude(e, mix_, before);
+        out_ += before;
+        words += " " + extrusion;
+        filament_mm = filamentMm(volume_mm3);
+    }
+    line(words);
+    timeMove(to, z_um, filament_mm, speed_mm_s, extrusion_feature_);
+    position_ = to;
+    z_ = z_um;
+    layer_z_ = z_um - hop_um_;
+}
+
 void GCodeExport::retract() {
     const bool was_retracted = retracted();
     retractTo(retraction_);

@@ -75,6 +75,10 @@ class GCodeExport {
     /// A new layer at `z`: Z goes there (plus the z-hop in force, kept until the next prime).
     void startLayer(coord_um z, double speed_mm_s) { moveZ(z + hop_um_, speed_mm_s); }
     void extrude(const Point2& to, double volume_mm3, double speed_mm_s);
+    /// An extrusion that ends at nozzle height `z_um`, which becomes the layer's height (spiralize:
+    /// Z is written with the move when it changes, as CuraEngine). Without volume the move is
+    /// written without E (the tapering end of a spiral).
+    void extrudeRising(const Point2& to, coord_um z_um, double volume_mm3, double speed_mm_s);
     /// The active extruder's own retraction for travel (and its z-hop).
     void retract();
     /// Changes the retracted filament of the active extruder to `config.amount_mm`, as CuraEngine

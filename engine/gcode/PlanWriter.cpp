@@ -79,7 +79,7 @@ void liftHead(const PlanStep& step, GCodeExport& gcode) {
     gcode.dwell(step.dwell_seconds);
 }
 
-void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterParams& params,
+void writeStep(const PlanStep& step, coord_um layer_z, const PrintPlan& plan, const PlanWriterParams& params,
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
@@ -96,7 +96,10 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, false);
             if (step.mix >= 0)  // colour mixing (mixing/MixingPass.h)
                 gcode.setMix(plan.mixes[static_cast<std::size_t>(step.mix)]);
-            gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);
+            if (step.rise_um > 0)  // a spiral (toolpaths/Spiralize.h)
+                gcode.extrudeRising(step.to, layer_z + step.rise_um, step.volume_mm3, step.speed_mm_s);
+            else
+                gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);
             extendBounds(out, step.to, gcode.z());
             break;
         case PlanStep::Kind::SetFeature:
@@ -142,7 +145,7 @@ WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, G
             gcode.resetExtrusionAxis();
         gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
         for (const PlanStep& step : layer.steps)
-            writeStep(step, plan, params, gcode, out);
+            writeStep(step, layer.z, plan, params, gcode, out);
         gcode.flushTime();
         char elapsed[64];
         std::snprintf(elapsed, sizeof elapsed, "TIME_ELAPSED:%.6f", gcode.elapsedSeconds());

@@ -133,6 +133,11 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
             if (step.kind != PlanStep::Kind::Extrude)
                 continue;
             const int scope = isRaft(feature) ? kRaftScope : mesh;
+            if (step.rise_um > 0) {  // a spiral: the mix at the height the move ends at
+                target.push_back(table.indexOf(schedules.mixOf(scope, layer.z + step.rise_um)));
+                volume.push_back(step.volume_mm3);
+                continue;
+            }
             auto [it, added] = layer_mix.emplace(scope, 0);
             if (added)
                 it->second = table.indexOf(schedules.mixOf(scope, layer.z));

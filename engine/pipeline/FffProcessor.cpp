@@ -9,8 +9,12 @@
 #include "pipeline/OutputParams.h"
 #include "planning/PrintPlanner.h"
 #include "slicing/MultiVolumes.h"
+
+#include "slicing/AdaptiveLayers.h"
 #include "slicing/OutlineCleanup.h"
+#include "toolpaths/ConicalOverhang.h"
 #include "toolpaths/GroupToolpaths.h"
+#include "toolpaths/Mold.h"
 #include "toolpaths/RaftLayout.h"
 
 namespace mixengine {
@@ -27,6 +31,52 @@ SlicingTolerance toleranceOf(const Settings& s) {
 
 bool flagOf(const Settings& s, std::string_view key) {
     return s.has(key) && s.boolean(key);
+}
+
+bool adaptiveOn(const Settings& s) {
+    return s.has("adaptive_layer_height_enabled") && s.boolean("adaptive_layer_height_enabled");
+}
+
+bool printedAsModel(const Settings& s) {
+    for (const char* key : {"infill_mesh", "cutting_mesh", "anti_overhang_mesh"}) {
+        if (s.has(key) && s.boolean(key))
+            return false;
+    }
+    return true;
+}
+
+/// adaptive_layer_height_enabled: the group's layers from the slopes of its printed meshes
+/// (slicing/AdaptiveLayers.h).
+std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance tolerance) {
+    const Settings& s = group.settings;
+    std::vector<FaceSlope> faces;
+    for (const SceneMesh& m : group.meshes) {
+        if (!printedAsModel(m.settings))
+            continue;
+        std::vector<FaceSlope> own = faceSlopes(m.mesh);
+        faces.insert(faces.end(), own.begin(), own.end());
+    }
+    AdaptiveLayerParams params;
+    params.layer_height_um = s.lengthMicrons("layer_height");
+    params.layer_height_0_um = s.lengthMicrons("layer_height_0");
+    params.variation_um = s.lengthMicrons("adaptive_layer_height_variation");
+    params.step_um = s.lengthMicrons("adaptive_layer_height_variation_step");
+    params.threshold_um = s.lengthMicrons("adaptive_layer_height_threshold");
+    params.middle = tolerance == SlicingTolerance::Middle;
+    return adaptiveLayerHeights(faces, params);
+}
+
+/// As CuraEngine 4.13 after slicing: molds (toolpaths/Mold.h), then each mesh's conical overhang
+/// (toolpaths/ConicalOverhang.h).
+void reshapeOutlines(const SceneGroup& group, SlicedGroup& sliced) {
+    std::vector<MoldMesh> molds;
+    for (std::size_t m = 0; m < sliced.meshes.size(); ++m)
+        molds.push_back({&sliced.meshes[m], &group.meshes[m].settings});
+    applyMolds(molds, group.settings.lengthMicrons("layer_height"));
+    for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
+        if (conicalOverhangWanted(group.meshes[m].settings))
+            applyConicalOverhang(sliced.meshes[m], conicalOverhangParams(group.meshes[m].settings));
+    }
 }
 
 PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
@@ -161,10 +211,11 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     for (const SceneMesh& m : group.meshes)
         max_z = std::max(max_z, m.mesh.bounds().max.z);
     const Settings& s = group.settings;
-    sliced.heights =
-        computeLayerHeights(max_z, s.lengthMicrons("layer_height_0"), s.lengthMicrons("layer_height"));
     SliceOptions options;
     options.tolerance = toleranceOf(s);
+    sliced.heights = adaptiveOn(s) ? adaptiveHeights(group, options.tolerance)
+                                   : computeLayerHeights(max_z, s.lengthMicrons("layer_height_0"),
+                                                         s.lengthMicrons("layer_height"));
     options.threads = threads;
     for (const SceneMesh& m : group.meshes) {
         SliceOptions own = options;
@@ -191,6 +242,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         for (std::vector<SlicedLayer>& layers : sliced.meshes)
             layers.clear();
     }
+    reshapeOutlines(group, sliced);
     return sliced;
 }
 

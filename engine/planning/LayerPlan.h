@@ -41,6 +41,9 @@ struct PlanStep {
     double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
     int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
+    /// Extrude (spiralize): the nozzle ends the move this far above the layer's z (0 = at the height
+    /// it is at); a spiral rises along its moves (toolpaths/Spiralize.h).
+    coord_um rise_um = 0;
 };
 
 struct PlannedLayer {

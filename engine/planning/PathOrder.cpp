@@ -91,6 +91,26 @@ void appendPathWipe(const ExtrusionPath& path, std::size_t start, const TravelPa
     }
 }
 
+/// A spiral's rise (ExtrusionPath::spiral) at the end of each of its moves: one layer thickness over
+/// the whole length, held over the flat tail, as CuraEngine 4.13 (rounded to microns).
+std::vector<coord_um> spiralRises(const ExtrusionPath& path, coord_um thickness_um) {
+    const std::size_t n = path.points.size();
+    std::vector<coord_um> rises(n, 0);
+    double total = 0;
+    for (std::size_t k = 1; k < n; ++k)
+        total += distanceUm(path.points[k - 1], path.points[k]);
+    if (total <= 0)
+        return rises;
+    double length = 0;
+    const std::size_t rising = n - std::min(path.spiral_flat_tail, n);
+    for (std::size_t k = 1; k < n; ++k) {
+        length += distanceUm(path.points[k - 1], path.points[k]);
+        rises[k] = k < rising ? static_cast<coord_um>(std::llround(double(thickness_um) * length / total))
+                              : rises[k - 1];
+    }
+    return rises;
+}
+
 void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& params, Point2& head,
               std::vector<PlanStep>& steps) {
     const Point2& first = path.points[start];
@@ -100,6 +120,8 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
     const std::size_t n = path.points.size();
     const bool reverse = !path.closed && start != 0;
     const std::size_t count = path.closed ? n : n - 1;
+    const std::vector<coord_um> rises =
+        path.spiral ? spiralRises(path, params.layer_thickness_um) : std::vector<coord_um>{};
     Point2 before_end = head;
     for (std::size_t k = 1; k <= count; ++k) {
         std::size_t index = path.closed ? (start + k) % n : (reverse ? n - 1 - k : k);
@@ -108,8 +130,9 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
         extrude.kind = PlanStep::Kind::Extrude;
         extrude.to = to;
         extrude.speed_mm_s = path.speed_mm_s;
-        extrude.volume_mm3 =
-            extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, path.flow);
+        const double flow = path.flows.size() == n ? path.flows[index] : path.flow;
+        extrude.volume_mm3 = extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, flow);
+        extrude.rise_um = rises.empty() ? 0 : rises[index];
         steps.push_back(extrude);
         before_end = head;
         head = to;

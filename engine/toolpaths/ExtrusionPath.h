@@ -1,5 +1,6 @@
 #pragma once
 // The output of toolpath generation: typed extrusion lines per layer, plain data.
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
@@ -50,6 +51,14 @@ struct ExtrusionPath {
     /// Printed in the order of its group, not nearest first (monotonic ironing); only the end to
     /// start from is chosen. Set on every path of the group or on none.
     bool keep_order = false;
+    /// Spiralize (toolpaths/Spiralize.h): the nozzle rises from the layer's z at points.front() by
+    /// one layer thickness over the whole path, in proportion to the length printed, but stops
+    /// rising for the last `spiral_flat_tail` points (CuraEngine's tapering round on the top layer).
+    bool spiral = false;
+    std::size_t spiral_flat_tail = 0;
+    /// Empty, or one flow per point: flows[k] is the flow of the line that ends at points[k]
+    /// (flows[0] is not used); 0 moves without extruding. Replaces `flow` when given.
+    std::vector<double> flows;
 };
 
 }  // namespace mixengine

@@ -6,6 +6,7 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/FeatureStyle.h"
+#include "toolpaths/FuzzySkin.h"
 #include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
 #include "toolpaths/Ironing.h"
@@ -15,6 +16,7 @@
 #include "toolpaths/Seam.h"
 #include "toolpaths/Skin.h"
 #include "toolpaths/SkinPaths.h"
+#include "toolpaths/Spiralize.h"
 #include "toolpaths/Walls.h"
 
 namespace mixengine {
@@ -70,6 +72,11 @@ bool flag(const Settings& s, std::string_view key) {
     return s.has(key) && s.boolean(key);
 }
 
+/// initial_bottom_layers: below it a spiralized mesh prints as usual.
+int spiralBottomLayers(const Settings& s) {
+    return countOf(s, "initial_bottom_layers", countOf(s, "bottom_layers"));
+}
+
 /// fill_perimeter_gaps (not in spiralize mode).
 bool fillsPerimeterGaps(const Settings& s) {
     return !(s.has("fill_perimeter_gaps") && s.text("fill_perimeter_gaps") == "nowhere") &&
@@ -84,6 +91,8 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.wall_count = countOf(s, "wall_line_count");
     if (layer % 2 == 1 && s.has("alternate_extra_perimeter") && s.boolean("alternate_extra_perimeter"))
         ++p.wall_count;  // one wall more on every other layer
+    if (layer % 2 == 1 && spiralizeOn(s) && layer < spiralBottomLayers(s))
+        p.wall_count += 5;  // spiralize: a watertight bottom (toolpaths/Spiralize.h)
     p.outer_width_um = styles.wall_0.width_um;
     p.inner_width_um = styles.wall_x.width_um;
     p.outer_inset_um = s.has("wall_0_inset") ? s.lengthMicrons("wall_0_inset") : 0;
@@ -203,6 +212,7 @@ std::vector<MeshLayerGroups> surfaceToolpaths(const std::vector<SlicedLayer>& la
         std::vector<ExtrusionPath>& walls = result[i].outer_walls;
         appendStyledLoops(adjustedOutlines(layers[i].outlines, settings, layer), Feature::WallOuter, style,
                           walls);
+        applyFuzzySkin(walls, fuzzySkinParams(settings, layer), layer);
         placeSeams(walls, seam, layer);
         for (const Path& piece : layers[i].open_polylines) {
             if (piece.size() >= 2)
@@ -235,8 +245,37 @@ std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const
         return {};
     const Paths above =
         i + 1 < layers.size() ? adjustedOutlines(layers[i + 1].outlines, s, layer + 1) : Paths{};
-    const Paths surface = topSurface(adjustedOutlines(layers[i].outlines, s, layer), above);
+    const Paths outlines = adjustedOutlines(layers[i].outlines, s, layer);
+    // Spiralized (as CuraEngine 4.13): the whole outline of the last bottom layer, nothing else.
+    if (spiralizeOn(s) && layer + 1 != spiralBottomLayers(s))
+        return {};
+    const Paths surface = spiralizeOn(s) ? outlines : topSurface(outlines, above);
     return ironingPaths(surface, ironingParams(s, layer));
+}
+
+/// The spiral's wall loops made fuzzy, as CuraEngine 4.13 spirals the fuzzy outer wall
+/// (toolpaths/FuzzySkin.h; seeds apart from the walls').
+Paths fuzzyLoops(Paths loops, const Settings& s, int layer) {
+    const FuzzySkinParams fuzz = fuzzySkinParams(s, layer);
+    if (!fuzz.enabled)
+        return loops;
+    for (std::size_t k = 0; k < loops.size(); ++k)
+        loops[k] = fuzzyLoop(loops[k], fuzz, ~((std::uint64_t(std::uint32_t(layer)) << 32) | k));
+    return loops;
+}
+
+/// Spiralize from initial_bottom_layers on: no skin, infill or perimeter gaps, and the spiral
+/// (toolpaths/Spiralize.h) with the outer walls.
+void addSpirals(const std::vector<Paths>& spiral_loops, const Settings& s, const Point2& centre,
+                std::vector<MeshLayerGroups>& result) {
+    constexpr std::uint32_t kSpiralSequence = 0xFFFF'FFFFU;  // apart from the wall sequences
+    std::vector<std::vector<ExtrusionPath>> spirals = spiralPaths(spiral_loops, s, centre, kSpiralSequence);
+    for (std::size_t i = static_cast<std::size_t>(spiralBottomLayers(s)); i < result.size(); ++i) {
+        result[i].skin.clear();
+        result[i].infill.clear();
+        for (ExtrusionPath& path : spirals[i])
+            result[i].outer_walls.push_back(std::move(path));
+    }
 }
 
 }  // namespace
@@ -255,10 +294,21 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
         roofing_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
+    const bool spiralize = spiralizeOn(settings);
+    std::vector<Paths>& spiral_loops = out.spiral_loops;
+    spiral_loops.resize(spiralize ? layers.size() : 0);
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
-        WallResult walls = generateWalls(adjustedOutlines(layers[i].outlines, settings, layer),
-                                         wallParams(settings, meshStyles(settings, layer), refs, layer));
+        const Paths outlines = adjustedOutlines(layers[i].outlines, settings, layer);
+        const WallParams params = wallParams(settings, meshStyles(settings, layer), refs, layer);
+        WallResult walls = generateWalls(outlines, params);
+        if (spiralize) {  // the first part's outer wall becomes the spiral (toolpaths/Spiralize.h)
+            SpiralParts parts = splitSpiralPart(outlines);
+            spiral_loops[i] = fuzzyLoops(spiralWallLoops(parts.first, params), settings, layer);
+            if (layer >= spiralBottomLayers(settings))
+                walls.walls = generateWalls(parts.others, params).walls;
+        }
+        applyFuzzySkin(walls.walls, fuzzySkinParams(settings, layer), layer);
         placeSeams(walls.walls, seam, layer);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? out.walls[i].outer_walls : out.walls[i].inner_walls)
@@ -312,6 +362,8 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
             result[i].infill_start = randomInfillStart(result[i].infill, layer);
         result[i].ironing = ironing(layers, settings, i);
     });
+    if (!areas.spiral_loops.empty())
+        addSpirals(areas.spiral_loops, settings, meshCentre(layers), result);
     return result;
 }
 

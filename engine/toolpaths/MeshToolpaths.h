@@ -60,6 +60,7 @@ struct MeshAreas {
     std::vector<Paths> wall_gaps;        ///< [layer] the gaps between the walls
     std::vector<SkinAreas> skin;         ///< [layer]
     std::vector<Paths> own_infill;       ///< [layer]
+    std::vector<Paths> spiral_loops;     ///< [layer] magic_spiralize: the spiral's wall loops (else empty)
 };
 
 /// Step 1: walls and areas (not for magic_mesh_surface_mode "surface": see surfaceOnlyMesh).

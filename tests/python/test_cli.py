@@ -130,13 +130,13 @@ def test_not_honoured_settings_are_named_once_each(engine, corpus, tmp_path):
     MixEngine does not act on yet gives one warning line; its definitions' own value gives none."""
     cube = corpus("cube20")
     out = tmp_path / "x.gcode"
-    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-s", "magic_fuzzy_skin_enabled=True", "-l", cube,
+    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-s", "wireframe_enabled=True", "-l", cube,
                              "-o", out)
     assert proc.returncode == 0, proc.stderr
     lines = [line for line in proc.stderr.splitlines() if "has no effect in MixEngine yet" in line]
-    assert lines == ["[warning] setting 'magic_fuzzy_skin_enabled' has no effect in MixEngine yet "
-                     "(value True: fuzzy skin is not built yet)"], proc.stderr
-    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-s", "magic_fuzzy_skin_enabled=False", "-l", cube,
+    assert lines == ["[warning] setting 'wireframe_enabled' has no effect in MixEngine yet "
+                     "(value True: wire printing is not built)"], proc.stderr
+    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-s", "wireframe_enabled=False", "-l", cube,
                              "-o", out)
     assert proc.returncode == 0 and "has no effect in MixEngine yet" not in proc.stderr, proc.stderr
     proc = helpers.mixengine("slice", "-j", "creality_ender3", "-l", cube, "-o", out)

@@ -210,11 +210,11 @@ def test_connect_without_a_frontend_fails_promptly_naming_the_address(engine):
 def test_a_setting_mixengine_does_not_honour_is_named_in_the_engine_log(engine, cube, tmp_path):
     """Issue 19, no silent ignores over the socket: Cura writes the engine's stderr into cura.log, so the
     warning for a listed setting (settings/mixengine/not_honoured.json) reaches the user there."""
-    global_settings, extruders = resolved_settings("creality_ender3", "magic_fuzzy_skin_enabled=True")
+    global_settings, extruders = resolved_settings("creality_ender3", "wireframe_enabled=True")
     r = slice_over_socket(engine, tmp_path, global_settings, extruders, [one_object(cube)])
     assert r["exit_code"] == 0, r["stderr"]
     warnings = [line for line in r["stderr"].splitlines() if "has no effect in MixEngine yet" in line]
-    assert any(line.startswith("[warning] setting 'magic_fuzzy_skin_enabled' has no effect in MixEngine yet "
+    assert any(line.startswith("[warning] setting 'wireframe_enabled' has no effect in MixEngine yet "
                                "(value True") for line in warnings), r["stderr"]
 
 
