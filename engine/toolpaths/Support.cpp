@@ -1,11 +1,13 @@
 #include "toolpaths/Support.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/ParallelFor.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/SupportAreas.h"
 #include "toolpaths/SupportPaths.h"
+#include "toolpaths/TreeSupport.h"
 
 namespace mixengine {
 namespace {
@@ -101,12 +103,17 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
     return fills;
 }
 
+bool isTree(const SupportMesh& mesh) {
+    return mesh.settings->has("support_structure") && mesh.settings->text("support_structure") == "tree";
+}
+
+/// The overhangs of the meshes with support_enable and normal support, united per layer.
 Overhangs collectOverhangs(const SupportInput& in, int threads) {
     Overhangs all;
     all.basic.resize(in.heights->size());
     all.full.resize(in.heights->size());
     for (const SupportMesh& mesh : in.meshes) {
-        if (!mesh.settings->boolean("support_enable"))
+        if (!mesh.settings->boolean("support_enable") || isTree(mesh))
             continue;
         const Overhangs own =
             detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees("support_angle"), threads);
@@ -118,6 +125,53 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
         });
     }
     return all;
+}
+
+ClipperLib::IntRect meshBounds(const std::vector<SlicedLayer>& layers) {
+    Paths all;
+    for (const SlicedLayer& layer : layers)
+        all.insert(all.end(), layer.outlines.begin(), layer.outlines.end());
+    return boundsOf(all);
+}
+
+/// The tree support of the meshes with support_enable and support_structure tree
+/// (toolpaths/TreeSupport.h); none: empty.
+std::vector<SupportLayerAreas> treeAreas(const SupportInput& in, int threads) {
+    std::vector<Overhangs> overhangs;
+    std::vector<const SupportMesh*> trees;
+    for (const SupportMesh& mesh : in.meshes) {
+        if (!mesh.settings->boolean("support_enable") || !isTree(mesh))
+            continue;
+        overhangs.push_back(detectOverhangs(*mesh.layers, *in.heights,
+                                            mesh.settings->angleDegrees("support_angle"), threads));
+        trees.push_back(&mesh);
+    }
+    if (trees.empty())
+        return {};
+    std::vector<TreeMesh> meshes;
+    for (std::size_t i = 0; i < trees.size(); ++i)
+        meshes.push_back({trees[i]->settings, &overhangs[i].basic, meshBounds(*trees[i]->layers)});
+    return treeSupportAreas(*in.global, meshes, *in.model, threads);
+}
+
+/// Normal support's areas united with tree support's, layer by layer.
+std::vector<SupportLayerAreas> supportAreas(const SupportInput& in, coord_um layer_height, int threads) {
+    const Settings& g = *in.global;
+    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
+    const bool normal = std::any_of(in.meshes.begin(), in.meshes.end(), [](const SupportMesh& m) {
+        return m.settings->boolean("support_enable") && !isTree(m);
+    });
+    std::vector<SupportLayerAreas> areas = normal
+                                               ? computeSupportAreas(*in.model, collectOverhangs(in, threads),
+                                                                     areaParams(body, layer_height), threads)
+                                               : std::vector<SupportLayerAreas>(in.heights->size());
+    const std::vector<SupportLayerAreas> tree = treeAreas(in, threads);
+    parallelFor(std::min(tree.size(), areas.size()), threads, [&](std::size_t i) {
+        areas[i].support = unionOf(areas[i].support, tree[i].support);
+        areas[i].roof = unionOf(areas[i].roof, tree[i].roof);
+        areas[i].floor = unionOf(areas[i].floor, tree[i].floor);
+    });
+    return areas;
 }
 
 }  // namespace
@@ -138,10 +192,8 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         wanted = wanted || mesh.settings->boolean("support_enable");
     if (!wanted)
         return result;
-    const Settings& g = *in.global;
-    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
-    const std::vector<SupportLayerAreas> areas = computeSupportAreas(
-        *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads);
+    const std::vector<SupportLayerAreas> areas =
+        supportAreas(in, in.global->lengthMicrons("layer_height"), threads);
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())
