@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/ParallelFor.h"
+#include "geometry/Angles.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/SupportAreas.h"
 #include "toolpaths/SupportPaths.h"
@@ -38,6 +39,14 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     p.join_distance_um = s.has("support_join_distance") ? s.lengthMicrons("support_join_distance") : 0;
     p.offset_um = s.has("support_offset") ? s.lengthMicrons("support_offset") : 0;
     p.min_area_um2 = s.has("minimum_support_area") ? s.real("minimum_support_area") * 1e6 : 0.0;
+    if (s.has("support_conical_enabled") && s.boolean("support_conical_enabled")) {
+        const double angle = s.angleDegrees("support_conical_angle");
+        const double slope = std::tan(radiansFromDegrees(std::abs(angle))) - 0.01;
+        const coord_um step =
+            static_cast<coord_um>(slope * double(layer_height));  // truncated, as CuraEngine
+        p.conical_step_um = angle > 0 ? -step : angle < 0 ? step : 0;
+        p.conical_min_width_um = s.lengthMicrons("support_conical_min_width");
+    }
     if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
         p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
     if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
