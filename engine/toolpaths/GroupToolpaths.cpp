@@ -153,7 +153,9 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     const std::vector<Paths> model = unitedModel(input, threads);
 
     const RaftLayout raft = raftLayout(*input.global, input.extruders);
-    SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled};
+    SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled, {}};
+    if (!raft.enabled && !model.empty())
+        support.first_layer_exclusion = brimCoveredArea(*input.global, input.extruders, model[0]);
     for (const ToolpathMeshInput& mesh : input.meshes)
         support.meshes.push_back({mesh.settings, mesh.layers});
     SupportResult support_result = generateSupport(support, threads);

@@ -136,6 +136,45 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
     return all;
 }
 
+/// The model's layer-0 outlines (outer contours only with brim_outside_only, its holes left out).
+Paths brimBase(const Paths& layer0, bool outside_only) {
+    const Paths all = unionOf(layer0);
+    if (!outside_only)
+        return all;
+    Paths outer;
+    for (const Path& p : all) {
+        if (ClipperLib::Orientation(p))
+            outer.push_back(p);
+    }
+    return outer;
+}
+
+}  // namespace
+
+Paths brimCoveredArea(const Settings& global, const std::vector<Settings>* extruders, const Paths& layer0) {
+    if (layer0.empty() || global.text("adhesion_type") != "brim")
+        return {};
+    const Settings& body = trainSettings(global, extruders, extruderOf(global, "support_infill_extruder_nr"));
+    if (!body.has("brim_replaces_support") || !body.boolean("brim_replaces_support"))
+        return {};
+    const Settings& adhesion = trainSettings(global, extruders, extruderOf(global, "adhesion_extruder_nr"));
+    const long long lines = std::max<long long>(0, adhesion.integer("brim_line_count"));
+    if (lines == 0)
+        return {};
+    const double width =
+        double(adhesion.lengthMicrons("skirt_brim_line_width")) *
+        (adhesion.has("initial_layer_line_width_factor") ? adhesion.ratio("initial_layer_line_width_factor")
+                                                         : 1.0);
+    const bool outside_only = !adhesion.has("brim_outside_only") || adhesion.boolean("brim_outside_only");
+    const Paths base = brimBase(layer0, outside_only);
+    Paths covered = offsetPolygons(base, std::llround(width * double(lines + lines % 2)));
+    if (outside_only)  // the support in the model's holes stays: no brim there
+        covered = differenceOf(covered, differenceOf(base, unionOf(layer0)));
+    return covered;
+}
+
+namespace {
+
 ClipperLib::IntRect meshBounds(const std::vector<SlicedLayer>& layers) {
     Paths all;
     for (const SlicedLayer& layer : layers)
@@ -201,8 +240,12 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         wanted = wanted || mesh.settings->boolean("support_enable");
     if (!wanted)
         return result;
-    const std::vector<SupportLayerAreas> areas =
+    std::vector<SupportLayerAreas> areas =
         supportAreas(in, in.global->lengthMicrons("layer_height"), threads);
+    if (!areas.empty() && !in.first_layer_exclusion.empty()) {  // brim_replaces_support
+        areas[0].support = differenceOf(areas[0].support, in.first_layer_exclusion);
+        areas[0].roof = differenceOf(areas[0].roof, in.first_layer_exclusion);
+    }
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())

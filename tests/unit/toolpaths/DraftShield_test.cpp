@@ -6,6 +6,8 @@
 #include "ToolpathTestSupport.h"
 #include "toolpaths/Adhesion.h"
 #include "toolpaths/PolygonOps.h"
+#include "toolpaths/Support.h"
+#include "toolpaths/TreePointOps.h"
 
 namespace mixengine {
 namespace {
@@ -115,6 +117,30 @@ TEST(DraftShield, ApproximateConvexHullClosesConcavities) {
     // The triangle between the arms filled up to a 100 mm arc over its 21.2 mm side: 175 + 112.5 −
     // 100² / 2 · (θ − sin θ) mm², θ = 2 asin(21.2 / 200), a segment of 8.0 mm².
     EXPECT_NEAR(areaUm2(hull) / 1e6, 175 + 112.5 - 8.0, 0.5);
+}
+
+}  // namespace
+}  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+TEST(BrimReplacesSupport, TheBrimsWidthAroundTheModelHasNoSupportOnLayerZero) {
+    // A 10 mm ring (a 4 mm hole): 20 brim lines of 0.4 mm cover 8 mm around its outside only.
+    const Paths ring = {test::rect(0, 0, 10'000, 10'000), test::rect(7'000, 3'000, 3'000, 7'000)};
+    const ResolvedMachine brim = test::fdmMachine({{"adhesion_type", "brim"}, {"brim_line_count", "20"}});
+    const Paths covered = brimCoveredArea(brim.global, &brim.extruders, ring);
+    EXPECT_EQ(boundsOf(covered).left, -8'000);
+    EXPECT_EQ(boundsOf(covered).right, 18'000);
+    EXPECT_FALSE(insideArea(covered, {5'000, 5'000}, false));  // the hole keeps its support
+    EXPECT_TRUE(insideArea(covered, {-7'000, 5'000}, false));
+    const ResolvedMachine odd = test::fdmMachine({{"adhesion_type", "brim"}, {"brim_line_count", "5"}});
+    EXPECT_EQ(boundsOf(brimCoveredArea(odd.global, &odd.extruders, ring)).left, -2'400);  // rounded up to 6
+    const ResolvedMachine off =
+        test::fdmMachine({{"adhesion_type", "brim"}, {"brim_replaces_support", "False"}});
+    EXPECT_TRUE(brimCoveredArea(off.global, &off.extruders, ring).empty());
+    const ResolvedMachine skirt = test::fdmMachine({{"adhesion_type", "skirt"}});
+    EXPECT_TRUE(brimCoveredArea(skirt.global, &skirt.extruders, ring).empty());
 }
 
 }  // namespace
