@@ -61,23 +61,40 @@ MixVector scheduledMix(const ScopeSchedule& s, coord_um layer_z) {
     return targetMix(s.mixing, micronsToMm(layer_z - s.bottom_um), micronsToMm(s.top_um - s.bottom_um));
 }
 
-/// The scope of the raft's extrusions in a layer's mix table (meshes are ≥ 0, non-mesh −1).
+/// The scope of the raft's extrusions in a layer's mix table (meshes are ≥ 0, non-mesh −1), and of
+/// the support's and the draft shield's.
 constexpr int kRaftScope = -2;
+constexpr int kSupportScope = -3;
 
 bool isRaft(Feature feature) {
     return feature == Feature::RaftBase || feature == Feature::RaftInterface ||
            feature == Feature::RaftSurface;
 }
 
-/// The schedules of one group: each mesh's, the non-mesh extrusions' and the raft's fixed mix.
+bool isSupport(Feature feature) {
+    return feature == Feature::Support || feature == Feature::SupportInterface ||
+           feature == Feature::DraftShield;
+}
+
+int scopeOf(Feature feature, int mesh) {
+    if (isRaft(feature))
+        return kRaftScope;
+    return isSupport(feature) ? kSupportScope : mesh;
+}
+
+/// The schedules of one group: each mesh's, the non-mesh extrusions', the raft's and the
+/// support's fixed mixes.
 struct GroupSchedules {
     std::vector<ScopeSchedule> meshes;
     ScopeSchedule nonmesh;
     MixVector raft;
+    MixVector support;
 
     MixVector mixOf(int scope, coord_um layer_z) const {
         if (scope == kRaftScope)
             return raft;
+        if (scope == kSupportScope)
+            return support;
         const bool own = scope >= 0 && static_cast<std::size_t>(scope) < meshes.size();
         return scheduledMix(own ? meshes[static_cast<std::size_t>(scope)] : nonmesh, layer_z);
     }
@@ -114,6 +131,7 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     schedules.meshes = meshSchedules(group, output);
     schedules.nonmesh = groupSchedule(group, output, schedules.meshes);
     schedules.raft = parseRaftMix(*group.settings, output);
+    schedules.support = parseSupportMix(*group.settings, output);
     const double chamber_mm3 = parseChamberVolumeMm3(*group.settings);
     warnAboutDialect(output, *group.settings, log);
 
@@ -124,7 +142,7 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
         int mesh = -1;
         Feature feature = Feature::Fill;
         std::map<int, int>
-            layer_mix;  // scope (mesh index, -1 = non-mesh, -2 = raft) → mix index on this layer
+            layer_mix;  // scope (mesh index, -1 = non-mesh, -2 = raft, -3 = support) → mix index
         for (const PlanStep& step : layer.steps) {
             if (step.kind == PlanStep::Kind::SetMesh)
                 mesh = step.mesh_index;
@@ -132,7 +150,7 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
                 feature = step.feature;
             if (step.kind != PlanStep::Kind::Extrude)
                 continue;
-            const int scope = isRaft(feature) ? kRaftScope : mesh;
+            const int scope = scopeOf(feature, mesh);
             if (step.rise_um > 0) {  // a spiral: the mix at the height the move ends at
                 target.push_back(table.indexOf(schedules.mixOf(scope, layer.z + step.rise_um)));
                 volume.push_back(step.volume_mm3);

@@ -5,9 +5,11 @@
 // PlanStep::rise_um, at the height each ends at), in percent of the mesh's own height or in mm; non-mesh
 // extrusions follow the group's settings over the height of all meshes together; the raft (its
 // RaftBase/RaftInterface/RaftSurface extrusions) is printed with the group's mixing_raft_ratio (filament A by
-// default). The chamber-delay shift (mixing/ChamberDelay.h) is applied last, so the model's first colour is
-// primed through the raft. In single mode (the default) the plan is left untouched: no mixes, every step's
-// mix stays -1. Bad mixing settings throw InputError (mixing/MixingSettings.h) before anything is written.
+// default), the support (normal and tree, body and interface, Support/SupportInterface) and the draft shield
+// (DraftShield) with its mixing_support_ratio (filament A by default). The chamber-delay shift
+// (mixing/ChamberDelay.h) is applied last, so the model's first colour is primed through the raft. In single
+// mode (the default) the plan is left untouched: no mixes, every step's mix stays -1. Bad mixing settings
+// throw InputError (mixing/MixingSettings.h) before anything is written.
 #include <vector>
 
 #include "common/Log.h"

@@ -43,7 +43,7 @@ const char* defaultText(std::string_view key) {
         return "100";
     if (key == "mixing_ratio")
         return "0.5:0.5";
-    if (key == "mixing_raft_ratio")
+    if (key == "mixing_raft_ratio" || key == "mixing_support_ratio")
         return "1";
     if (key == "mixing_chamber_volume")
         return "0";
@@ -251,6 +251,10 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output) {
 
 MixVector parseRaftMix(const Settings& global, const MixingOutput& output) {
     return parseMixRatio("mixing_raft_ratio", textOf(global, "mixing_raft_ratio"), output.channels);
+}
+
+MixVector parseSupportMix(const Settings& global, const MixingOutput& output) {
+    return parseMixRatio("mixing_support_ratio", textOf(global, "mixing_support_ratio"), output.channels);
 }
 
 double parseChamberVolumeMm3(const Settings& global) {

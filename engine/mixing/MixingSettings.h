@@ -9,6 +9,8 @@
 //                           missing channels are 0); they must add up to 1.
 //   mixing_raft_ratio       the same form, for the raft (adhesion_type raft); default "1":
 //                           filament A only.
+//   mixing_support_ratio    the same form, for the support (normal and tree, body and
+//                           interface) and the draft shield; default "1": filament A only.
 //   mixing_gradient_stops   "0=1:0; 50=0:1; 100=0.5:0.5" — height (in mixing_gradient_unit)
 //                           = ratios; heights must not decrease. Empty: the seed's two-stop
 //                           gradient from mixing_gradient_start (A only) to mixing_gradient_end
@@ -60,6 +62,9 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output);
 
 /// mixing_raft_ratio: the mix the raft is printed with (mixing on).
 MixVector parseRaftMix(const Settings& global, const MixingOutput& output);
+
+/// mixing_support_ratio: the mix the support and the draft shield are printed with (mixing on).
+MixVector parseSupportMix(const Settings& global, const MixingOutput& output);
 
 /// mixing_chamber_volume in mm³ (0 = no delay compensation); negative values are an error.
 double parseChamberVolumeMm3(const Settings& global);

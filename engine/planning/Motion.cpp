@@ -25,7 +25,7 @@ std::string featureKey(Feature feature, const std::string& kind) {
         {Feature::Skin, "topbottom"},         {Feature::Fill, "infill"},
         {Feature::Support, "support_infill"}, {Feature::SupportInterface, "support_roof"},
         {Feature::Skirt, "skirt_brim"},       {Feature::PrimeTower, "prime_tower"},
-        {Feature::Ironing, "ironing"}};
+        {Feature::Ironing, "ironing"},        {Feature::DraftShield, "skirt_brim"}};
     const auto it = suffix.find(feature);
     return kind + "_" + (it != suffix.end() ? it->second : std::string("print"));
 }
@@ -71,7 +71,7 @@ void setMotion(PlanStep& step, const MotionSources& sources, const Tracker& at, 
     const bool travel = step.kind == PlanStep::Kind::Travel;
     const Settings& s = sourceOf(sources, at, travel);
     const std::string first = travel ? "_travel_layer_0" : "_print_layer_0";
-    const bool smooth = travel || (at.feature != Feature::Skirt && !isRaft(at.feature));
+    const bool smooth = travel || (markedFeature(at.feature) != Feature::Skirt && !isRaft(at.feature));
     for (const std::string kind : {"acceleration", "jerk"}) {
         if (!(kind == "acceleration" ? sources.acceleration_enabled : sources.jerk_enabled))
             continue;

@@ -241,7 +241,7 @@ void wipeOnTower(const GroupToolpaths& t, const std::vector<Settings>& extruders
 }
 
 /// What one extruder prints on a layer, in CuraEngine's order: on layer 0 the skirt or brim, the
-/// ooze shield, its prime tower rings (and the wipe), its support, then every mesh.
+/// ooze shield, the draft shield, its prime tower rings (and the wipe), its support, then every mesh.
 void planExtruderOnLayer(const GroupToolpaths& t, const std::vector<Settings>& extruders,
                          const LayerContext& ctx, int previous, Point2& head, PlannedLayer& planned) {
     const auto i = static_cast<std::size_t>(ctx.layer);
@@ -249,6 +249,8 @@ void planExtruderOnLayer(const GroupToolpaths& t, const std::vector<Settings>& e
         planNonMesh(t.adhesion, ctx, head, planned);
     if (i < t.ooze_shield.size())
         planNonMesh(t.ooze_shield[i], ctx, head, planned);
+    if (i < t.draft_shield.size())
+        planNonMesh(t.draft_shield[i], ctx, head, planned);
     const bool switched = ctx.extruder != previous;
     if (printsTower(t, ctx, switched)) {
         planNonMesh(t.prime_tower[i], ctx, head, planned);

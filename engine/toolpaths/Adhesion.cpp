@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "toolpaths/DraftShield.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/Support.h"
@@ -47,6 +48,23 @@ std::vector<ExtrusionPath> rings(const Paths& base, coord_um first_um, int count
         }
     }
     std::reverse(loops.begin(), loops.end());
+    return loops;
+}
+
+/// The brim in the shields' foot (see the header): loops inward from the shields' outline.
+std::vector<ExtrusionPath> shieldBrim(const Paths& shields, const Paths& brim_base, coord_um brim_reach_um,
+                                      int count, const FeatureStyle& style) {
+    const coord_um w = style.width_um;
+    const coord_um depth = coord_um(count + count % 2) * w;
+    Paths foot = differenceOf(shields, offsetPolygons(shields, -depth - w));
+    foot = differenceOf(foot, offsetPolygons(brim_base, brim_reach_um + w));
+    std::vector<ExtrusionPath> loops;
+    constexpr int kMaxLoops = 1000;
+    for (int i = 0; i < kMaxLoops && !foot.empty(); ++i) {
+        for (const Path& p : foot)
+            loops.push_back(styledPath(p, true, Feature::Skirt, style));
+        foot = offsetPolygons(foot, -w);
+    }
     return loops;
 }
 
@@ -100,15 +118,26 @@ AdhesionResult generateAdhesion(const AdhesionInput& in) {
         const coord_um gap = s.has("brim_gap") ? s.lengthMicrons("brim_gap") : 0;
         const int count = static_cast<int>(std::max<long long>(0, s.integer("brim_line_count")));
         result.paths = rings(base, gap + style.width_um / 2, count, min_length, style);
+        if (!in.shields.empty()) {
+            const coord_um reach =
+                gap + style.width_um / 2 + coord_um(std::max(0, count - 1)) * style.width_um;
+            const std::vector<ExtrusionPath> foot = shieldBrim(in.shields, base, reach, count, style);
+            result.paths.insert(result.paths.end(), foot.begin(), foot.end());
+        }
         return result;
     }
     if (type != "skirt")
         result.warnings.push_back("adhesion_type '" + type + "' is not supported; printing a skirt instead");
     Paths everything = in.models;
     everything.insert(everything.end(), in.extras.begin(), in.extras.end());
-    const Paths hull{convexHull(everything)};
+    Paths hull{convexHull(everything)};
+    coord_um first = s.lengthMicrons("skirt_gap") + style.width_um / 2;
+    if (!in.shields.empty()) {  // around the shields too, as CuraEngine
+        hull = approxConvexHull(unionOf(offsetPolygons(hull, first - style.width_um), in.shields), 0);
+        first = style.width_um;
+    }
     const int count = static_cast<int>(std::max<long long>(0, s.integer("skirt_line_count")));
-    result.paths = rings(hull, s.lengthMicrons("skirt_gap") + style.width_um / 2, count, min_length, style);
+    result.paths = rings(hull, first, count, min_length, style);
     return result;
 }
 

@@ -42,6 +42,7 @@ void dropLeadingLayers(std::size_t count, GroupToolpaths& toolpaths) {
     if (toolpaths.prime_tower_last_forced_layer >= 0)
         toolpaths.prime_tower_last_forced_layer -= static_cast<int>(count);
     dropFront(toolpaths.ooze_shield, count);
+    dropFront(toolpaths.draft_shield, count);
     toolpaths.heights.resize(toolpaths.heights.size() - std::min(count, toolpaths.heights.size()));
     toolpaths.first_sliced_layer += count;
 }

@@ -11,6 +11,8 @@ Feature markedFeature(Feature feature) {
             return Feature::SupportInterface;
         case Feature::RaftInterface:
             return Feature::Support;
+        case Feature::DraftShield:
+            return Feature::Skirt;
         default:
             return feature;
     }

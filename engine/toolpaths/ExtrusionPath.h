@@ -9,9 +9,10 @@
 
 namespace mixengine {
 
-/// Feature types, named as Cura's ;TYPE: markers name them. Ironing and the three raft layers are
-/// features of their own (own speeds, accelerations, jerks) that CuraEngine 4.13 marks with an
-/// existing type: ironing SKIN, raft base and surface SUPPORT-INTERFACE, raft interface SUPPORT.
+/// Feature types, named as Cura's ;TYPE: markers name them. Ironing, the three raft layers and the
+/// draft shield are features of their own (own speeds, accelerations, jerks or mix) that CuraEngine
+/// 4.13 marks with an existing type: ironing SKIN, raft base and surface SUPPORT-INTERFACE, raft
+/// interface SUPPORT, draft shield SKIRT (printed with the skirt's style).
 enum class Feature {
     WallOuter,
     WallInner,
@@ -25,6 +26,7 @@ enum class Feature {
     RaftBase,
     RaftInterface,
     RaftSurface,
+    DraftShield,
 };
 
 std::string_view featureMarker(Feature feature);  ///< "WALL-OUTER", "FILL", ...

@@ -5,6 +5,7 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/Adhesion.h"
+#include "toolpaths/DraftShield.h"
 #include "toolpaths/EmptyLayers.h"
 #include "toolpaths/ExtruderSkirts.h"
 #include "toolpaths/InfillMeshes.h"
@@ -117,6 +118,16 @@ void addOtherExtruderSkirts(const ToolpathInput& input, const std::vector<std::s
     adhesion.insert(adhesion.end(), others.begin(), others.end());
 }
 
+/// The shields' outlines on the first printed layer, which the skirt goes around.
+Paths shieldsOnFirstLayer(const GroupToolpaths& result, const Paths& draft_outline, std::size_t first) {
+    Paths shields = draft_outline;
+    if (first < result.ooze_shield.size()) {
+        for (const ExtrusionPath& path : result.ooze_shield[first])
+            shields.push_back(path.points);
+    }
+    return shields;
+}
+
 /// Drops the empty layers at the bottom (toolpaths/EmptyLayers.h) and says so in the notes.
 void dropEmptyBottomLayers(const ToolpathInput& input, GroupToolpaths& result) {
     const std::size_t empty = leadingEmptyLayers(result, input);
@@ -136,7 +147,9 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     const std::vector<Paths> model = unitedModel(input, threads);
 
     const RaftLayout raft = raftLayout(*input.global, input.extruders);
-    SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled};
+    SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled, {}};
+    if (!raft.enabled && !model.empty())
+        support.first_layer_exclusion = brimCoveredArea(*input.global, input.extruders, model[0]);
     for (const ToolpathMeshInput& mesh : input.meshes)
         support.meshes.push_back({mesh.settings, mesh.layers, mesh.role});
     SupportResult support_result = generateSupport(support, threads);
@@ -150,15 +163,21 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     result.prime_tower_last_forced_layer = prime_tower.last_forced_layer;
     result.prime_tower_middle = prime_tower.middle;
     result.ooze_shield = generateOozeShield(tower);
+    const std::size_t first_printed =
+        model.empty() ? 0 : std::min(leadingEmptyLayers(result, input), model.size() - 1);
+    DraftShieldResult draft =
+        generateDraftShield({input.global, input.extruders, &model, &result.support, &used, first_printed});
+    result.draft_shield = std::move(draft.layers);
 
     if (!model.empty() && !raft.enabled) {
         // As CuraEngine, the brim goes around the support on layer 0 too, and around the prime tower
         // unless the tower has a brim of its own; around the first layer that prints when the bottom
         // ones are empty (they are dropped below).
-        const std::size_t first = std::min(leadingEmptyLayers(result, input), model.size() - 1);
+        const std::size_t first = first_printed;
         AdhesionInput adhesion{input.global, input.extruders,
                                first == 0 ? unionOf(model[0], support_result.first_layer_area) : model[first],
-                               pointsOf(result.support[first])};
+                               pointsOf(result.support[first]),
+                               shieldsOnFirstLayer(result, draft.outline, first)};
         const Paths tower_points = pointsOf(result.prime_tower[first]);
         adhesion.extras.insert(adhesion.extras.end(), tower_points.begin(), tower_points.end());
         if (prime_tower.outermost >= 0 && prime_tower.brim.empty())

@@ -10,9 +10,9 @@
 // Order of work: each mesh (toolpaths/MeshToolpaths.h; infill meshes inside the others,
 // toolpaths/InfillMeshes.h), then the support around all meshes
 // (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
-// (toolpaths/PrimeTower.h), and last the skirt or brim around everything on layer 0
-// (toolpaths/Adhesion.h) with the other extruders' lines outside it (toolpaths/ExtruderSkirts.h);
-// last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
+// (toolpaths/PrimeTower.h), the draft shield (toolpaths/DraftShield.h), and last the skirt or brim around
+// everything on layer 0 (toolpaths/Adhesion.h) with the other extruders' lines outside it
+// (toolpaths/ExtruderSkirts.h); last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
 // so layer 0 of the result is the first layer that prints. With adhesion_type raft there is no
 // skirt or brim: the raft (toolpaths/Raft.h) goes under everything on that first layer, the
 // first layer's support moves to the raft's filler layers (toolpaths/Support.h) and the model's
@@ -77,6 +77,8 @@ struct GroupToolpaths {
     int prime_tower_last_forced_layer = -1;
     Point2 prime_tower_middle{0, 0};  ///< where the wipe after a switch goes (prime_tower_wipe_enabled)
     std::vector<std::vector<ExtrusionPath>> ooze_shield;  ///< [layer]; empty without an ooze shield
+    /// [layer] the draft shield (toolpaths/DraftShield.h); empty lists without one.
+    std::vector<std::vector<ExtrusionPath>> draft_shield;
     /// The layers printed below the model, in print order with CuraEngine's negative numbers: the
     /// raft's base, interface and surface layers, then its filler layers when the first layer has
     /// support. Empty without a raft.

@@ -1,13 +1,16 @@
 #include "toolpaths/Support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
 #include "common/ParallelFor.h"
+#include "geometry/Angles.h"
 #include "toolpaths/InfillLayers.h"
 #include "toolpaths/PolygonOps.h"
 #include "toolpaths/SupportAreas.h"
 #include "toolpaths/SupportPaths.h"
+#include "toolpaths/TreeSupport.h"
 
 namespace mixengine {
 namespace {
@@ -38,6 +41,14 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     p.join_distance_um = s.has("support_join_distance") ? s.lengthMicrons("support_join_distance") : 0;
     p.offset_um = s.has("support_offset") ? s.lengthMicrons("support_offset") : 0;
     p.min_area_um2 = s.has("minimum_support_area") ? s.real("minimum_support_area") * 1e6 : 0.0;
+    if (s.has("support_conical_enabled") && s.boolean("support_conical_enabled")) {
+        const double angle = s.angleDegrees("support_conical_angle");
+        const double slope = std::tan(radiansFromDegrees(std::abs(angle))) - 0.01;
+        const coord_um step =
+            static_cast<coord_um>(slope * double(layer_height));  // truncated, as CuraEngine
+        p.conical_step_um = angle > 0 ? -step : angle < 0 ? step : 0;
+        p.conical_min_width_um = s.lengthMicrons("support_conical_min_width");
+    }
     if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
         p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
     if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
@@ -184,6 +195,11 @@ std::vector<LayerInfill> arrangedBodies(const std::vector<SupportLayerAreas>& ar
     return arrangeInfill(bodies, *params, threads);
 }
 
+bool isTree(const SupportMesh& mesh) {
+    return mesh.settings->has("support_structure") && mesh.settings->text("support_structure") == "tree";
+}
+
+/// The overhangs of the meshes with support_enable and normal support, united per layer.
 Overhangs collectOverhangs(const SupportInput& in, int threads) {
     Overhangs all;
     all.basic.resize(in.heights->size());
@@ -191,7 +207,7 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
     const std::vector<Paths> blockers = outlinesOf(
         in, [](const SupportMesh& m) { return m.role.anti_overhang_mesh; }, threads);
     for (const SupportMesh& mesh : in.meshes) {
-        if (!supportsOverhangs(mesh))
+        if (!supportsOverhangs(mesh) || isTree(mesh))
             continue;
         const Overhangs own =
             detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees("support_angle"), threads,
@@ -236,6 +252,92 @@ std::vector<ExtrusionPath> supportBrim(const Settings& s, int extruder, Paths& o
     return loops;
 }
 
+/// The model's layer-0 outlines (outer contours only with brim_outside_only, its holes left out).
+Paths brimBase(const Paths& layer0, bool outside_only) {
+    const Paths all = unionOf(layer0);
+    if (!outside_only)
+        return all;
+    Paths outer;
+    for (const Path& p : all) {
+        if (ClipperLib::Orientation(p))
+            outer.push_back(p);
+    }
+    return outer;
+}
+
+}  // namespace
+
+Paths brimCoveredArea(const Settings& global, const std::vector<Settings>* extruders, const Paths& layer0) {
+    if (layer0.empty() || global.text("adhesion_type") != "brim")
+        return {};
+    const Settings& body = trainSettings(global, extruders, extruderOf(global, "support_infill_extruder_nr"));
+    if (!body.has("brim_replaces_support") || !body.boolean("brim_replaces_support"))
+        return {};
+    const Settings& adhesion = trainSettings(global, extruders, extruderOf(global, "adhesion_extruder_nr"));
+    const long long lines = std::max<long long>(0, adhesion.integer("brim_line_count"));
+    if (lines == 0)
+        return {};
+    const double width =
+        double(adhesion.lengthMicrons("skirt_brim_line_width")) *
+        (adhesion.has("initial_layer_line_width_factor") ? adhesion.ratio("initial_layer_line_width_factor")
+                                                         : 1.0);
+    const bool outside_only = !adhesion.has("brim_outside_only") || adhesion.boolean("brim_outside_only");
+    const Paths base = brimBase(layer0, outside_only);
+    Paths covered = offsetPolygons(base, std::llround(width * double(lines + lines % 2)));
+    if (outside_only)  // the support in the model's holes stays: no brim there
+        covered = differenceOf(covered, differenceOf(base, unionOf(layer0)));
+    return covered;
+}
+
+namespace {
+
+ClipperLib::IntRect meshBounds(const std::vector<SlicedLayer>& layers) {
+    Paths all;
+    for (const SlicedLayer& layer : layers)
+        all.insert(all.end(), layer.outlines.begin(), layer.outlines.end());
+    return boundsOf(all);
+}
+
+/// The tree support of the meshes with support_enable and support_structure tree
+/// (toolpaths/TreeSupport.h); none: empty.
+std::vector<SupportLayerAreas> treeAreas(const SupportInput& in, int threads) {
+    std::vector<Overhangs> overhangs;
+    std::vector<const SupportMesh*> trees;
+    for (const SupportMesh& mesh : in.meshes) {
+        if (!supportsOverhangs(mesh) || !isTree(mesh))
+            continue;
+        overhangs.push_back(detectOverhangs(*mesh.layers, *in.heights,
+                                            mesh.settings->angleDegrees("support_angle"), threads));
+        trees.push_back(&mesh);
+    }
+    if (trees.empty())
+        return {};
+    std::vector<TreeMesh> meshes;
+    for (std::size_t i = 0; i < trees.size(); ++i)
+        meshes.push_back({trees[i]->settings, &overhangs[i].basic, meshBounds(*trees[i]->layers)});
+    return treeSupportAreas(*in.global, meshes, *in.model, threads);
+}
+
+/// Normal support's areas united with tree support's, layer by layer.
+std::vector<SupportLayerAreas> supportAreas(const SupportInput& in, coord_um layer_height, int threads) {
+    const Settings& g = *in.global;
+    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
+    const bool normal = std::any_of(in.meshes.begin(), in.meshes.end(), [](const SupportMesh& m) {
+        return (supportsOverhangs(m) && !isTree(m)) || m.role.support_mesh;
+    });
+    std::vector<SupportLayerAreas> areas =
+        normal ? computeSupportAreas(*in.model, collectOverhangs(in, threads), areaParams(body, layer_height),
+                                     threads, supportMeshAreas(in, threads))
+               : std::vector<SupportLayerAreas>(in.heights->size());
+    const std::vector<SupportLayerAreas> tree = treeAreas(in, threads);
+    parallelFor(std::min(tree.size(), areas.size()), threads, [&](std::size_t i) {
+        areas[i].support = unionOf(areas[i].support, tree[i].support);
+        areas[i].roof = unionOf(areas[i].roof, tree[i].roof);
+        areas[i].floor = unionOf(areas[i].floor, tree[i].floor);
+    });
+    return areas;
+}
+
 }  // namespace
 
 const Settings& trainSettings(const Settings& global, const std::vector<Settings>* extruders, int nr) {
@@ -256,11 +358,13 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         return result;
     const Settings& g = *in.global;
     const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
-    std::vector<SupportLayerAreas> areas = computeSupportAreas(
-        *in.model, collectOverhangs(in, threads), areaParams(body, g.lengthMicrons("layer_height")), threads,
-        supportMeshAreas(in, threads));
+    std::vector<SupportLayerAreas> areas = supportAreas(in, g.lengthMicrons("layer_height"), threads);
     if (areas.empty())
         return result;
+    if (!in.first_layer_exclusion.empty()) {  // brim_replaces_support
+        areas[0].support = differenceOf(areas[0].support, in.first_layer_exclusion);
+        areas[0].roof = differenceOf(areas[0].roof, in.first_layer_exclusion);
+    }
     result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
     if (!in.raft && body.has("support_brim_enable") && body.boolean("support_brim_enable"))
         result.brim = supportBrim(body, extruderOf(g, "support_infill_extruder_nr"), areas[0].support);

@@ -43,6 +43,8 @@ struct SupportInput {
     std::vector<SupportMesh> meshes;
     const std::vector<Paths>* model = nullptr;  ///< [layer] all meshes' outlines united
     bool raft = false;                          ///< adhesion_type raft (see above)
+    /// Where layer 0 has no support body or roof (brimCoveredArea: the brim replaces it).
+    Paths first_layer_exclusion;
 };
 
 struct SupportResult {
@@ -53,6 +55,13 @@ struct SupportResult {
 };
 
 SupportResult generateSupport(const SupportInput& input, int threads);
+
+/// brim_replaces_support (of the support infill extruder) with adhesion_type brim, as CuraEngine
+/// 4.13: the model's layer-0 outlines (outer contours only with brim_outside_only, whose holes keep
+/// their support) grown by skirt_brim_line_width × initial_layer_line_width_factor ×
+/// brim_line_count rounded up to even; the support's first layer leaves that to the brim. Empty
+/// otherwise.
+Paths brimCoveredArea(const Settings& global, const std::vector<Settings>* extruders, const Paths& layer0);
 
 /// The settings of extruder train `nr` (the global settings when there is none such).
 const Settings& trainSettings(const Settings& global, const std::vector<Settings>* extruders, int nr);

@@ -26,6 +26,15 @@ constexpr coord_um kSimplifyUm = 25;  // the model's outlines, once per layer
 constexpr coord_um kCleanUm = 5;      // the propagated support, every layer (must not accumulate)
 constexpr double kCuraMiterLimit = 1.2;
 
+/// Conical support: the support from above shrunk (or grown) by one layer's step, its parts
+/// narrower than the minimum width kept as they are.
+Paths conicalStep(const Paths& from_above, const SupportAreaParams& p) {
+    const coord_um half = p.conical_min_width_um / 2;
+    const Paths wide = offsetMiter(offsetMiter(from_above, -half), half + 20);
+    const Paths narrow = differenceOf(from_above, wide);
+    return unionOf(offsetMiter(from_above, p.conical_step_um), narrow);
+}
+
 /// Top-down: each layer's support is the layer above's plus the overhangs it must carry, joined
 /// (closing by the join distance), minus the model here and bottom_gap layers below, simplified.
 std::vector<Paths> propagateDown(const std::vector<Paths>& full, const std::vector<Paths>& blocked,
@@ -36,6 +45,8 @@ std::vector<Paths> propagateDown(const std::vector<Paths>& full, const std::vect
     for (std::size_t i = n; i-- > 0;) {
         const std::size_t source = i + static_cast<std::size_t>(p.top_gap_layers) + 1;
         const bool added = source < n && !full[source].empty();
+        if (p.conical_step_um != 0 && !current.empty())
+            current = conicalStep(current, p);
         if (added)
             current = unionOf(current, full[source]);
         if (current.empty())

@@ -9,6 +9,10 @@
 //     narrower than twice that are filled, mitred joins, so that it does not drift);
 //     the model itself is cut out on the way down, and so is the model bottom_gap =
 //     ceil(support_bottom_distance / layer_height) layers below (the support stops that far above it);
+//   - conical support (support_conical_enabled, angle ≠ 0): on the way down the support from above
+//     is first shrunk by layer_thickness · (tan(support_conical_angle) − 0.01) (a negative angle
+//     grows it by layer_thickness · (tan(−angle) − 0.01)), except its parts narrower than
+//     support_conical_min_width, which go down as they are;
 //   - then (not propagated, as CuraEngine, so that support next to slopes survives) each layer is
 //     grown by support_offset, loses the model grown by support_xy_distance (with z_overrides_xy:
 //     only support_xy_distance_overhang next to the layer's own overhang) and the model top_gap
@@ -34,8 +38,10 @@ struct SupportAreaParams {
     coord_um join_distance_um = 0;
     coord_um offset_um = 0;
     double min_area_um2 = 0;
-    int roof_layers = 0;   ///< 0 = no roof interface
-    int floor_layers = 0;  ///< 0 = no floor interface
+    int roof_layers = 0;                ///< 0 = no roof interface
+    int floor_layers = 0;               ///< 0 = no floor interface
+    coord_um conical_step_um = 0;       ///< conical support: offset per layer going down (0 = off)
+    coord_um conical_min_width_um = 0;  ///< narrower parts are not shrunk
 };
 
 struct SupportLayerAreas {

@@ -32,6 +32,7 @@ class Move:
     z: float
     xy: bool
     amounts: list  # filament moved per channel on this line (mm), retractions negative
+    feature: str = ""  # the ;TYPE: in force ("SUPPORT", "SKIRT", ...)
 
     @property
     def total(self):
@@ -72,7 +73,7 @@ class _Reader:
         self.dialect, self.channels = dialect, channels
         self.abs_coord, self.abs_extrude = True, True
         self.pos = {"E": 0.0, "B": 0.0}
-        self.layer, self.z = None, 0.0
+        self.layer, self.z, self.feature = None, 0.0, ""
         # Power-on state: Marlin's virtual tool t is filament t and tool 0 is selected; RepRapFirmware's
         # default mix is the first drive only.
         self.vtools = {t: [1.0 if c == t else 0.0 for c in range(channels)] for t in range(channels)}
@@ -148,7 +149,7 @@ class _Reader:
             delta = self.axis_move("E", float(p["E"]), self.e_relative())
             amounts = [delta * share for share in self.mix]
         if amounts is not None and self.layer is not None:
-            self.reading.moves.append(Move(self.layer, self.z, "X" in p or "Y" in p, amounts))
+            self.reading.moves.append(Move(self.layer, self.z, "X" in p or "Y" in p, amounts, self.feature))
 
     def line(self, parsed, raw):
         if raw.startswith("MANUAL_STEPPER"):
@@ -159,6 +160,8 @@ class _Reader:
         cmd, p = parsed.command, parsed.params
         if parsed.comment.startswith("LAYER:") and cmd[0] == ";":
             self.layer = int(parsed.comment[6:])
+        elif parsed.comment.startswith("TYPE:") and cmd[0] == ";":
+            self.feature = parsed.comment[5:].strip()
         elif cmd in (("M", 82), ("M", 83)):
             self.abs_extrude = cmd[1] == 82
         elif cmd in (("G", 90), ("G", 91)):

@@ -123,6 +123,37 @@ def test_raft_is_printed_with_its_own_mix_and_adds_up(sliced, dialect, relative)
         assert max(relative_error(m.total, s.total) for m, s in zip(mixed, single)) <= 1e-5
 
 
+@pytest.mark.parametrize("dialect", ["eb_axes", "marlin_m163"])
+def test_tree_support_and_draft_shield_are_printed_with_the_support_mix_and_add_up(engine, tmp_path, dialect):
+    """Tree support and a draft shield under a gradient (the tee, side_by_side.py: a bar on a stem): every
+    support line (;TYPE:SUPPORT / SUPPORT-INTERFACE) and the shield (;TYPE:SKIRT above layer 0) take
+    mixing_support_ratio — filament A by default, 0.3:0.7 when set — while the tee's walls follow the
+    gradient; move by move A + B is the single-colour E of the same slice."""
+    import side_by_side as sbs
+    tee = sbs.model_path("tee")
+    helper = ("support_enable=True", "support_structure=tree", "draft_shield_enabled=True")
+    single = single_moves_of(helpers.slice_with(tee, tmp_path / "single.gcode", *helper))
+    def tolerance(m):  # five decimals per written amount, or the firmware's mix resolution
+        return 2e-5 / m.total if dialect in SPLIT_DIALECTS else 0.5 / RESOLUTION + 1e-9
+
+    for ratio, share_b in ((None, 0.0), ("0.3:0.7", 0.7)):
+        extra = helper + gradient(dialect, 20, 80, False) + ((f"mixing_support_ratio={ratio}",) if ratio else ())
+        reading = read_mixing_gcode(helpers.slice_with(tee, tmp_path / f"{dialect}{ratio}.gcode", *extra), dialect)
+        moves = reading.extrusions()
+        support = [m for m in moves if m.feature in ("SUPPORT", "SUPPORT-INTERFACE")]
+        shield = [m for m in moves if m.feature == "SKIRT" and m.layer > 0]
+        walls = [m for m in moves if m.feature == "WALL-OUTER"]
+        assert len(support) > 100 and len(shield) > 50
+        assert {m.layer for m in shield} == set(range(1, max(m.layer for m in moves) + 1))
+        for m in support + shield:
+            assert m.amounts[1] / m.total == pytest.approx(share_b, abs=tolerance(m)), (m.layer, m.feature)
+        # the tee's walls: A at the bottom, B at the top
+        assert min(abs(m.amounts[1] / m.total - 1.0) - tolerance(m) for m in walls) <= 0
+        assert min(m.amounts[1] / m.total - tolerance(m) for m in walls) <= 0
+        assert len(moves) == len(single) > 1000
+        assert max(relative_error(m.total, s.total) for m, s in zip(moves, single)) <= 1e-5
+
+
 def single_moves_of(path):
     return [m for m in read_mixing_gcode(path, "single").moves if m.xy and m.total > 0]
 

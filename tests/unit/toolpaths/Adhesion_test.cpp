@@ -15,7 +15,7 @@ using test::square;
 
 AdhesionResult adhesion(const SettingValues& user, const Paths& models, const Paths& extras = {}) {
     const ResolvedMachine m = test::fdmMachine(user);
-    return generateAdhesion({&m.global, &m.extruders, models, extras});
+    return generateAdhesion({&m.global, &m.extruders, models, extras, {}});
 }
 
 /// Distance from the square's edge to a loop around it: half the loop's bounding-box growth.

@@ -152,6 +152,7 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
                                           {"support_pattern", "lines"},
                                           {"adhesion_type", "brim"},
                                           {"brim_line_count", "3"},
+                                          {"brim_replaces_support", "False"},
                                           {"skirt_brim_minimal_length", "0"}});
     test::Stack s = test::prismStack(60);
     test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
@@ -172,6 +173,33 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
     const ClipperLib::IntRect box = boundsOf({g.adhesion.front().points});
     EXPECT_EQ(box.left, 40'000 - 1'000);
     EXPECT_EQ(box.right, 70'000 + 1'000);
+}
+
+TEST(GroupToolpaths, BrimReplacesTheSupportsFirstLayerAroundTheModel) {
+    ResolvedMachine m = test::fdmMachine({{"support_enable", "True"},
+                                          {"support_pattern", "lines"},
+                                          {"adhesion_type", "brim"},
+                                          {"brim_line_count", "3"},
+                                          {"skirt_brim_minimal_length", "0"}});
+    test::Stack s = test::prismStack(60);
+    test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
+    test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
+    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt, {}}}};
+    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    // 3 lines rounded up to 4 of 0.4 mm: 1.6 mm around the stem (the support reaches to 0.7 mm above).
+    const Paths brim_zone{rect(50'000 - 1'599, 50'000 - 1'599, 60'000 + 1'599, 60'000 + 1'599)};
+    ASSERT_FALSE(g.support[0].empty());
+    for (const ExtrusionPath& p : g.support[0])
+        EXPECT_TRUE(clipLines({p.points}, brim_zone).empty());
+    // Layer 1 keeps its support next to the stem, where layer 0 has none.
+    double on_layer1 = 0;
+    for (const ExtrusionPath& p : g.support[1]) {
+        for (const Path& piece : clipLines({p.points}, brim_zone))
+            on_layer1 += test::polylineLength(piece);
+    }
+    EXPECT_GT(on_layer1, 0);
+    // The brim: around the stem and, apart, around what is left of the support.
+    EXPECT_GT(g.adhesion.size(), 5U);
 }
 
 TEST(GroupToolpaths, RaftUnderATeeLiftsTheModelAndTakesTheFirstLayersSupport) {

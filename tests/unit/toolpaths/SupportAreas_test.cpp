@@ -98,3 +98,25 @@ TEST(SupportAreas, RoofAndFloorInterfaces) {
 
 }  // namespace
 }  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+TEST(SupportAreas, ConicalSupportNarrowsGoingDownUnlessNarrowerThanTheMinimumWidth) {
+    const test::Stack s = tee();
+    SupportAreaParams p = defaults();
+    p.conical_step_um = -50;  // 0.1 mm layers, (tan 30° − 0.01) · 100 µm = 56 µm, rounded here
+    p.conical_min_width_um = 1'000;
+    const std::vector<SupportLayerAreas> conical = supportOf(s, p);
+    const std::vector<SupportLayerAreas> straight = supportOf(s, defaults());
+    // Each arm (9.3 × 10 mm next to the stem) loses 50 µm per layer on its three free sides.
+    EXPECT_LT(areaUm2(conical[40].support), areaUm2(conical[47].support));
+    EXPECT_LT(areaUm2(conical[20].support), areaUm2(straight[20].support) - 2 * 28 * 50 * 20'000.0);
+    EXPECT_GT(areaUm2(conical[0].support), 0);
+    p.conical_min_width_um = 30'000;  // wider than the arms: nothing shrinks
+    const std::vector<SupportLayerAreas> kept = supportOf(s, p);
+    EXPECT_NEAR(areaUm2(kept[0].support), areaUm2(straight[0].support), 1e6);
+}
+
+}  // namespace
+}  // namespace mixengine
