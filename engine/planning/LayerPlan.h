@@ -40,6 +40,7 @@ struct PlanStep {
     double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
     int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
+    coord_um width_um = 0;          ///< Extrude: the line width of the path it belongs to
 };
 
 struct PlannedLayer {

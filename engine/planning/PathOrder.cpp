@@ -107,6 +107,7 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
         extrude.kind = PlanStep::Kind::Extrude;
         extrude.to = to;
         extrude.speed_mm_s = path.speed_mm_s;
+        extrude.width_um = path.width_um;
         extrude.volume_mm3 =
             extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, path.flow);
         steps.push_back(extrude);

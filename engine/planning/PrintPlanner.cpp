@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 
+#include "planning/Coasting.h"
 #include "planning/Cooling.h"
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
@@ -484,6 +485,10 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
     }
     for (std::size_t i = 0; i < toolpaths.heights.size(); ++i)
         plan.layers.push_back(planModelLayer(i, !plan.layers.empty(), run));
+    std::vector<CoastingParams> coasting;
+    for (const Settings& train : extruders)
+        coasting.push_back(coastingParams(train));
+    applyCoasting(plan, coasting, start_extruder);
     planNozzleTemperatures(plan, toolpaths, global, extruders, run.used, start_extruder, print_start);
     return plan;
 }

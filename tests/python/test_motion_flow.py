@@ -1,0 +1,78 @@
+"""Issue 15, motion and flow: coasting, the wipe script between layers, flow-rate compensation and bridge
+settings, as CuraEngine 4.13 prints them, on a mixing printer too.
+
+Each feature's parity with CuraEngine is test_parity.py's (one setting flipped at a time on the parity model);
+its exact moves are unit tests (tests/unit/planning/Coasting_test.cpp, ...). Here: the G-code a user gets
+with each switched on — and on a mixing printer the channels still add up, move by move, to the filament of
+the single-colour print with the same settings (retractions and primes included).
+"""
+from functools import lru_cache
+
+import pytest
+
+import helpers
+from mixing_gcode import box_stl, read_mixing_gcode, relative_error
+
+SPLIT_DIALECTS = ["eb_axes", "klipper_b", "rrf_colon"]
+COMMAND_DIALECTS = ["marlin_m163", "rrf_m567"]
+
+FEATURES = {
+    "coasting": ("coasting_enable=True",),
+}
+
+
+@pytest.fixture(scope="module")
+def cube(tmp_path_factory):
+    return box_stl(tmp_path_factory.mktemp("motion") / "cube.stl", 20.0, 20.0, 10.0)
+
+
+@pytest.fixture(scope="module")
+def sliced(engine, cube, tmp_path_factory):
+    """sliced(*settings) -> path of the G-code for the cube with those -s settings (cached)."""
+    out_dir = tmp_path_factory.mktemp("motion_gcode")
+
+    @lru_cache(maxsize=None)
+    def run(*settings):
+        return helpers.slice_with(cube, out_dir / f"{len(list(out_dir.iterdir()))}.gcode", *settings)
+
+    return run
+
+
+def gradient(dialect, relative):
+    return (f"relative_extrusion={relative}", "mixing_mode=gradient", f"mixing_dialect={dialect}",
+            "mixing_gradient_start=20", "mixing_gradient_end=80")
+
+
+@pytest.mark.parametrize("relative", [False, True])
+@pytest.mark.parametrize("dialect", SPLIT_DIALECTS + COMMAND_DIALECTS)
+@pytest.mark.parametrize("feature", sorted(FEATURES))
+def test_channels_add_up_to_the_single_colour_e(sliced, feature, dialect, relative):
+    """rrf_colon is always written relative, so its single-colour reference is the relative slice."""
+    settings = FEATURES[feature]
+    single_relative = relative or dialect == "rrf_colon"
+    single = read_mixing_gcode(sliced(*settings, f"relative_extrusion={single_relative}"), "single").moves
+    mixed = read_mixing_gcode(sliced(*settings, *gradient(dialect, relative)), dialect).moves
+    plain = read_mixing_gcode(sliced(f"relative_extrusion={single_relative}"), "single").moves
+    assert [round(m.total, 5) for m in single] != [round(m.total, 5) for m in plain], "the feature changes nothing"
+    mixed_ext = [m for m in mixed if m.xy and m.total > 0]
+    single_ext = [m for m in single if m.xy and m.total > 0]
+    assert len(mixed_ext) == len(single_ext) > 500
+    assert max(relative_error(m.total, s.total) for m, s in zip(mixed_ext, single_ext)) <= 1e-5
+    assert [round(m.total, 5) for m in mixed] == [round(s.total, 5) for s in single]
+
+
+def _lines(path):
+    return [line.split(";", 1)[0].strip() for line in open(path) if line.strip() and not line.startswith(";")]
+
+
+def test_coasting_travels_over_the_end_of_each_wall(sliced):
+    """coasting_enable: an outer wall loop of the 20 mm cube (0.4 mm line, 0.2 mm layers, fdmprinter's
+    coasting_volume 0.064 mm³) stops extruding 0.8 mm before its end and travels the rest at
+    coasting_speed 90 % of the wall speed."""
+    lines = _lines(sliced("coasting_enable=True"))
+    plain = _lines(sliced())
+    coasts = [i for i, line in enumerate(lines) if line.startswith("G0 F1620 ")]  # 0.9 × 30 mm/s × 60
+    assert len(coasts) > 100
+    assert not any(line.startswith("G0 F1620 ") for line in plain)
+    first = coasts[0]
+    assert lines[first - 1].startswith("G1 ") and " E" in lines[first - 1]
