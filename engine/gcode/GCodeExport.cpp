@@ -128,16 +128,17 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
     z_ = z;
 }
 
-void GCodeExport::hopTo(coord_um hop_um, bool rewrite) {
+void GCodeExport::hopTo(coord_um hop_um, bool rewrite, double speed_mm_s) {
     if (hop_um == hop_um_ && !(rewrite && hop_um > 0))
         return;
+    const double speed = speed_mm_s > 0 ? speed_mm_s : params_.z_hop_speed_mm_s;
     const coord_um layer = layer_z_;
     hop_um_ = hop_um;
     if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
-        line("G0" + feedrateWord(params_.z_hop_speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z_)));
+        line("G0" + feedrateWord(speed) + " Z" + formatCoordMm(micronsToMm(z_)));
         return;
     }
-    moveZ(layer + hop_um, params_.z_hop_speed_mm_s);
+    moveZ(layer + hop_um, speed);
 }
 
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {

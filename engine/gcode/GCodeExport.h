@@ -79,8 +79,9 @@ class GCodeExport {
     /// extra prime for the next prime.
     void retractTo(const RetractionConfig& config);
     /// Lifts the nozzle `hop_um` above the layer (0: back down); nothing when already there, unless
-    /// `rewrite` (CuraEngine writes the lift of a switch even when the nozzle is up already).
-    void hopTo(coord_um hop_um, bool rewrite = false);
+    /// `rewrite` (CuraEngine writes the lift of a switch even when the nozzle is up already). At
+    /// `speed_mm_s`, or speed_z_hop when 0.
+    void hopTo(coord_um hop_um, bool rewrite = false, double speed_mm_s = 0);
     /// The active extruder's retraction for travel.
     const RetractionConfig& retraction() const { return retraction_; }
     /// Notes that the active extruder is primed; false when it was already.

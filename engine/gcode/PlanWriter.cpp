@@ -126,6 +126,10 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
         case PlanStep::Kind::LiftHead:
             liftHead(step, gcode);
             break;
+        case PlanStep::Kind::WipeScript:
+            if (static_cast<std::size_t>(step.extruder) < params.extruders.size())
+                writeWipeScript(params.extruders[static_cast<std::size_t>(step.extruder)].wipe, gcode);
+            break;
     }
 }
 

@@ -18,6 +18,7 @@ COMMAND_DIALECTS = ["marlin_m163", "rrf_m567"]
 
 FEATURES = {
     "coasting": ("coasting_enable=True",),
+    "wipe script": ("clean_between_layers=True", "wipe_hop_enable=True", "wipe_retraction_extra_prime_amount=0.5"),
 }
 
 
@@ -76,3 +77,19 @@ def test_coasting_travels_over_the_end_of_each_wall(sliced):
     assert not any(line.startswith("G0 F1620 ") for line in plain)
     first = coasts[0]
     assert lines[first - 1].startswith("G1 ") and " E" in lines[first - 1]
+
+
+def test_wipe_script_between_layers(sliced):
+    """clean_between_layers: after more than max_extrusion_before_wipe (10 mm³) the next layer starts with the
+    script — fdmprinter's: retract 6.5 mm, lift 1 mm, brush at x = 100 mm five times 20 mm at
+    speed_travel (120 mm/s), back, prime."""
+    with open(sliced("clean_between_layers=True", "wipe_hop_enable=True")) as f:
+        text = f.read()
+    begin = text.count(";WIPE_SCRIPT_BEGIN")
+    assert begin == text.count(";WIPE_SCRIPT_END") > 40
+    block = text.split(";WIPE_SCRIPT_BEGIN\n", 2)[1].split(";WIPE_SCRIPT_END", 1)[0].splitlines()
+    assert [line.split(" X")[0] for line in block[2:8]] == ["G0 F7200", "G0", "G0", "G0", "G0", "G0"]
+    xs = [float(line.split(" X")[1].split()[0]) for line in block[2:8]]
+    assert xs == [100, 120, 100, 120, 100, 120]
+    assert block[0].startswith("G1 F1500 E") and block[1].startswith("G0 F600 Z")
+    assert block[-1].startswith("G1 F1500 E")
