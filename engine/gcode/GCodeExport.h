@@ -46,6 +46,10 @@ struct ExportParams {
     MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
     TemperatureCommandParams temperatures;  ///< nozzle temperature commands (gcode/TemperatureCommands.h)
     int fan_number = 0;  ///< the first extruder's machine_extruder_cooling_fan_number (P<n> when not 0)
+    /// Flow-rate compensation (flow_rate_max_extrusion_offset, in the axis unit; 0 = off) and
+    /// flow_rate_extrusion_offset_factor (a fraction): see GCodeExport::newExtrusionConfig().
+    double flow_offset_max = 0;
+    double flow_offset_factor = 1.0;
 };
 
 /// A tool change: the new extruder's filament diameter, nozzle offset (subtracted from X/Y) and its
@@ -112,6 +116,14 @@ class GCodeExport {
     /// Writes T<n> and resets E (absolute mode); filament is then counted for the new one, which
     /// keeps its own retracted filament from when it was last used (the caller retracts before).
     void selectExtruder(const ToolChange& change);
+    /// Flow-rate compensation, as CuraEngine 4.13 writes it: the first extrusion after this (a new
+    /// ;TYPE:, a new layer) sets the offset to speed × mm³ per mm × flow_offset_factor, at most
+    /// flow_offset_max, writing ";FLOW_RATE_COMPENSATED_OFFSET = <offset>" when it changes. While it
+    /// is not 0, the E word of every extrusion and travel carries it on top of the filament:
+    /// absolute mode writes positions that far ahead (retractions and primes write the plain
+    /// position, so the next move adds it again), relative mode adds it to every such move. On a
+    /// mixing printer the extra is split like the move's filament.
+    void newExtrusionConfig() { offset_update_ = true; }
     /// Plans buffered moves to a stop (at layer ends) so the time read next is final.
     void flushTime() { time_.flush(); }
     /// What the following extrusions print, for the time per feature (travel, retractions and
@@ -176,6 +188,14 @@ class GCodeExport {
     int fan_number_ = 0;
     MotionCommands motion_;
     TemperatureCommands temperatures_;
+    double e_offset_ = 0;        ///< flow-rate compensation offset in force (axis unit)
+    double offset_applied_ = 0;  ///< absolute mode: how far the written E is ahead of the filament
+    bool offset_update_ = false;
+    /// The E amount a move writes on top of its filament for the offset (and notes it applied).
+    double offsetExtra();
+    /// For a retraction or prime: the written E goes back to the plain position (absolute mode).
+    double dropOffset();
+    void updateOffset(const Point2& to, double volume_mm3, double speed_mm_s);
 };
 
 }  // namespace mixengine

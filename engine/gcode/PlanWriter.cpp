@@ -99,6 +99,7 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             break;
         case PlanStep::Kind::SetFeature:
             gcode.comment("TYPE:" + std::string(featureMarker(step.feature)));
+            gcode.newExtrusionConfig();
             gcode.setTimeFeature(timeFeature(step.feature));
             break;
         case PlanStep::Kind::SetMesh:
@@ -143,6 +144,7 @@ WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, G
         if (params.reset_e_each_layer && !gcode.retracted())
             gcode.resetExtrusionAxis();
         gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
+        gcode.newExtrusionConfig();
         for (const PlanStep& step : layer.steps)
             writeStep(step, plan, params, gcode, out);
         gcode.flushTime();

@@ -46,6 +46,10 @@ ExportParams exportParams(const Scene& scene) {
     p.mixing = parseMixingOutput(global);
     p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
     p.makerbot_fan = global.text("machine_gcode_flavor") == "Makerbot";
+    if (global.has("flow_rate_max_extrusion_offset")) {
+        p.flow_offset_max = global.real("flow_rate_max_extrusion_offset");
+        p.flow_offset_factor = global.ratio("flow_rate_extrusion_offset_factor");
+    }
     return p;
 }
 

@@ -18,6 +18,7 @@ COMMAND_DIALECTS = ["marlin_m163", "rrf_m567"]
 
 FEATURES = {
     "coasting": ("coasting_enable=True",),
+    "flow-rate compensation": ("flow_rate_max_extrusion_offset=0.5",),
     "wipe script": ("clean_between_layers=True", "wipe_hop_enable=True", "wipe_retraction_extra_prime_amount=0.5"),
 }
 
@@ -93,3 +94,14 @@ def test_wipe_script_between_layers(sliced):
     assert xs == [100, 120, 100, 120, 100, 120]
     assert block[0].startswith("G1 F1500 E") and block[1].startswith("G0 F600 Z")
     assert block[-1].startswith("G1 F1500 E")
+
+
+def test_flow_rate_compensation_offsets_e_from_each_feature(sliced):
+    """flow_rate_max_extrusion_offset: each feature's first line sets the offset (speed × mm³/mm, at most the
+    maximum: 0.5 mm here) and every following extrusion and travel word carries it; retractions do not."""
+    text = open(sliced("flow_rate_max_extrusion_offset=0.5")).read()
+    assert ";FLOW_RATE_COMPENSATED_OFFSET = 0.500000" in text
+    assert "FLOW_RATE" not in open(sliced()).read()
+    travels_with_e = [line for line in _lines(sliced("flow_rate_max_extrusion_offset=0.5"))
+                      if line.startswith("G0 ") and " X" in line and " E" in line]
+    assert len(travels_with_e) > 100
