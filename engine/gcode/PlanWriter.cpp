@@ -99,6 +99,8 @@ void writeStep(const PlanStep& step, const PrintPlan& plan, const PlanWriterPara
             break;
         case PlanStep::Kind::SetFeature:
             gcode.comment("TYPE:" + std::string(featureMarker(step.feature)));
+            if (step.bridge)
+                gcode.comment("BRIDGE");
             gcode.newExtrusionConfig();
             gcode.setTimeFeature(timeFeature(step.feature));
             break;

@@ -44,6 +44,8 @@ struct PlanStep {
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
     int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
     coord_um width_um = 0;          ///< Extrude: the line width of the path it belongs to
+    bool bridge = false;            ///< SetFeature: printed with bridge settings (;BRIDGE)
+    bool fan_fixed = false;         ///< SetFan: a bridge's own fan_ratio, kept by cooling
 };
 
 struct PlannedLayer {

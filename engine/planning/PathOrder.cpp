@@ -199,6 +199,34 @@ std::size_t startOf(const ExtrusionPath& path, const Point2& from, const TravelP
     return front ? 0 : path.points.size() - 1;
 }
 
+/// The ;BRIDGE state and the fan a bridge set (−1: the layer's) while a group is ordered.
+struct BridgeMarks {
+    bool bridge = false;
+    double fan = -1;
+};
+
+/// Whether the last ;TYPE: of `steps` was marked ;BRIDGE.
+bool lastMarkedBridge(const std::vector<PlanStep>& steps) {
+    for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
+        if (it->kind == PlanStep::Kind::SetFeature)
+            return it->bridge;
+    }
+    return false;
+}
+
+/// A path's own fan (`ratio`, a bridge's) before it, or the layer's again (−1) after a bridge: a
+/// SetFan step when that changes (the layer's is filled in by cooling).
+void setPathFan(double ratio, BridgeMarks& marks, std::vector<PlanStep>& steps) {
+    if (ratio == marks.fan)
+        return;
+    PlanStep fan;
+    fan.kind = PlanStep::Kind::SetFan;
+    fan.fan_ratio = ratio;
+    fan.fan_fixed = ratio >= 0;
+    steps.push_back(fan);
+    marks.fan = ratio;
+}
+
 }  // namespace
 
 double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um,
@@ -213,18 +241,23 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
     const std::vector<bool> entry = entryPaths(paths);
     const bool keep_order = !paths.empty() && paths.front().keep_order;
     bool first = true;
+    BridgeMarks marks{lastMarkedBridge(steps), -1};
     auto print = [&](std::size_t index) {
         const Point2 from = first && params.order_from ? *params.order_from : head;
         first = false;
         done[index] = true;
-        if (feature != paths[index].feature) {
+        const ExtrusionPath& path = paths[index];
+        if (feature != path.feature || marks.bridge != path.bridge) {
             PlanStep marker;
             marker.kind = PlanStep::Kind::SetFeature;
-            marker.feature = paths[index].feature;
+            marker.feature = path.feature;
+            marker.bridge = path.bridge;
             steps.push_back(marker);
-            feature = paths[index].feature;
+            feature = path.feature;
+            marks.bridge = path.bridge;
         }
-        emitPath(paths[index], startOf(paths[index], from, params), params, head, steps);
+        setPathFan(path.fan_ratio, marks, steps);
+        emitPath(path, startOf(path, from, params), params, head, steps);
     };
     for (;;) {
         const Point2 from = first && params.order_from ? *params.order_from : head;
@@ -239,6 +272,7 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
                 print(j);
         }
     }
+    setPathFan(-1, marks, steps);  // the layer's fan again after a bridge
 }
 
 }  // namespace mixengine

@@ -50,6 +50,10 @@ struct ExtrusionPath {
     /// Printed in the order of its group, not nearest first (monotonic ironing); only the end to
     /// start from is chosen. Set on every path of the group or on none.
     bool keep_order = false;
+    /// Printed with bridge settings (toolpaths/BridgeSkin.h): ;BRIDGE after its ;TYPE:, and the
+    /// fan at `fan_ratio` (0..1; −1: the layer's fan) while it prints.
+    bool bridge = false;
+    double fan_ratio = -1;
 };
 
 }  // namespace mixengine

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "common/ParallelFor.h"
+#include "toolpaths/BridgeSkin.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
@@ -283,11 +284,24 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
     const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
     const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
 
+    const BridgeSkinParams bridge = bridgeSkinParams(settings);
+    std::vector<Paths> outlines;
+    if (bridge.enabled) {
+        for (std::size_t i = 0; i < layers.size(); ++i)
+            outlines.push_back(adjustedOutlines(layers[i].outlines, settings, static_cast<int>(i)));
+    }
+
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         const coord_um z = layers[i].print_z;
         const MeshStyles styles = meshStyles(settings, layer);
-        const SkinPathParams skin_params = skinPathParams(settings, layer, z, styles);
+        SkinPathParams skin_params = skinPathParams(settings, layer, z, styles);
+        if (bridge.enabled) {
+            const LayersBelow below{&outlines, &infill_areas, layer};
+            skin_params.bridge = [&bridge, below, &skin_params](const Paths& part) {
+                return bridgeSkinFill(part, skin_params.skin, bridge, below);
+            };
+        }
         result[i].skin = generateSkinPaths(areas[i].skin, areas[i].roofing, skin_params);
         if (fillsPerimeterGaps(settings)) {
             for (ExtrusionPath& line : perimeterGapLines(

@@ -11,6 +11,7 @@ from functools import lru_cache
 import pytest
 
 import helpers
+import side_by_side as sbs
 from mixing_gcode import box_stl, read_mixing_gcode, relative_error
 
 SPLIT_DIALECTS = ["eb_axes", "klipper_b", "rrf_colon"]
@@ -105,3 +106,24 @@ def test_flow_rate_compensation_offsets_e_from_each_feature(sliced):
     travels_with_e = [line for line in _lines(sliced("flow_rate_max_extrusion_offset=0.5"))
                       if line.startswith("G0 ") and " X" in line and " E" in line]
     assert len(travels_with_e) > 100
+
+
+@pytest.mark.parametrize("dialect", ["eb_axes", "marlin_m163"])
+def test_bridged_skin_on_the_parity_model(engine, tmp_path, dialect):
+    """bridge_settings_enabled on the parity model (two pillars with a 16 mm deck): the deck's first layer is
+    printed as bridge skin — ;TYPE:SKIN then ;BRIDGE, at bridge_skin_speed (fdmprinter: 15 mm/s, F900), with
+    bridge_fan_speed — and the second and third layers above it with their own fan (0 %: M107); on a mixing
+    printer the channels add up to the single-colour print's filament move by move."""
+    model = sbs.model_path("parity")
+    single = helpers.slice_with(model, tmp_path / "single.gcode", "bridge_settings_enabled=True")
+    text = open(single).read()
+    blocks = text.split(";BRIDGE\n")[1:]
+    assert len(blocks) >= 3
+    assert any("G1 F900 X" in block.split(";TYPE:", 1)[0] for block in blocks)
+    assert any(block.startswith("M107") for block in blocks)
+    assert ";BRIDGE" not in open(helpers.slice_with(model, tmp_path / "plain.gcode")).read()
+    mixed = helpers.slice_with(model, tmp_path / "mixed.gcode", "bridge_settings_enabled=True",
+                               *gradient(dialect, False))
+    single_moves = read_mixing_gcode(single, "single").moves
+    mixed_moves = read_mixing_gcode(mixed, dialect).moves
+    assert [round(m.total, 5) for m in mixed_moves] == [round(s.total, 5) for s in single_moves]
