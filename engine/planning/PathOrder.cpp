@@ -1,5 +1,7 @@
 #include "planning/PathOrder.h"
 
+#include "planning/BridgeWalls.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -199,12 +201,6 @@ std::size_t startOf(const ExtrusionPath& path, const Point2& from, const TravelP
     return front ? 0 : path.points.size() - 1;
 }
 
-/// The ;BRIDGE state and the fan a bridge set (−1: the layer's) while a group is ordered.
-struct BridgeMarks {
-    bool bridge = false;
-    double fan = -1;
-};
-
 /// Whether the last ;TYPE: of `steps` was marked ;BRIDGE.
 bool lastMarkedBridge(const std::vector<PlanStep>& steps) {
     for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
@@ -228,6 +224,11 @@ void setPathFan(double ratio, BridgeMarks& marks, std::vector<PlanStep>& steps) 
 }
 
 }  // namespace
+
+void appendTravelTo(const Point2& from, const Point2& to, const TravelParams& params,
+                    std::vector<PlanStep>& steps) {
+    appendTravel(from, to, params, steps);
+}
 
 double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um,
                           double flow) {
@@ -255,6 +256,13 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
             steps.push_back(marker);
             feature = path.feature;
             marks.bridge = path.bridge;
+        }
+        if (path.closed && path.bridge_wall && path.air_edges.size() == path.points.size()) {
+            const Point2 before = head;
+            const std::size_t start =
+                emitBridgedWall(path, startOf(path, from, params), params, head, feature, marks, steps);
+            appendPathWipe(path, start, params, before, head, steps);
+            return;
         }
         setPathFan(path.fan_ratio, marks, steps);
         emitPath(path, startOf(path, from, params), params, head, steps);

@@ -6,6 +6,7 @@
 
 #include "common/ParallelFor.h"
 #include "toolpaths/BridgeSkin.h"
+#include "toolpaths/BridgeWalls.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/InfillLayers.h"
 #include "toolpaths/InfillPatterns.h"
@@ -258,11 +259,16 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
     const SeamParams seam = seamParamsFrom(settings, meshCentre(layers));
     if (surfaceOnly(settings))
         return surfaceToolpaths(layers, settings, seam, threads);
+    const BridgeWallParams bridge_walls = bridgeWallParams(settings);
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
-        WallResult walls = generateWalls(adjustedOutlines(layers[i].outlines, settings, layer),
-                                         wallParams(settings, meshStyles(settings, layer), refs, layer));
+        const Paths outlines = adjustedOutlines(layers[i].outlines, settings, layer);
+        WallResult walls =
+            generateWalls(outlines, wallParams(settings, meshStyles(settings, layer), refs, layer));
         placeSeams(walls.walls, seam, layer);
+        if (bridge_walls.enabled && layer > 0)
+            markBridgedWalls(walls.walls, outlines,
+                             adjustedOutlines(layers[i - 1].outlines, settings, layer - 1), bridge_walls);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? result[i].outer_walls : result[i].inner_walls)
                 .push_back(std::move(path));
