@@ -1,6 +1,7 @@
 #include "gcode/GCodeExport.h"
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "gcode/NumberFormat.h"
@@ -138,11 +139,50 @@ void GCodeExport::bfbExtrude(const Point2& to, double volume_mm3, double speed_m
     position_ = to;
 }
 
+double GCodeExport::offsetExtra() {
+    const double extra = params_.relative_extrusion ? e_offset_ : e_offset_ - offset_applied_;
+    if (!params_.relative_extrusion)
+        offset_applied_ = e_offset_;
+    return extra;
+}
+
+double GCodeExport::dropOffset() {
+    const double applied = offset_applied_;
+    offset_applied_ = 0;
+    return applied;
+}
+
+void GCodeExport::updateOffset(const Point2& to, double volume_mm3, double speed_mm_s) {
+    if (!offset_update_ || to == position_)
+        return;
+    offset_update_ = false;
+    const double length_mm =
+        std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
+    const double offset =
+        std::min(speed_mm_s * volume_mm3 / length_mm * params_.flow_offset_factor, params_.flow_offset_max);
+    if (offset == e_offset_)
+        return;
+    e_offset_ = offset;
+    char text[64];
+    std::snprintf(text, sizeof text, "FLOW_RATE_COMPENSATED_OFFSET = %.6f", offset);
+    comment(text);
+}
+
 void GCodeExport::travel(const Point2& to, double speed_mm_s) {
     if (to == position_)
         return;
     if (params_.bfb)
         return bfbTravel(to, z_, speed_mm_s);
+
+    if (e_offset_ != 0) {  // flow-rate compensation: travel writes E too (newExtrusionConfig)
+        std::string before;
+        const std::string words = dialect_->extrude(offsetExtra(), mix_, before);
+        out_ += before;
+        line("G0" + feedrateWord(speed_mm_s) + xyWords(to) + " " + words);
+        timeMove(to, z_, 0, speed_mm_s, moveFeature());
+        position_ = to;
+        return;
+    }
     line("G0" + feedrateWord(speed_mm_s) + xyWords(to));
     timeMove(to, z_, 0, speed_mm_s, moveFeature());
     position_ = to;
@@ -162,18 +202,19 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
     z_ = z;
 }
 
-void GCodeExport::hopTo(coord_um hop_um, bool rewrite) {
+void GCodeExport::hopTo(coord_um hop_um, bool rewrite, double speed_mm_s) {
     if (hop_um == hop_um_ && !(rewrite && hop_um > 0))
         return;
+    const double speed = speed_mm_s > 0 ? speed_mm_s : params_.z_hop_speed_mm_s;
     const coord_um layer = layer_z_;
     hop_um_ = hop_um;
     if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
         if (params_.bfb)
             return;
-        line("G0" + feedrateWord(params_.z_hop_speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z_)));
+        line("G0" + feedrateWord(speed) + " Z" + formatCoordMm(micronsToMm(z_)));
         return;
     }
-    moveZ(layer + hop_um, params_.z_hop_speed_mm_s);
+    moveZ(layer + hop_um, speed);
 }
 
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {
@@ -181,10 +222,11 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
         return bfbExtrude(to, volume_mm3, speed_mm_s);
     if (retracted() || hop_um_ > 0 || state().extra_prime_mm3 > 0)
         unretract();
+    updateOffset(to, volume_mm3, speed_mm_s);
     const double e = volumeOnAxis(volume_mm3);
     state().extruded += e;
     std::string before;
-    const std::string words = dialect_->extrude(e, mix_, before);
+    const std::string words = dialect_->extrude(e + (e_offset_ != 0 ? offsetExtra() : 0.0), mix_, before);
     out_ += before;
     line("G1" + feedrateWord(speed_mm_s) + xyWords(to) + " " + words);
     timeMove(to, z_, filamentMm(volume_mm3), speed_mm_s, extrusion_feature_);
@@ -236,8 +278,10 @@ void GCodeExport::retractTo(const RetractionConfig& config) {
     } else {
         const double speed = change_mm > 0 ? config.retract_speed_mm_s : s.prime_speed_mm_s;
         std::string before;
-        const std::string words = change_mm > 0 ? dialect_->retract(filamentOnAxis(change_mm), before)
-                                                : dialect_->prime(filamentOnAxis(-change_mm), before);
+        const double applied = dropOffset();
+        const std::string words = change_mm > 0
+                                      ? dialect_->retract(filamentOnAxis(change_mm) + applied, before)
+                                      : dialect_->prime(filamentOnAxis(-change_mm) - applied, before);
         out_ += before;
         line("G1" + feedrateWord(speed) + " " + words);
         timeMove(position_, z_, -change_mm, speed, TimeFeature::Retraction);
@@ -269,7 +313,7 @@ void GCodeExport::writePrime() {
     const double moved_mm = params_.firmware_retract ? filamentMm(s.extra_prime_mm3) : prime_mm;
     if (moved_mm > 0) {
         std::string before;
-        const std::string words = dialect_->prime(filamentOnAxis(moved_mm), before);
+        const std::string words = dialect_->prime(filamentOnAxis(moved_mm) - dropOffset(), before);
         out_ += before;
         line("G1" + feedrateWord(s.prime_speed_mm_s) + " " + words);
     }
@@ -287,8 +331,10 @@ void GCodeExport::dwell(double seconds) {
 
 void GCodeExport::resetExtrusionAxis() {
     std::string reset = dialect_->reset();
-    if (!reset.empty())
+    if (!reset.empty()) {
         line(reset);
+        offset_applied_ = 0;
+    }
 }
 
 void GCodeExport::setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel) {

@@ -49,6 +49,10 @@ struct ExportParams {
     MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
     TemperatureCommandParams temperatures;  ///< nozzle temperature commands (gcode/TemperatureCommands.h)
     int fan_number = 0;  ///< the first extruder's machine_extruder_cooling_fan_number (P<n> when not 0)
+    /// Flow-rate compensation (flow_rate_max_extrusion_offset, in the axis unit; 0 = off) and
+    /// flow_rate_extrusion_offset_factor (a fraction): see GCodeExport::newExtrusionConfig().
+    double flow_offset_max = 0;
+    double flow_offset_factor = 1.0;
 };
 
 /// A tool change: the new extruder's filament diameter, nozzle offset (subtracted from X/Y) and its
@@ -87,8 +91,9 @@ class GCodeExport {
     /// extra prime for the next prime.
     void retractTo(const RetractionConfig& config);
     /// Lifts the nozzle `hop_um` above the layer (0: back down); nothing when already there, unless
-    /// `rewrite` (CuraEngine writes the lift of a switch even when the nozzle is up already).
-    void hopTo(coord_um hop_um, bool rewrite = false);
+    /// `rewrite` (CuraEngine writes the lift of a switch even when the nozzle is up already). At
+    /// `speed_mm_s`, or speed_z_hop when 0.
+    void hopTo(coord_um hop_um, bool rewrite = false, double speed_mm_s = 0);
     /// The active extruder's retraction for travel.
     const RetractionConfig& retraction() const { return retraction_; }
     /// Notes that the active extruder is primed; false when it was already.
@@ -122,6 +127,14 @@ class GCodeExport {
     /// Writes T<n> and resets E (absolute mode); filament is then counted for the new one, which
     /// keeps its own retracted filament from when it was last used (the caller retracts before).
     void selectExtruder(const ToolChange& change);
+    /// Flow-rate compensation, as CuraEngine 4.13 writes it: the first extrusion after this (a new
+    /// ;TYPE:, a new layer) sets the offset to speed × mm³ per mm × flow_offset_factor, at most
+    /// flow_offset_max, writing ";FLOW_RATE_COMPENSATED_OFFSET = <offset>" when it changes. While it
+    /// is not 0, the E word of every extrusion and travel carries it on top of the filament:
+    /// absolute mode writes positions that far ahead (retractions and primes write the plain
+    /// position, so the next move adds it again), relative mode adds it to every such move. On a
+    /// mixing printer the extra is split like the move's filament.
+    void newExtrusionConfig() { offset_update_ = true; }
     /// Plans buffered moves to a stop (at layer ends) so the time read next is final.
     void flushTime() { time_.flush(); }
     /// What the following extrusions print, for the time per feature (travel, retractions and
@@ -192,6 +205,15 @@ class GCodeExport {
     MotionCommands motion_;
     TemperatureCommands temperatures_;
     BfbMotor bfb_;
+
+    double e_offset_ = 0;        ///< flow-rate compensation offset in force (axis unit)
+    double offset_applied_ = 0;  ///< absolute mode: how far the written E is ahead of the filament
+    bool offset_update_ = false;
+    /// The E amount a move writes on top of its filament for the offset (and notes it applied).
+    double offsetExtra();
+    /// For a retraction or prime: the written E goes back to the plain position (absolute mode).
+    double dropOffset();
+    void updateOffset(const Point2& to, double volume_mm3, double speed_mm_s);
 };
 
 }  // namespace mixengine

@@ -79,32 +79,47 @@ void liftHead(const PlanStep& step, GCodeExport& gcode) {
     gcode.dwell(step.dwell_seconds);
 }
 
+void writeTravel(const PlanStep& step, GCodeExport& gcode) {
+    if (!step.retract && step.to == gcode.position())
+        return;  // as CuraEngine: no move, so no acceleration or jerk change either
+    gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, true);
+    if (step.retract)
+        gcode.retract();
+    if (step.prime_first)
+        gcode.primeInPlace();
+    gcode.travel(step.to, step.speed_mm_s);
+}
+
+void writeExtrusion(const PlanStep& step, coord_um layer_z, const PrintPlan& plan, GCodeExport& gcode) {
+    gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, false);
+    if (step.mix >= 0)  // colour mixing (mixing/MixingPass.h)
+        gcode.setMix(plan.mixes[static_cast<std::size_t>(step.mix)]);
+    if (step.rise_um > 0)  // a spiral (toolpaths/Spiralize.h)
+        gcode.extrudeRising(step.to, layer_z + step.rise_um, step.volume_mm3, step.speed_mm_s);
+    else
+        gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);
+}
+
+void writeFeature(const PlanStep& step, GCodeExport& gcode) {
+    gcode.comment("TYPE:" + std::string(featureMarker(step.feature)));
+    if (step.bridge)
+        gcode.comment("BRIDGE");
+    gcode.newExtrusionConfig();
+    gcode.setTimeFeature(timeFeature(step.feature));
+}
+
 void writeStep(const PlanStep& step, coord_um layer_z, const PrintPlan& plan, const PlanWriterParams& params,
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
-            if (!step.retract && step.to == gcode.position())
-                break;  // as CuraEngine: no move, so no acceleration or jerk change either
-            gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, true);
-            if (step.retract)
-                gcode.retract();
-            if (step.prime_first)
-                gcode.primeInPlace();
-            gcode.travel(step.to, step.speed_mm_s);
+            writeTravel(step, gcode);
             break;
         case PlanStep::Kind::Extrude:
-            gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, false);
-            if (step.mix >= 0)  // colour mixing (mixing/MixingPass.h)
-                gcode.setMix(plan.mixes[static_cast<std::size_t>(step.mix)]);
-            if (step.rise_um > 0)  // a spiral (toolpaths/Spiralize.h)
-                gcode.extrudeRising(step.to, layer_z + step.rise_um, step.volume_mm3, step.speed_mm_s);
-            else
-                gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);
+            writeExtrusion(step, layer_z, plan, gcode);
             extendBounds(out, step.to, gcode.z());
             break;
         case PlanStep::Kind::SetFeature:
-            gcode.comment("TYPE:" + std::string(featureMarker(step.feature)));
-            gcode.setTimeFeature(timeFeature(step.feature));
+            writeFeature(step, gcode);
             break;
         case PlanStep::Kind::SetMesh:
             gcode.comment("MESH:" + (step.mesh_index < 0
@@ -131,6 +146,10 @@ void writeStep(const PlanStep& step, coord_um layer_z, const PrintPlan& plan, co
         case PlanStep::Kind::LiftHead:
             liftHead(step, gcode);
             break;
+        case PlanStep::Kind::WipeScript:
+            if (static_cast<std::size_t>(step.extruder) < params.extruders.size())
+                writeWipeScript(params.extruders[static_cast<std::size_t>(step.extruder)].wipe, gcode);
+            break;
     }
 }
 
@@ -144,6 +163,7 @@ WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, G
         if (params.reset_e_each_layer && !gcode.retracted())
             gcode.resetExtrusionAxis();
         gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
+        gcode.newExtrusionConfig();
         for (const PlanStep& step : layer.steps)
             writeStep(step, layer.z, plan, params, gcode, out);
         gcode.flushTime();

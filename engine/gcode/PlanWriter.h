@@ -10,6 +10,7 @@
 #include "gcode/GCodeExport.h"
 #include "gcode/Header.h"
 #include "gcode/StartEndCode.h"
+#include "gcode/WipeScript.h"
 #include "planning/LayerPlan.h"
 
 namespace mixengine {
@@ -34,6 +35,7 @@ struct ExtruderOutput {
     coord_um switch_hop_um = 0;         ///< retraction_hop_after_extruder_switch(_height) (0 = none)
     double switch_extra_prime_mm3 = 0;  ///< switch_extruder_extra_prime_amount
     PrimeTrain prime;                   ///< its first use (Prime steps)
+    WipeScriptConfig wipe;              ///< clean_between_layers (WipeScript steps)
 };
 
 struct PlanWriterParams {

@@ -48,6 +48,11 @@ ExportParams exportParams(const Scene& scene) {
     p.makerbot_fan = global.text("machine_gcode_flavor") == "Makerbot";
     p.mach3_axes = flavor == Flavor::Mach3;
     p.bfb = flavor == Flavor::Bfb;
+
+    if (global.has("flow_rate_max_extrusion_offset")) {
+        p.flow_offset_max = global.real("flow_rate_max_extrusion_offset");
+        p.flow_offset_factor = global.ratio("flow_rate_extrusion_offset_factor");
+    }
     return p;
 }
 
@@ -75,6 +80,24 @@ PrimeTrain primeTrain(const Settings& e) {
     prime.absolute = e.boolean("extruder_prime_pos_abs");
     prime.travel_speed_mm_s = e.velocityMmPerS("speed_travel");
     return prime;
+}
+
+/// The wipe script of train `e` (clean_between_layers).
+WipeScriptConfig wipeScript(const Settings& e) {
+    WipeScriptConfig w;
+    w.retraction_enable = e.boolean("wipe_retraction_enable");
+    w.retraction = {
+        e.millimetres("wipe_retraction_amount"), e.velocityMmPerS("wipe_retraction_retract_speed"),
+        e.velocityMmPerS("wipe_retraction_prime_speed"), e.real("wipe_retraction_extra_prime_amount")};
+    w.pause_s = e.durationSeconds("wipe_pause");
+    w.hop_enable = e.boolean("wipe_hop_enable");
+    w.hop_um = e.lengthMicrons("wipe_hop_amount");
+    w.hop_speed_mm_s = e.velocityMmPerS("wipe_hop_speed");
+    w.brush_x_um = e.lengthMicrons("wipe_brush_pos_x");
+    w.repeat_count = static_cast<int>(e.integer("wipe_repeat_count"));
+    w.move_distance_um = e.lengthMicrons("wipe_move_distance");
+    w.move_speed_mm_s = e.velocityMmPerS("speed_travel");
+    return w;
 }
 
 /// What switching away from / to train `e` does besides the tool change itself.
@@ -113,6 +136,8 @@ PlanWriterParams writerParams(const Scene& scene) {
         out.start_code = e.text("machine_extruder_start_code");
         out.end_code = e.text("machine_extruder_end_code");
         switchParams(e, out);
+        if (e.has("clean_between_layers") && e.boolean("clean_between_layers"))
+            out.wipe = wipeScript(e);
         writer.extruders.push_back(std::move(out));
     }
     return writer;

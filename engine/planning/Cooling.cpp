@@ -123,7 +123,7 @@ void applyCooling(PlannedLayer& layer, Point2 start, const CoolingParams& params
             layer.steps.push_back(liftHead(layer, start, params, params.min_layer_time_s - seconds));
     }
     for (PlanStep& step : layer.steps) {
-        if (step.kind == PlanStep::Kind::SetFan)
+        if (step.kind == PlanStep::Kind::SetFan && !step.fan_fixed)
             step.fan_ratio = fanRatio(params, layer.index, seconds);
     }
 }

@@ -24,6 +24,9 @@ struct PlanStep {
         /// to `to` at `speed_mm_s` and wait `dwell_seconds` (G4)
         LiftHead,
         Prime,  ///< first use of the active extruder: its prime (G280 on Griffin), then a retraction
+        /// clean_between_layers: the wipe script of extruder `extruder` (gcode/WipeScript.h), where
+        /// the head is; it returns there
+        WipeScript,
     };
     Kind kind = Kind::Travel;
     Point2 to{};
@@ -44,6 +47,10 @@ struct PlanStep {
     /// Extrude (spiralize): the nozzle ends the move this far above the layer's z (0 = at the height
     /// it is at); a spiral rises along its moves (toolpaths/Spiralize.h).
     coord_um rise_um = 0;
+
+    coord_um width_um = 0;   ///< Extrude: the line width of the path it belongs to
+    bool bridge = false;     ///< SetFeature: printed with bridge settings (;BRIDGE)
+    bool fan_fixed = false;  ///< SetFan: a bridge's own fan_ratio, kept by cooling
 };
 
 struct PlannedLayer {
@@ -53,6 +60,9 @@ struct PlannedLayer {
     coord_um z = 0;          ///< nozzle height
     coord_um thickness = 0;  ///< height of the extruded lines (0 = the distance to the layer below)
     std::vector<PlanStep> steps;
+    /// The travel step that retract_at_layer_change made retract (−1: none); a wipe script at the
+    /// layer's start takes the place of that retraction (planning/LayerWipes.h).
+    int layer_change_retract_step = -1;
 };
 
 struct PrintPlan {

@@ -1,5 +1,7 @@
 #include "planning/PathOrder.h"
 
+#include "planning/BridgeWalls.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -131,6 +133,7 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
         extrude.to = to;
         extrude.speed_mm_s = path.speed_mm_s;
         const double flow = path.flows.size() == n ? path.flows[index] : path.flow;
+        extrude.width_um = path.width_um;
         extrude.volume_mm3 = extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, flow);
         extrude.rise_um = rises.empty() ? 0 : rises[index];
         steps.push_back(extrude);
@@ -222,7 +225,34 @@ std::size_t startOf(const ExtrusionPath& path, const Point2& from, const TravelP
     return front ? 0 : path.points.size() - 1;
 }
 
+/// Whether the last ;TYPE: of `steps` was marked ;BRIDGE.
+bool lastMarkedBridge(const std::vector<PlanStep>& steps) {
+    for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
+        if (it->kind == PlanStep::Kind::SetFeature)
+            return it->bridge;
+    }
+    return false;
+}
+
+/// A path's own fan (`ratio`, a bridge's) before it, or the layer's again (−1) after a bridge: a
+/// SetFan step when that changes (the layer's is filled in by cooling).
+void setPathFan(double ratio, BridgeMarks& marks, std::vector<PlanStep>& steps) {
+    if (ratio == marks.fan)
+        return;
+    PlanStep fan;
+    fan.kind = PlanStep::Kind::SetFan;
+    fan.fan_ratio = ratio;
+    fan.fan_fixed = ratio >= 0;
+    steps.push_back(fan);
+    marks.fan = ratio;
+}
+
 }  // namespace
+
+void appendTravelTo(const Point2& from, const Point2& to, const TravelParams& params,
+                    std::vector<PlanStep>& steps) {
+    appendTravel(from, to, params, steps);
+}
 
 double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um,
                           double flow) {
@@ -236,18 +266,30 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
     const std::vector<bool> entry = entryPaths(paths);
     const bool keep_order = !paths.empty() && paths.front().keep_order;
     bool first = true;
+    BridgeMarks marks{lastMarkedBridge(steps), -1};
     auto print = [&](std::size_t index) {
         const Point2 from = first && params.order_from ? *params.order_from : head;
         first = false;
         done[index] = true;
-        if (feature != paths[index].feature) {
+        const ExtrusionPath& path = paths[index];
+        if (feature != path.feature || marks.bridge != path.bridge) {
             PlanStep marker;
             marker.kind = PlanStep::Kind::SetFeature;
-            marker.feature = paths[index].feature;
+            marker.feature = path.feature;
+            marker.bridge = path.bridge;
             steps.push_back(marker);
-            feature = paths[index].feature;
+            feature = path.feature;
+            marks.bridge = path.bridge;
         }
-        emitPath(paths[index], startOf(paths[index], from, params), params, head, steps);
+        if (path.closed && path.bridge_wall && path.air_edges.size() == path.points.size()) {
+            const Point2 before = head;
+            const std::size_t start =
+                emitBridgedWall(path, startOf(path, from, params), params, head, feature, marks, steps);
+            appendPathWipe(path, start, params, before, head, steps);
+            return;
+        }
+        setPathFan(path.fan_ratio, marks, steps);
+        emitPath(path, startOf(path, from, params), params, head, steps);
     };
     for (;;) {
         const Point2 from = first && params.order_from ? *params.order_from : head;
@@ -262,6 +304,7 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
                 print(j);
         }
     }
+    setPathFan(-1, marks, steps);  // the layer's fan again after a bridge
 }
 
 }  // namespace mixengine

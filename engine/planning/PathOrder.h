@@ -21,6 +21,10 @@ namespace mixengine {
 void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& params, Point2& head,
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps);
 
+/// The travel from `from` to `to` (planning/TravelRoute.h), retracting first when it must.
+void appendTravelTo(const Point2& from, const Point2& to, const TravelParams& params,
+                    std::vector<PlanStep>& steps);
+
 /// The volume of a line: length × width × layer thickness × flow, in mm³.
 double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_um, coord_um thickness_um,
                           double flow);

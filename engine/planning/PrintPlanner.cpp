@@ -5,7 +5,9 @@
 #include <optional>
 #include <set>
 
+#include "planning/Coasting.h"
 #include "planning/Cooling.h"
+#include "planning/LayerWipes.h"
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
 #include "planning/SwitchTemperatures.h"
@@ -163,10 +165,13 @@ void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
         !extruder.boolean("retraction_enable") ||
         (extruder.has("magic_spiralize") && extruder.boolean("magic_spiralize")))
         return;
-    for (PlanStep& step : layer.steps) {
+    for (std::size_t i = 0; i < layer.steps.size(); ++i) {
+        PlanStep& step = layer.steps[i];
         if (step.kind == PlanStep::Kind::Extrude)
             return;
         if (step.kind == PlanStep::Kind::Travel) {
+            if (!step.retract)
+                layer.layer_change_retract_step = static_cast<int>(i);
             step.retract = true;
             return;
         }
@@ -488,6 +493,14 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
     }
     for (std::size_t i = 0; i < toolpaths.heights.size(); ++i)
         plan.layers.push_back(planModelLayer(i, !plan.layers.empty(), run));
+    std::vector<CoastingParams> coasting;
+    std::vector<LayerWipeParams> wipes;
+    for (const Settings& train : extruders) {
+        coasting.push_back(coastingParams(train));
+        wipes.push_back(layerWipeParams(train));
+    }
+    applyCoasting(plan, coasting, start_extruder);
+    planLayerWipes(plan, wipes, start_extruder);
     planNozzleTemperatures(plan, toolpaths, global, extruders, run.used, start_extruder, print_start);
     return plan;
 }

@@ -2,6 +2,7 @@
 // The output of toolpath generation: typed extrusion lines per layer, plain data.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -35,6 +36,18 @@ std::string_view featureMarker(Feature feature);  ///< "WALL-OUTER", "FILL", ...
 /// Ironing → Skin, RaftBase/RaftSurface → SupportInterface, RaftInterface → Support, else itself.
 Feature markedFeature(Feature feature);
 
+/// How a wall prints where it crosses air (bridge_wall_*; toolpaths/BridgeWalls.h).
+struct BridgeWallStyle {
+    double speed_mm_s = 0;   ///< bridge_wall_speed
+    double flow = 1.0;       ///< bridge_wall_material_flow
+    double fan_ratio = 1.0;  ///< bridge_fan_speed
+    double coast = 1.0;      ///< bridge_wall_coast (fraction)
+};
+
+/// ExtrusionPath::air_edges values: the edge's kind in the low bits, kContinuesEdge when it is
+/// the continuation of the same wall edge as the edge before it (split where the edge meets air).
+enum AirEdge : std::uint8_t { kSupported = 0, kShortAir = 1, kBridged = 2, kContinuesEdge = 4 };
+
 struct ExtrusionPath {
     Path points;            ///< microns
     bool closed = false;    ///< a loop: the printer returns to points.front()
@@ -61,6 +74,15 @@ struct ExtrusionPath {
     /// Empty, or one flow per point: flows[k] is the flow of the line that ends at points[k]
     /// (flows[0] is not used); 0 moves without extruding. Replaces `flow` when given.
     std::vector<double> flows;
+
+    /// Printed with bridge settings (toolpaths/BridgeSkin.h): ;BRIDGE after its ;TYPE:, and the
+    /// fan at `fan_ratio` (0..1; −1: the layer's fan) while it prints.
+    bool bridge = false;
+    double fan_ratio = -1;
+    /// A wall loop crossing air: per edge points[k] → points[k+1] its AirEdge bits, and how it
+    /// prints bridged; empty / none for everything else.
+    std::vector<std::uint8_t> air_edges;
+    std::optional<BridgeWallStyle> bridge_wall;
 };
 
 }  // namespace mixengine

@@ -5,6 +5,8 @@
 #include <optional>
 
 #include "common/ParallelFor.h"
+#include "toolpaths/BridgeSkin.h"
+#include "toolpaths/BridgeWalls.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/FuzzySkin.h"
 #include "toolpaths/InfillLayers.h"
@@ -297,6 +299,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
     const bool spiralize = spiralizeOn(settings);
     std::vector<Paths>& spiral_loops = out.spiral_loops;
     spiral_loops.resize(spiralize ? layers.size() : 0);
+    const BridgeWallParams bridge_walls = bridgeWallParams(settings);
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         const Paths outlines = adjustedOutlines(layers[i].outlines, settings, layer);
@@ -310,6 +313,9 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
         }
         applyFuzzySkin(walls.walls, fuzzySkinParams(settings, layer), layer);
         placeSeams(walls.walls, seam, layer);
+        if (bridge_walls.enabled && layer > 0)
+            markBridgedWalls(walls.walls, outlines,
+                             adjustedOutlines(layers[i - 1].outlines, settings, layer - 1), bridge_walls);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? out.walls[i].outer_walls : out.walls[i].inner_walls)
                 .push_back(std::move(path));
@@ -339,12 +345,27 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
     const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
     const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
 
+    const BridgeSkinParams bridge = bridgeSkinParams(settings);
+    std::vector<Paths> outlines, infill_areas;  // bridged skin: what lies below (the sparse infill as air)
+    if (bridge.enabled) {
+        for (std::size_t i = 0; i < layers.size(); ++i) {
+            outlines.push_back(adjustedOutlines(layers[i].outlines, settings, static_cast<int>(i)));
+            infill_areas.push_back(areas.skin[i].infill);
+        }
+    }
+
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         const coord_um z = layers[i].print_z;
         const SkinAreas& skin = areas.skin[i];
         const MeshStyles styles = meshStyles(settings, layer);
-        const SkinPathParams skin_params = skinPathParams(settings, layer, z, styles);
+        SkinPathParams skin_params = skinPathParams(settings, layer, z, styles);
+        if (bridge.enabled) {
+            const LayersBelow below{&outlines, &infill_areas, layer};
+            skin_params.bridge = [&bridge, below, &skin_params](const Paths& part) {
+                return bridgeSkinFill(part, skin_params.skin, bridge, below);
+            };
+        }
         result[i].skin = generateSkinPaths(skin.skin, skin.roofing, skin_params);
         if (fillsPerimeterGaps(settings)) {
             for (ExtrusionPath& line : perimeterGapLines(

@@ -54,7 +54,7 @@ Paths concentricLoops(const Paths& area, const SkinFillParams& fill, Paths* gaps
 InfillParams patternParams(const SkinFillParams& fill, coord_um z_um) {
     InfillParams p;
     p.pattern = fill.pattern;
-    p.line_distance_um = fill.style.width_um;
+    p.line_distance_um = static_cast<coord_um>(double(fill.style.width_um) / fill.density);
     p.angle_degrees = fill.angle_degrees;
     p.z_um = z_um;
     p.line_width_um = fill.style.width_um;
@@ -127,7 +127,13 @@ void appendSkinPart(const Paths& part, const Paths& roofing_area, const SkinPath
     }
     appendStyledLoops(loops, Feature::Skin, p.skin.style, out.paths);
     appendFill(roof_fill, p.roofing, p, out);
-    appendFill(skin_fill, p.skin, p, out);
+    const std::optional<SkinFillParams> bridge = p.bridge ? p.bridge(part) : std::nullopt;
+    const std::size_t before = out.paths.size();
+    appendFill(skin_fill, bridge ? *bridge : p.skin, p, out);
+    for (std::size_t i = before; bridge && i < out.paths.size(); ++i) {
+        out.paths[i].bridge = true;
+        out.paths[i].fan_ratio = bridge->bridge_fan_ratio.value_or(-1);
+    }
     appendGapLines(out.gaps, p, out.paths);
     out.gaps.clear();
 }

@@ -16,6 +16,7 @@
 // `monotonic` (skin_monotonic / roofing_monotonic) a fill's lines are one sequence in monotonic
 // order (toolpaths/MonotonicOrder.h, adjacency 1.1 line widths), numbered from 1 within the result.
 // Where a loop starts, and the order of everything else, is left to the planner.
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct SkinFillParams {
     coord_um overlap_um = 0;
     FeatureStyle style;
     bool monotonic = false;
+    double density = 1.0;  ///< lines width / density apart (bridge_skin_density; skin: 1)
+    /// A bridge's fill: its paths are marked ExtrusionPath::bridge with this fan.
+    std::optional<double> bridge_fan_ratio;
 };
 
 struct SkinPathParams {
@@ -43,6 +47,8 @@ struct SkinPathParams {
     /// The style of the lines filling a concentric fill's gaps; none without fill_perimeter_gaps.
     std::optional<FeatureStyle> gap_style;
     double gap_angle_degrees = 45;
+    /// Bridged skin (toolpaths/BridgeSkin.h): the fill replacing `skin` for a skin part, or none.
+    std::function<std::optional<SkinFillParams>(const Paths& part)> bridge;
 };
 
 /// The paths of `skin_area` (roofing included) with `roofing_area` the part of it with air above.
