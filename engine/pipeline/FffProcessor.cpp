@@ -126,8 +126,8 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
     OutlineCleanupParams cleanup;
     cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
-    cleanup.maximum_resolution_um = simplify ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
-    cleanup.maximum_deviation_um = simplify ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
+    if (!simplify)
+        cleanup.maximum_resolution_um = cleanup.maximum_deviation_um = 0;
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
         cleanOutlines(sliced.meshes[m], cleanup, threads);
         const Settings& own = group.meshes[m].settings;

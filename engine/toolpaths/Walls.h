@@ -41,6 +41,10 @@ struct WallParams {
     /// less the pieces under 2 outer wall widths squared with `filter_tiny_gaps`.
     bool perimeter_gaps = false;
     bool filter_tiny_gaps = true;
+    /// meshfix_maximum_resolution / _deviation: each wall's centre region is simplified as the
+    /// outlines are (slicing/OutlineCleanup.h) before the next wall is inset from it; 0 and 0 = not.
+    coord_um simplify_resolution_um = 0;
+    coord_um simplify_deviation_um = 0;
 };
 
 struct WallResult {
