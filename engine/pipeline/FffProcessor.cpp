@@ -102,6 +102,16 @@ std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& write
     return gcode.takeText();
 }
 
+/// How far apart the ends of open cut pieces may be and still be joined: as CuraEngine 4.13, up to
+/// 10 mm (nearest ends first, pieces reversed where needed), so an open scan still slices into
+/// closed outlines; in a mesh surface mode only the slicer's own 0.1 mm (open pieces stay open).
+coord_um stitchDistanceUm(const Settings& s) {
+    constexpr coord_um kStitchUm = 10'000;
+    constexpr coord_um kSurfaceModeGapUm = 100;
+    const bool normal = !s.has("magic_mesh_surface_mode") || s.text("magic_mesh_surface_mode") == "normal";
+    return normal ? kStitchUm : kSurfaceModeGapUm;
+}
+
 }  // namespace
 
 std::string GCodeOutput::joined() const {
@@ -122,8 +132,10 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     SliceOptions options;
     options.tolerance = toleranceOf(s);
     options.threads = threads;
-    for (const SceneMesh& m : group.meshes)
+    for (const SceneMesh& m : group.meshes) {
+        options.max_gap_um = stitchDistanceUm(m.settings);
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, options, log));
+    }
     OutlineCleanupParams cleanup;
     cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
     if (!simplify)
