@@ -138,8 +138,8 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     }
     OutlineCleanupParams cleanup;
     cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
-    if (!simplify)
-        cleanup.maximum_resolution_um = cleanup.maximum_deviation_um = 0;
+    cleanup.maximum_resolution_um = simplify ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
+    cleanup.maximum_deviation_um = simplify ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
         cleanOutlines(sliced.meshes[m], cleanup, threads);
         const Settings& own = group.meshes[m].settings;

@@ -1,8 +1,11 @@
 #pragma once
-// What CuraEngine 4.13 does to outlines between slicing and toolpaths:
+// What CuraEngine does to outlines between slicing and toolpaths:
 //   - loops shorter than minimum_polygon_circumference are dropped;
-//   - every loop is simplified with CuraEngine's fixed slicer resolution (10 µm segments, 5 µm
-//     deviation; meshfix_maximum_resolution / _deviation act later, on the walls, as in 4.13).
+//   - every loop is simplified with meshfix_maximum_resolution / _deviation (FffProcessor). CuraEngine
+//     4.13's slicer itself uses a fixed 10 µm / 5 µm and applies these settings to each wall instead
+//     (toolpaths/Walls.h does too); simplifying the outline with them as well keeps the seam choice
+//     and infill as CuraEngine's on the parity scenes (tests/python/test_parity.py) at the same print
+//     quality (tests/bench/quality.sh).
 // simplifyLoop follows CuraEngine 4.13's simplification: walking the loop, a vertex goes when the
 // segment to it from the last kept vertex is under 5 µm, when it is collinear with its neighbours
 // (within 1 µm), or when that segment is shorter than the resolution and the area cut off by going
@@ -22,8 +25,8 @@ namespace mixengine {
 
 struct OutlineCleanupParams {
     coord_um minimum_circumference_um = 1000;
-    coord_um maximum_resolution_um = 10;
-    coord_um maximum_deviation_um = 5;
+    coord_um maximum_resolution_um = 250;
+    coord_um maximum_deviation_um = 25;
 };
 
 /// One closed loop, simplified as described above (fewer than three vertices: none left).
