@@ -181,6 +181,16 @@ void useBfbLineEnds(const Scene& scene, GCodeOutput& output) {
     output.suffix = withBfbLineEnds(output.suffix, verbatim);
 }
 
+/// How far apart the ends of open cut pieces may be and still be joined: as CuraEngine 4.13, up to
+/// 10 mm (nearest ends first, pieces reversed where needed), so an open scan still slices into
+/// closed outlines; in a mesh surface mode only the slicer's own 0.1 mm (open pieces stay open).
+coord_um stitchDistanceUm(const Settings& s) {
+    constexpr coord_um kStitchUm = 10'000;
+    constexpr coord_um kSurfaceModeGapUm = 100;
+    const bool normal = !s.has("magic_mesh_surface_mode") || s.text("magic_mesh_surface_mode") == "normal";
+    return normal ? kStitchUm : kSurfaceModeGapUm;
+}
+
 }  // namespace
 
 VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
@@ -221,6 +231,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         SliceOptions own = options;
         own.union_all = !m.settings.has("meshfix_union_all") || m.settings.boolean("meshfix_union_all");
         own.keep_open_polygons = flagOf(m.settings, "meshfix_keep_open_polygons");
+        own.max_gap_um = stitchDistanceUm(m.settings);
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, own, log));
     }
     OutlineCleanupParams cleanup;

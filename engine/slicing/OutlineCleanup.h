@@ -1,13 +1,20 @@
 #pragma once
-// What CuraEngine does to outlines between slicing and toolpaths, with the same setting keys:
+// What CuraEngine does to outlines between slicing and toolpaths:
 //   - loops shorter than minimum_polygon_circumference are dropped;
-//   - vertices are removed where the outline is finer than the printer can follow:
-//     a vertex goes when the segment to it from the last kept vertex is shorter than
-//     meshfix_maximum_resolution and every vertex dropped since then lies within
-//     meshfix_maximum_deviation of the new, straighter segment. Collinear vertices (within 5 µm)
-//     go regardless of length. A loop keeps at least three vertices. Resolution and deviation
-//     both 0: no simplification at all (the raw slices, as `mixengine layers` shows them).
-// The result never moves the outline by more than the deviation; the layer count is unchanged.
+//   - every loop is simplified with meshfix_maximum_resolution / _deviation (FffProcessor). CuraEngine
+//     4.13's slicer itself uses a fixed 10 µm / 5 µm and applies these settings to each wall instead
+//     (toolpaths/Walls.h does too); simplifying the outline with them as well keeps the seam choice
+//     and infill as CuraEngine's on the parity scenes (tests/python/test_parity.py) at the same print
+//     quality (tests/bench/quality.sh).
+// simplifyLoop follows CuraEngine 4.13's simplification: walking the loop, a vertex goes when the
+// segment to it from the last kept vertex is under 5 µm, when it is collinear with its neighbours
+// (within 1 µm), or when that segment is shorter than the resolution and the area cut off by going
+// straight from the last kept vertex to the next one, as a triangle on that shortcut, is no higher
+// than the deviation. When the segment after such a vertex is long, the vertex is kept but moved
+// to where the lines before and after it meet (if that point stays within the resolution and the
+// deviation), and the vertex before it goes. A loop of three vertices stays as it is; loops left
+// with fewer than three go. Resolution and deviation both 0 in OutlineCleanupParams: no
+// simplification at all (the raw slices, as `mixengine layers` shows them).
 // removeHoles fills every hole (meshfix_union_all_remove_holes).
 #include <vector>
 
@@ -18,11 +25,11 @@ namespace mixengine {
 
 struct OutlineCleanupParams {
     coord_um minimum_circumference_um = 1000;
-    coord_um maximum_resolution_um = 500;
+    coord_um maximum_resolution_um = 250;
     coord_um maximum_deviation_um = 25;
 };
 
-/// One closed loop, simplified as described above.
+/// One closed loop, simplified as described above (fewer than three vertices: none left).
 Path simplifyLoop(const Path& loop, coord_um maximum_resolution_um, coord_um maximum_deviation_um);
 
 /// Every outline of every layer (in parallel over layers).

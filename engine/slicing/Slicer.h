@@ -7,7 +7,7 @@
 //     in the plane count when facing up and not when facing down;
 //   - intersection points are computed exactly by interpolation along the edge (no bisection);
 //   - segments are stitched into polygons in linear time through a hash of their end points; small
-//     gaps (≤ max_gap_um) are closed; polylines that cannot be closed are reported in
+//     gaps (≤ max_gap_um, nearest ends first) are closed; polylines that cannot be closed are reported in
 //     `open_polylines` and are not part of `outlines`;
 //   - outlines are the union of all closed loops (overlapping shells merged, holes by nesting,
 //     independent of facet winding): outer contours counter-clockwise, holes clockwise

@@ -108,6 +108,10 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.perimeter_gaps = fillsPerimeterGaps(s);
     p.filter_tiny_gaps = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
     p.outer_first = outerWallFirst(s, layer);
+    p.simplify_resolution_um =
+        s.has("meshfix_maximum_resolution") ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
+    p.simplify_deviation_um =
+        s.has("meshfix_maximum_deviation") ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
     return p;
 }
 

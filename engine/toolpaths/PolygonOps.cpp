@@ -46,7 +46,13 @@ Paths offsetPolygons(const Paths& polygons, coord_um delta_um) {
 }
 
 Paths offsetMiter(const Paths& polygons, coord_um delta_um) {
-    return offsetWith(polygons, delta_um, ClipperLib::jtMiter);
+    if (polygons.empty() || delta_um == 0)
+        return polygons;
+    ClipperLib::ClipperOffset offset(1.2, kArcToleranceUm);
+    offset.AddPaths(unionOf(polygons), ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    Paths result;
+    offset.Execute(result, static_cast<double>(delta_um));
+    return result;
 }
 
 Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit) {

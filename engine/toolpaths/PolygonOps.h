@@ -11,8 +11,9 @@ namespace mixengine {
 /// lines are round: skirt, brim, support distances, ooze shield.
 Paths offsetPolygons(const Paths& polygons, coord_um delta_um);
 
-/// Offset with mitred joins (limit 2 × delta): keeps corners down to about 60° sharp, as
-/// CuraEngine's walls, skin and infill areas are.
+/// Offset with mitred joins as CuraEngine 4.13 offsets its walls, skin and infill areas: the
+/// polygons are united first (so a zero-width bridge left by an earlier inset is gone), the miter
+/// limit is 1.2 × delta (corners sharper than about 113° are squared off).
 Paths offsetMiter(const Paths& polygons, coord_um delta_um);
 /// The same with another miter limit (CuraEngine's Polygons::offset uses 1.2: corners sharper than
 /// about 113° are bevelled).

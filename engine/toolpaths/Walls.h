@@ -5,9 +5,12 @@
 // The outer wall's centre line lies wall_line_width_0 / 2 + wall_0_inset inside the outline; the
 // first inner wall lies wall_line_width_0 + wall_line_width_x / 2 inside it (as CuraEngine 4.13:
 // the inset moves the outer wall only), each further wall one wall_line_width_x further in. Holes
-// get their own loops (clockwise). Thin parts get fewer walls: a piece of a wall's centre region
-// narrower than that wall's line width would make the loop overlap itself, so it is dropped (and
-// every wall inside it with it); no loop has zero width or overlaps itself.
+// get their own loops (clockwise). As CuraEngine 4.13 (WallsComputation), each wall's centre region
+// is a plain inset of the previous one, taken part by part: a piece of it narrower than the line
+// still gets its loop (the loop overlaps itself there), a part narrower than one line gets none;
+// when an inset splits a part into more than three loops more than before (more than four for the
+// outer wall), the inset for a line 10 µm narrower is used if it saves more than three loops. Each
+// region is simplified (meshfix_maximum_resolution / _deviation) before the next is taken.
 #include <vector>
 
 #include "geometry/Point.h"
@@ -41,6 +44,10 @@ struct WallParams {
     /// less the pieces under 2 outer wall widths squared with `filter_tiny_gaps`.
     bool perimeter_gaps = false;
     bool filter_tiny_gaps = true;
+    /// meshfix_maximum_resolution / _deviation: each wall's centre region is simplified as the
+    /// outlines are (slicing/OutlineCleanup.h) before the next wall is inset from it; 0 and 0 = not.
+    coord_um simplify_resolution_um = 0;
+    coord_um simplify_deviation_um = 0;
 };
 
 struct WallResult {

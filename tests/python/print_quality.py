@@ -7,7 +7,9 @@ For every layer of the G-code (index >= 0, i.e. no raft):
        (gcode_model.segment_widths_mm);
   S  = the model's cross-section at the layer's mid height (z - thickness / 2: where CuraEngine's default
        slicing_tolerance "middle" cuts), computed by trimesh from the mesh file, moved by the engine's
-       machine offset (the bed centre unless machine_center_is_zero);
+       machine offset (the bed centre unless machine_center_is_zero); where the mesh is open (a scan with
+       holes) the section's open pieces are joined nearest ends first up to 10 mm and closed by straight
+       lines, as CuraEngine 4.13 stitches them (ModelSections);
   S+ = S grown by `tolerance_mm` (shapely buffer).
 All three are rasterised on the same grid of `grid_mm` squares: a square counts when its centre lies inside
 (capsules by exact per-row intervals, polygons by the even-odd rule on the row through the centre).
@@ -154,8 +156,64 @@ def rasterise_polygons(grid, geometry):
     return _fill_intervals(grid, rows, xc, None, parity=True)
 
 
+STITCH_MM = 10.0  # CuraEngine 4.13 joins open section pieces whose ends are up to 10 mm apart
+
+
+def _stitched_rings(chains, max_mm=STITCH_MM):
+    """Open polylines joined end to end, nearest pair of ends first (reversing a piece where needed), a
+    piece whose own two ends are the nearest pair closing into a ring: as CuraEngine 4.13 stitches the open
+    cut of a mesh with holes. Returns the rings (pieces left open are dropped)."""
+    chains = [np.asarray(c, float) for c in chains if len(c) >= 2]
+    rings = []
+    while chains:
+        best = None
+        for i, a in enumerate(chains):
+            if len(a) >= 3:
+                d = float(np.hypot(*(a[0] - a[-1])))
+                if d <= max_mm and (best is None or d < best[0]):
+                    best = (d, i, None, None)
+            for j in range(i + 1, len(chains)):
+                b = chains[j]
+                for ea, pa in ((0, a[0]), (1, a[-1])):
+                    for eb, pb in ((0, b[0]), (1, b[-1])):
+                        d = float(np.hypot(*(pa - pb)))
+                        if d <= max_mm and (best is None or d < best[0]):
+                            best = (d, i, j, (ea, eb))
+        if best is None:
+            break
+        _, i, j, ends = best
+        if j is None:
+            rings.append(chains.pop(i))
+            continue
+        a, b = chains[i], chains[j]
+        a = a[::-1] if ends[0] == 0 else a        # a now ends at the joined end
+        b = b if ends[1] == 0 else b[::-1]        # b now starts at it
+        chains[i] = np.vstack([a, b])
+        chains.pop(j)
+    return rings
+
+
+def _section_geometry(section):
+    """The section's solid as shapely geometry in its own 2D frame: trimesh's closed polygons, or, when the
+    mesh is open there, every closed ring and the open pieces stitched into rings (_stitched_rings), filled
+    by the even-odd rule."""
+    import shapely
+    open_chains = [e.discrete(section.vertices) for e in section.entities if not e.closed]
+    if not open_chains:
+        polys = list(section.polygons_full)
+        return shapely.union_all(polys) if polys else shapely.Polygon()
+    rings = [e.discrete(section.vertices) for e in section.entities if e.closed] + _stitched_rings(open_chains)
+    geometry = shapely.Polygon()
+    for ring in rings:
+        if len(ring) >= 3:
+            geometry = geometry.symmetric_difference(shapely.make_valid(shapely.Polygon(ring)))
+    return geometry
+
+
 class ModelSections:
-    """trimesh cross-sections of a mesh file, as shapely geometry in the mesh's own XY frame."""
+    """trimesh cross-sections of a mesh file, as shapely geometry in the mesh's own XY frame. Where the mesh
+    is open (a scan with holes), the open pieces of a section are stitched as CuraEngine 4.13 does
+    (_stitched_rings), so that the section is what a slicer following CuraEngine prints."""
 
     def __init__(self, mesh_path):
         import trimesh
@@ -174,9 +232,8 @@ class ModelSections:
                 out.append(shapely.Polygon())
                 continue
             t = s.metadata.get("to_3D", np.eye(4))  # the 2D frame of the section -> mesh XY
-            polys = [affinity.affine_transform(p, [t[0, 0], t[0, 1], t[1, 0], t[1, 1], t[0, 3], t[1, 3]])
-                     for p in s.polygons_full]
-            out.append(shapely.union_all(polys) if polys else shapely.Polygon())
+            out.append(affinity.affine_transform(_section_geometry(s),
+                                                 [t[0, 0], t[0, 1], t[1, 0], t[1, 1], t[0, 3], t[1, 3]]))
         return out
 
 

@@ -137,10 +137,10 @@ TEST(MeshToolpaths, SurfaceModePrintsTheOutlineOnceAsOuterWall) {
 }
 
 TEST(MeshToolpaths, PerimeterGapsAreFilledWithHalfWidthSkinLines) {
-    // A 1.4 mm wide wall of a part: room for the outer wall only, the 0.57 mm left inside is a gap
+    // A 1.0 mm wide wall of a part: room for the outer wall only, the 0.17 mm left inside is a gap
     // filled with lines half an outer wall wide (fill_perimeter_gaps), unless that is off.
     test::Stack strip = test::prismStack(10);
-    test::fill(strip, 0, 10, {test::rect(10'000, 10'000, 30'000, 11'400)});
+    test::fill(strip, 0, 10, {test::rect(10'000, 10'000, 30'000, 11'000)});
     const auto gapLines = [&](const std::string& mode) {
         const ResolvedMachine m = test::fdmMachine({{"fill_perimeter_gaps", mode}}, {{1, {}}});
         std::size_t count = 0;

@@ -138,47 +138,73 @@ TEST(Walls, PerimeterGapsWhereTheNextWallIsMissing) {
     WallParams p;
     p.perimeter_gaps = true;
     EXPECT_TRUE(generateWalls({square(0, 0, 20'000)}, p).perimeter_gaps.empty());
-    // A 1.4 mm strip fits the outer wall (centre region 1.0 mm wide) but no inner wall: what the
-    // outer wall leaves, 1.0 − 0.4 − 2 × 15 µm = 0.57 mm across, is a gap (11 mm², over the filter's
-    // two outer wall widths squared).
-    const WallResult strip = generateWalls({rect(0, 0, 20'000, 1'400)}, p);
+    // A 1.0 mm strip holds the outer wall (centre region 0.6 mm wide) but no inner wall: what the
+    // outer wall leaves, 0.6 − 2 × (0.2 mm + 15 µm) = 0.17 mm across, is a gap (3.3 mm², over the
+    // filter's two outer wall widths squared).
+    const WallResult strip = generateWalls({rect(0, 0, 20'000, 1'000)}, p);
     const ClipperLib::IntRect box = boundsOf(strip.perimeter_gaps);
     EXPECT_EQ(box.top, 415);
-    EXPECT_EQ(box.bottom, 985);
-    EXPECT_NEAR(areaUm2(strip.perimeter_gaps), 19'170.0 * 570.0, 1e3);  // 0.415 mm in from each end
-    p.perimeter_gaps = false;
+    EXPECT_EQ(box.bottom, 585);
+    EXPECT_NEAR(areaUm2(strip.perimeter_gaps), 19'170.0 * 170.0, 1e3);  // 0.415 mm in from each end
+    // A 1.4 mm strip holds both walls, the inner one overlapping itself: no gap between them.
     EXPECT_TRUE(generateWalls({rect(0, 0, 20'000, 1'400)}, p).perimeter_gaps.empty());
+    p.perimeter_gaps = false;
+    EXPECT_TRUE(generateWalls({rect(0, 0, 20'000, 1'000)}, p).perimeter_gaps.empty());
 }
 
-TEST(Walls, ThinPartsGetFewerWallsNeverOverlapping) {
-    // A loop of width w needs a centre region at least w wide: the outer wall needs a strip of
-    // 2 × 0.4 mm, the second wall 0.8 + 2 × 0.4 mm. Narrower parts lose those walls entirely.
+TEST(Walls, ThinPartsGetFewerWallsAsCuraEngine) {
+    // As CuraEngine 4.13, each wall's centre region is a plain inset of the previous one: a part
+    // keeps its outer wall while it is wider than one line (0.4 mm; narrower than two lines the
+    // loop overlaps itself), its second wall while wider than 0.4 + 2 × 0.4 mm, and has room
+    // inside the walls once wider than 1.6 mm.
     struct Case {
         coord_um width;
         std::size_t walls;
         bool inner_area;
     };
-    // (1 µm of slack: a part exactly one line wide keeps its loop.)
-    const Case cases[] = {{300, 0, false},   {700, 0, false},   {797, 0, false},   {800, 1, false},
-                          {1'000, 1, false}, {1'597, 1, false}, {1'600, 2, false}, {1'700, 2, true}};
+    const Case cases[] = {{300, 0, false},   {400, 0, false},   {500, 1, false},   {700, 1, false},
+                          {1'200, 1, false}, {1'300, 2, false}, {1'600, 2, false}, {1'700, 2, true}};
     for (const Case& c : cases) {
         const WallResult result = generateWalls({rect(0, 0, 10'000, c.width)}, WallParams{});
         EXPECT_EQ(result.walls.size(), c.walls) << c.width;
-        for (const ExtrusionPath& wall : result.walls) {
-            // The two long sides of every loop lie at least one line width apart.
-            const ClipperLib::IntRect box = boundsOf({wall.points});
-            EXPECT_GE(box.bottom - box.top, wall.width_um - 2) << c.width;
+        if (!result.walls.empty()) {  // the outer wall's centre line lies half a line inside
+            const ClipperLib::IntRect box = boundsOf({result.walls[0].points});
+            EXPECT_EQ(box.top, 200) << c.width;
+            EXPECT_EQ(box.bottom, c.width - 200) << c.width;
         }
         EXPECT_EQ(!result.inner_area.empty(), c.inner_area) << c.width;
     }
 }
 
-TEST(Walls, ThinSpikeLosesItsWallButTheBodyKeepsSharpCorners) {
-    // A 10 mm square with a 0.6 mm wide spike: the spike cannot hold a loop of 0.4 mm.
+TEST(Walls, ThinSpikeKeepsItsOuterWall) {
+    // A 10 mm square with a 0.6 mm wide spike: the outer wall runs out along the spike (its centre
+    // region there is 0.2 mm wide), the inner wall stays in the square.
     const Paths shape = unionOf({square(0, 0, 10'000)}, {rect(10'000, 4'000, 14'000, 4'600)});
     const WallResult result = generateWalls(shape, WallParams{});
     ASSERT_EQ(result.walls.size(), 2U);
-    EXPECT_EQ(sortedCorners(result.walls[0].points), sortedCorners(square(200, 200, 9'600)));
+    EXPECT_EQ(boundsOf({result.walls[0].points}).right, 13'800);
+    EXPECT_EQ(sortedCorners(result.walls[1].points), sortedCorners(square(600, 600, 8'800)));
+}
+
+TEST(Walls, InsetsAreSimplifiedBeforeTheNextIsTaken) {
+    // meshfix_maximum_resolution / _deviation act on each wall's centre region: a 20 µm notch in
+    // the outline survives the plain inset but not a 0.25 mm / 25 µm simplification.
+    const Path notched{{0, 0},      {5'000, 0},       {5'100, 20}, {5'200, 0},
+                       {10'000, 0}, {10'000, 10'000}, {0, 10'000}};
+    WallParams p;
+    auto notchTops = [](const ExtrusionPath& wall) {  // vertices on the notch, off the straight edge
+        return std::count_if(wall.points.begin(), wall.points.end(),
+                             [](const Point2& v) { return v.Y > 200 && v.Y < 250; });
+    };
+    const WallResult plain = generateWalls({notched}, p);
+    EXPECT_EQ(notchTops(plain.walls[0]), 1);
+    EXPECT_EQ(plain.walls[0].points.size(), 7U);
+    p.simplify_resolution_um = 250;
+    p.simplify_deviation_um = 25;
+    const WallResult simple = generateWalls({notched}, p);
+    EXPECT_EQ(notchTops(simple.walls[0]), 0);
+    EXPECT_LT(simple.walls[0].points.size(), 7U);
+    EXPECT_EQ(sortedCorners(simple.walls[1].points), sortedCorners(square(600, 600, 8'800)));
 }
 
 TEST(Walls, ReferenceRegionsForTheSkin) {
