@@ -40,7 +40,7 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
         log.warning(warning);
     for (const std::string& note : toolpaths.notes)
         log.info(note);
-    return planPrint(toolpaths, group.settings, scene.machine.extruders, state);
+    return planPrint(toolpaths, group.settings, scene.machine.extruders, state, threads);
 }
 
 /// The mixing stage's view of the group: each mesh's height span as printed, i.e. lifted by the
