@@ -105,10 +105,17 @@ std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& write
 }  // namespace
 
 std::string GCodeOutput::joined() const {
-    std::string text = header + start;
+    std::size_t size = header.size() + start.size() + suffix.size();
+    for (const std::string& chunk : layer_chunks)
+        size += chunk.size();
+    std::string text;
+    text.reserve(size);
+    text += header;
+    text += start;
     for (const std::string& chunk : layer_chunks)
         text += chunk;
-    return text + suffix;
+    text += suffix;
+    return text;
 }
 
 SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simplify) {
