@@ -96,7 +96,7 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
         log.warning(warning);
     for (const std::string& note : toolpaths.notes)
         log.info(note);
-    return planPrint(toolpaths, group.settings, scene.machine.extruders, state);
+    return planPrint(toolpaths, group.settings, scene.machine.extruders, state, threads);
 }
 
 /// The mixing stage's view of the group: each mesh's height span as printed, i.e. lifted by the
@@ -209,10 +209,17 @@ VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
 }
 
 std::string GCodeOutput::joined() const {
-    std::string text = header + start;
+    std::size_t size = header.size() + start.size() + suffix.size();
+    for (const std::string& chunk : layer_chunks)
+        size += chunk.size();
+    std::string text;
+    text.reserve(size);
+    text += header;
+    text += start;
     for (const std::string& chunk : layer_chunks)
         text += chunk;
-    return text + suffix;
+    text += suffix;
+    return text;
 }
 
 SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simplify) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <set>
 
+#include "common/ComputedAhead.h"
 #include "planning/Coasting.h"
 #include "planning/Cooling.h"
 #include "planning/LayerWipes.h"
@@ -384,13 +385,25 @@ PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, boo
     return planned;
 }
 
+/// Where travel on a model layer may go: its comb area and (travel_avoid_other_parts) the space
+/// around its parts. They depend on the layer's toolpaths alone, so they are made ahead of planning.
+struct LayerBoundaries {
+    CombBoundary comb, free;
+};
+
+LayerBoundaries layerBoundaries(const GroupToolpaths& toolpaths, std::size_t i, coord_um avoid_distance_um) {
+    return {CombBoundary(combArea(toolpaths, i)),
+            CombBoundary(freeSpace(partOutlines(toolpaths, i), avoid_distance_um))};
+}
+
 /// Model layer `i`: what each extruder prints on it (planExtruderOnLayer), the active one first.
-PlannedLayer planModelLayer(std::size_t i, bool after_first, PlanRun& run) {
+PlannedLayer planModelLayer(std::size_t i, const LayerBoundaries& boundaries, bool after_first,
+                            PlanRun& run) {
     const GroupToolpaths& toolpaths = run.toolpaths;
     const LayerZ& height = toolpaths.heights[i];
     const Point2 layer_start = run.state.head;
-    const CombBoundary comb(combArea(toolpaths, i));
-    const CombBoundary free(freeSpace(partOutlines(toolpaths, i), run.avoid_distance_um));
+    const CombBoundary& comb = boundaries.comb;
+    const CombBoundary& free = boundaries.free;
     const int layer_extruder = run.state.extruder;
     PlannedLayer planned = startLayer(static_cast<int>(i), height.print_z, height.print_z - height.bottom_z);
     for (int extruder : extruderOrder(toolpaths, i, run.state.extruder)) {
@@ -468,7 +481,7 @@ Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um) {
 }
 
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
-                    const std::vector<Settings>& extruders, PlannerState& state) {
+                    const std::vector<Settings>& extruders, PlannerState& state, int threads) {
     PrintPlan plan;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         plan.mesh_names.push_back(mesh.name);
@@ -491,8 +504,13 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
         for (const RaftLayer& layer : toolpaths.raft)
             plan.layers.push_back(planRaftLayer(layer, raft_comb, !plan.layers.empty(), run));
     }
-    for (std::size_t i = 0; i < toolpaths.heights.size(); ++i)
-        plan.layers.push_back(planModelLayer(i, !plan.layers.empty(), run));
+    constexpr std::size_t kLayersAhead = 32;
+    computeAhead<LayerBoundaries>(
+        toolpaths.heights.size(), threads, kLayersAhead,
+        [&](std::size_t i) { return layerBoundaries(toolpaths, i, run.avoid_distance_um); },
+        [&](std::size_t i, LayerBoundaries boundaries) {
+            plan.layers.push_back(planModelLayer(i, boundaries, !plan.layers.empty(), run));
+        });
     std::vector<CoastingParams> coasting;
     std::vector<LayerWipeParams> wipes;
     for (const Settings& train : extruders) {

@@ -29,8 +29,10 @@ struct PlannerState {
 
 /// One PlannedLayer per toolpaths.raft entry, then one per toolpaths.heights entry.
 /// retraction_combing "off" (or a layer without outlines) → every long travel retracts.
+/// `threads` > 1: the layers' comb areas and free space are made on that many helper threads while
+/// the layers are planned in order (the result does not depend on it).
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
-                    const std::vector<Settings>& extruders, PlannerState& state);
+                    const std::vector<Settings>& extruders, PlannerState& state, int threads = 1);
 
 /// The outlines of every mesh's sliced layer toolpaths.first_sliced_layer + layer, one after the
 /// other (microns).

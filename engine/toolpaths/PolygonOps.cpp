@@ -1,5 +1,6 @@
 #include "toolpaths/PolygonOps.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace mixengine {
@@ -37,6 +38,28 @@ void collectIslands(const ClipperLib::PolyNode& node, std::vector<Paths>& island
         }
         islands.push_back(std::move(island));
     }
+}
+
+__extension__ typedef __int128 Wide;
+
+/// True when Clipper keeps every vertex of the closed `loop` (it drops repeated vertices and those
+/// in line with their neighbours, spikes included); then `box` is set to the loop's bounds.
+bool keptWhole(const Path& loop, ClipperLib::IntRect& box) {
+    const std::size_t n = loop.size();
+    if (n < 3)
+        return false;
+    box = {loop[0].X, loop[0].Y, loop[0].X, loop[0].Y};
+    for (std::size_t i = 0; i < n; ++i) {
+        const Point2& a = loop[(i + n - 1) % n];
+        const Point2& p = loop[i];
+        const Point2& b = loop[(i + 1) % n];
+        const Wide cross = Wide(p.X - a.X) * Wide(b.Y - p.Y) - Wide(p.Y - a.Y) * Wide(b.X - p.X);
+        if (p == b || cross == 0)
+            return false;
+        box = {std::min(box.left, p.X), std::min(box.top, p.Y), std::max(box.right, p.X),
+               std::max(box.bottom, p.Y)};
+    }
+    return true;
 }
 
 }  // namespace
@@ -140,9 +163,22 @@ Paths removeSmallIslands(const Paths& polygons, double min_area_um2) {
 }
 
 ClipperLib::IntRect boundsOf(const Paths& polygons) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(polygons, ClipperLib::ptSubject, true);
-    return clipper.GetBounds();
+    bool any = false;
+    ClipperLib::IntRect box{0, 0, 0, 0};
+    for (const Path& loop : polygons) {
+        ClipperLib::IntRect b{0, 0, 0, 0};
+        if (!keptWhole(loop, b)) {
+            ClipperLib::Clipper clipper;
+            if (!clipper.AddPath(loop, ClipperLib::ptSubject, true))
+                continue;
+            b = clipper.GetBounds();
+        }
+        box = any ? ClipperLib::IntRect{std::min(box.left, b.left), std::min(box.top, b.top),
+                                        std::max(box.right, b.right), std::max(box.bottom, b.bottom)}
+                  : b;
+        any = true;
+    }
+    return box;
 }
 
 double lengthUm(const Path& path, bool closed) {

@@ -72,7 +72,11 @@ std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
     const int n = static_cast<int>(top_reference.size());
     const int roofing_layers = std::min(p.roofing_layers, p.top_layers);
     const std::vector<Paths> above = windowIntersections(top_reference, p.top_layers, threads);
-    const std::vector<Paths> below = windowIntersections(bottom_reference, p.bottom_layers, threads);
+    // Usually the same regions over the same number of layers (equal preshrink and layer counts).
+    const bool same_windows = p.bottom_layers == p.top_layers && bottom_reference == top_reference;
+    const std::vector<Paths> own_below =
+        same_windows ? std::vector<Paths>{} : windowIntersections(bottom_reference, p.bottom_layers, threads);
+    const std::vector<Paths>& below = same_windows ? above : own_below;
     const std::vector<Paths> roof_above = windowIntersections(roof_reference, roofing_layers, threads);
     std::vector<SkinAreas> result(inner_areas.size());
     parallelFor(inner_areas.size(), threads, [&](std::size_t index) {

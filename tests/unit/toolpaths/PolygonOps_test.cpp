@@ -70,6 +70,37 @@ TEST(PolygonOps, ClipLinesKeepsTheInsidePieces) {
     EXPECT_EQ(std::max(pieces[0][0].X, pieces[0][1].X), 10'000);
 }
 
+/// Clipper's own answer: the bounds of the edges it builds from the loops.
+ClipperLib::IntRect clipperBounds(const Paths& loops) {
+    ClipperLib::Clipper clipper;
+    clipper.AddPaths(loops, ClipperLib::ptSubject, true);
+    return clipper.GetBounds();
+}
+
+void expectSameBounds(const Paths& loops) {
+    const ClipperLib::IntRect ours = boundsOf(loops), theirs = clipperBounds(loops);
+    EXPECT_EQ(ours.left, theirs.left);
+    EXPECT_EQ(ours.top, theirs.top);
+    EXPECT_EQ(ours.right, theirs.right);
+    EXPECT_EQ(ours.bottom, theirs.bottom);
+}
+
+TEST(PolygonOps, BoundsAreClippersBoundsAlsoForSpikesLinesAndRepeats) {
+    const Path spike{{0, 0},       {1'000, 0},     {1'000, 500}, {3'000, 500},
+                     {1'000, 500}, {1'000, 1'000}, {0, 1'000}};
+    const Path line{{0, 0}, {2'000, 2'000}, {5'000, 5'000}};  // no area: Clipper leaves it out
+    const Path repeated{{-700, 0}, {0, 0}, {0, 0}, {0, -900}, {-700, -900}};
+    const Path collinear{{0, 0}, {500, 0}, {1'000, 0}, {1'000, 800}, {0, 800}};
+    expectSameBounds({spike});
+    EXPECT_EQ(boundsOf({spike}).right, 1'000);  // the spike's tip is not an edge Clipper keeps
+    expectSameBounds({line});
+    EXPECT_EQ(boundsOf({line}).right, 0);  // nothing left: all zero, as for no loops at all
+    expectSameBounds({repeated});
+    expectSameBounds({collinear});
+    expectSameBounds({line, square(3'000, 3'000, 1'000), repeated});
+    expectSameBounds({});
+}
+
 TEST(PolygonOps, LengthOfOpenAndClosedPaths) {
     const Path sq = square(0, 0, 1'000);
     EXPECT_EQ(lengthUm(sq, true), 4'000.0);
