@@ -1,10 +1,14 @@
 #include "mixing/MixingPass.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
+#include <optional>
 
 #include "mixing/ChamberDelay.h"
 #include "mixing/MixSchedule.h"
+#include "mixing/PaintSchedule.h"
+#include "mixing/RegionSplit.h"
 
 namespace mixengine {
 namespace {
@@ -14,6 +18,7 @@ struct ScopeSchedule {
     MeshMixing mixing;
     coord_um bottom_um = 0;
     coord_um top_um = 0;
+    MeshPaint paint;  ///< color mode, painted 3MF faces: regions and their solved colours
 };
 
 struct MixLess {
@@ -36,16 +41,67 @@ class MixTable {
     std::map<MixVector, int, MixLess> index_;
 };
 
-std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingOutput& output) {
+std::string ratioText(const MixVector& mix) {
+    std::string text;
+    for (int c = 0; c < mix.channels; ++c) {
+        char share[16];
+        std::snprintf(share, sizeof share, "%.4f", mix[c]);
+        text += (c ? ":" : "") + std::string(share);
+    }
+    return text;
+}
+
+/// The report of one mesh's solved colours, and the warning when one is out of gamut.
+void reportColors(const std::string& name, const MeshMixing& mixing, Log& log) {
+    for (const SolvedColor& color : mixing.colors) {
+        char de[32];
+        std::snprintf(de, sizeof de, "%.2f", color.solution.delta_e00);
+        log.info("mixing: '" + name + "': target " + hexOf(color.target) + " -> mix " +
+                 ratioText(color.solution.mix) + ", predicted " + hexOf(color.solution.predicted_rgb) +
+                 ", dE00 " + de);
+        if (color.solution.delta_e00 > kGamutWarningDeltaE00)
+            log.warning("mixing: '" + name + "': target colour " + hexOf(color.target) +
+                        " is outside the gamut of mixing_channel_colors; printing the nearest mixable " +
+                        hexOf(color.solution.predicted_rgb) + " (dE00 " + de + ")");
+    }
+}
+
+std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingOutput& output,
+                                         const PigmentModel* colors, Log& log) {
     std::vector<ScopeSchedule> schedules;
-    for (const MixingMesh& m : group.meshes)
-        schedules.push_back({parseMeshMixing(*m.settings, output), m.bottom_um, m.top_um});
+    for (const MixingMesh& m : group.meshes) {
+        ScopeSchedule& s = schedules.emplace_back();
+        s.mixing = parseMeshMixing(*m.settings, output, colors);
+        s.bottom_um = m.bottom_um;
+        s.top_um = m.top_um;
+        if (output.mode == MixingMode::Color && m.mesh) {
+            s.paint =
+                paintOf(*m.mesh, *m.settings, parseChannelColors(*group.settings, output.channels), *colors);
+            s.mixing.colors.insert(s.mixing.colors.end(), s.paint.colors.begin(), s.paint.colors.end());
+        }
+        reportColors(m.name, s.mixing, log);
+    }
     return schedules;
 }
 
-ScopeSchedule groupSchedule(const MixingGroup& group, const MixingOutput& output,
+/// Cuts the painted meshes' extrusions at region changes; the region of every step (−1: none).
+std::vector<std::vector<int>> paintedRegions(PrintPlan& plan, const MixingGroup& group,
+                                             const std::vector<ScopeSchedule>& meshes) {
+    std::vector<PaintedMesh> painted;
+    bool any = false;
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        painted.push_back({meshes[m].paint.regions.get(), group.meshes[m].lift_um});
+        any = any || painted.back().regions;
+    }
+    if (!any)
+        return {};
+    return splitAtRegions(plan, painted);
+}
+
+ScopeSchedule groupSchedule(const MixingGroup& group, const MixingOutput& output, const PigmentModel* colors,
                             const std::vector<ScopeSchedule>& meshes) {
-    ScopeSchedule all{parseMeshMixing(*group.settings, output), 0, 0};
+    ScopeSchedule all;
+    all.mixing = parseMeshMixing(*group.settings, output, colors);
     if (!meshes.empty()) {
         all.bottom_um = meshes.front().bottom_um;
         all.top_um = meshes.front().top_um;
@@ -75,9 +131,13 @@ struct GroupSchedules {
     ScopeSchedule nonmesh;
     MixVector raft;
 
-    MixVector mixOf(int scope, coord_um layer_z) const {
+    MixVector mixOf(int scope, int region, coord_um layer_z) const {
         if (scope == kRaftScope)
             return raft;
+        if (region >= 0)
+            return meshes[static_cast<std::size_t>(scope)]
+                .paint.colors[static_cast<std::size_t>(region)]
+                .solution.mix;
         const bool own = scope >= 0 && static_cast<std::size_t>(scope) < meshes.size();
         return scheduledMix(own ? meshes[static_cast<std::size_t>(scope)] : nonmesh, layer_z);
     }
@@ -90,28 +150,19 @@ void warnAboutDialect(const MixingOutput& output, const Settings& global, Log& l
             "the G-code is written with relative extrusion (M83)");
 }
 
-}  // namespace
-
-void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
-    const MixingOutput output = parseMixingOutput(*group.settings);
-    if (!output.enabled())
-        return;
-    GroupSchedules schedules;
-    schedules.meshes = meshSchedules(group, output);
-    schedules.nonmesh = groupSchedule(group, output, schedules.meshes);
-    schedules.raft = parseRaftMix(*group.settings, output);
-    const double chamber_mm3 = parseChamberVolumeMm3(*group.settings);
-    warnAboutDialect(output, *group.settings, log);
-
+/// The mix each extrusion should leave the nozzle with (index into plan.mixes), and its volume.
+void targetMixes(PrintPlan& plan, const GroupSchedules& schedules,
+                 const std::vector<std::vector<int>>& regions, std::vector<int>& target,
+                 std::vector<double>& volume) {
     MixTable table(plan.mixes);
-    std::vector<int> target;
-    std::vector<double> volume;
-    for (const PlannedLayer& layer : plan.layers) {
+    for (std::size_t l = 0; l < plan.layers.size(); ++l) {
+        const PlannedLayer& layer = plan.layers[l];
         int mesh = -1;
         Feature feature = Feature::Fill;
-        std::map<int, int>
-            layer_mix;  // scope (mesh index, -1 = non-mesh, -2 = raft) → mix index on this layer
-        for (const PlanStep& step : layer.steps) {
+        // (scope: mesh index, -1 = non-mesh, -2 = raft; painted region or -1) → mix index on this layer
+        std::map<std::pair<int, int>, int> layer_mix;
+        for (std::size_t i = 0; i < layer.steps.size(); ++i) {
+            const PlanStep& step = layer.steps[i];
             if (step.kind == PlanStep::Kind::SetMesh)
                 mesh = step.mesh_index;
             if (step.kind == PlanStep::Kind::SetFeature)
@@ -119,13 +170,37 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
             if (step.kind != PlanStep::Kind::Extrude)
                 continue;
             const int scope = isRaft(feature) ? kRaftScope : mesh;
-            auto [it, added] = layer_mix.emplace(scope, 0);
+            const int region = regions.empty() ? -1 : regions[l][i];
+            auto [it, added] = layer_mix.emplace(std::pair{scope, region}, 0);
             if (added)
-                it->second = table.indexOf(schedules.mixOf(scope, layer.z));
+                it->second = table.indexOf(schedules.mixOf(scope, region, layer.z));
             target.push_back(it->second);
             volume.push_back(step.volume_mm3);
         }
     }
+}
+
+}  // namespace
+
+void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
+    const MixingOutput output = parseMixingOutput(*group.settings);
+    if (!output.enabled())
+        return;
+    std::optional<PigmentModel> colors;  // the channel colours' pigment model, when colours are asked for
+    if (output.mode == MixingMode::Color || output.mode == MixingMode::Gradient)
+        colors.emplace(parseChannelColors(*group.settings, output.channels));
+    const PigmentModel* model = colors ? &*colors : nullptr;
+    GroupSchedules schedules;
+    schedules.meshes = meshSchedules(group, output, model, log);
+    schedules.nonmesh = groupSchedule(group, output, model, schedules.meshes);
+    schedules.raft = parseRaftMix(*group.settings, output);
+    const double chamber_mm3 = parseChamberVolumeMm3(*group.settings);
+    warnAboutDialect(output, *group.settings, log);
+
+    const std::vector<std::vector<int>> regions = paintedRegions(plan, group, schedules.meshes);
+    std::vector<int> target;
+    std::vector<double> volume;
+    targetMixes(plan, schedules, regions, target, volume);
     const std::vector<int> commanded = delayCompensated(target, volume, chamber_mm3);
     std::size_t next = 0;
     for (PlannedLayer& layer : plan.layers) {
