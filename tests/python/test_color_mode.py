@@ -1,6 +1,8 @@
 """Issue 18, parts 1 to 3 in `slice`: color mode (mixing_target_color), gradients between colours
 (mixing_gradient_colors) and painted 3MF regions (colorgroup, basematerials, PrusaSlicer and OrcaSlicer
 painted facets), read back from the G-code by the firmware models of mixing_gcode.py."""
+import math
+
 import pytest
 
 import helpers
@@ -170,3 +172,49 @@ def test_preview_draws_the_painted_halves(tmp_path):
     right = tuple(row[3 * (2 * width // 3): 3 * (2 * width // 3) + 3])
     assert left[0] > 200 and left[1] > 200 and left[2] < 60, left  # yellow (shaded by depth at most 35 %)
     assert right[2] > 150 and right[0] < 40 and right[1] < 40, right  # blue
+
+
+def delivered_share_b(path, chamber_mm3):
+    """(moves, commanded B shares, B shares leaving the nozzle by the plugin's plug-flow chamber model)."""
+    import sys
+
+    import numpy
+    sys.path.insert(0, str(helpers.REPO / "plugin"))
+    import MixColours
+
+    area = math.pi * (2.85 / 2) ** 2  # fdmprinter's material_diameter
+    extrusions = read_mixing_gcode(path, "eb_axes", channels=2).extrusions()
+    commanded = numpy.array([[a / m.total for a in m.amounts] for m in extrusions])
+    volume = numpy.array([m.total * area for m in extrusions])
+    return extrusions, commanded[:, 1], MixColours.delayedMixes(commanded, volume, chamber_mm3)[:, 1]
+
+
+def share_on_the_nozzle(extrusions, delivered):
+    """The fraction of the painted box's moves (those clearly in one half) whose delivered mix is the half's."""
+    painted = [i for i, m in enumerate(extrusions) if m.mesh.endswith("halves.3mf")]
+    xs = [x for i in painted for x in (extrusions[i].start[0], extrusions[i].end[0])]
+    centre = (min(xs) + max(xs)) / 2
+    want = {}
+    for i in painted:
+        lo, hi = sorted((extrusions[i].start[0], extrusions[i].end[0]))
+        if hi < centre - 0.01 or lo > centre + 0.01:
+            want[i] = 0.0 if hi < centre else 1.0
+    return sum(abs(delivered[i] - w) < 1e-3 for i, w in want.items()) / len(want), len(want)
+
+
+def test_chamber_delay_applies_to_painted_regions(tmp_path, report):
+    """With mixing_chamber_volume each region's mix is commanded early, so that what leaves the nozzle (the
+    plugin's plug-flow model of the chamber, MixColours.delayedMixes) is mostly the region's mix; without the
+    compensation far less of it would be. Per-move mixes cannot be exact where the pieces alternate faster
+    than the chamber empties (a move is not cut where the delayed boundary falls)."""
+    chamber_mm3 = 5.0
+    model = write_painted_box(tmp_path / "halves.3mf", "colorgroup")
+    common = ["mixing_mode=color", f"mixing_channel_colors={YELLOW_BLUE}", "mixing_paint_depth=30",
+              "mixing_target_color=#ffff00"]
+    shifted = helpers.slice_with(model, tmp_path / "c.gcode", *common, f"mixing_chamber_volume={chamber_mm3}")
+    plain = helpers.slice_with(model, tmp_path / "p.gcode", *common)
+    good, count = share_on_the_nozzle(*delivered_share_b(shifted, chamber_mm3)[::2])
+    baseline, _ = share_on_the_nozzle(*delivered_share_b(plain, chamber_mm3)[::2])
+    report(f"painted halves, {chamber_mm3} mm3 chamber: the region's mix leaves the nozzle on {100 * good:.1f} % of "
+           f"{count} moves with the compensation, {100 * baseline:.1f} % without")
+    assert good > 0.8 and good > baseline + 0.2
