@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
-#include <optional>
 
 #include "mixing/ChamberDelay.h"
 #include "mixing/MixSchedule.h"
@@ -74,7 +73,7 @@ std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingO
         s.mixing = parseMeshMixing(*m.settings, output, colors);
         s.bottom_um = m.bottom_um;
         s.top_um = m.top_um;
-        if (output.mode == MixingMode::Color && m.mesh) {
+        if (s.mixing.mode == MixingMode::Color && m.mesh) {
             s.paint =
                 paintOf(*m.mesh, *m.settings, parseChannelColors(*group.settings, output.channels), *colors);
             s.mixing.colors.insert(s.mixing.colors.end(), s.paint.colors.begin(), s.paint.colors.end());
@@ -186,10 +185,9 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     const MixingOutput output = parseMixingOutput(*group.settings);
     if (!output.enabled())
         return;
-    std::optional<PigmentModel> colors;  // the channel colours' pigment model, when colours are asked for
-    if (output.mode == MixingMode::Color || output.mode == MixingMode::Gradient)
-        colors.emplace(parseChannelColors(*group.settings, output.channels));
-    const PigmentModel* model = colors ? &*colors : nullptr;
+    // The channel colours' pigment model (a few milliseconds): any scope may ask for a colour.
+    const PigmentModel colors(parseChannelColors(*group.settings, output.channels));
+    const PigmentModel* model = &colors;
     GroupSchedules schedules;
     schedules.meshes = meshSchedules(group, output, model, log);
     schedules.nonmesh = groupSchedule(group, output, model, schedules.meshes);
