@@ -9,7 +9,7 @@ PACKAGES=(
   g++ cmake ninja-build pkg-config ccache clang-format make
   libprotobuf-dev protobuf-compiler libarcus-dev
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libpolyclipping-dev nlohmann-json3-dev lib3mf-dev libzip-dev zlib1g-dev libpng-dev libfftw3-dev
+  libpolyclipping-dev nlohmann-json3-dev lib3mf-dev libzip-dev zlib1g-dev libpng-dev libfftw3-dev liblcms2-dev
   libmimalloc-dev
   # tests
   libgtest-dev python3 python3-venv python3-pip

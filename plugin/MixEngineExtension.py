@@ -1,4 +1,4 @@
-"""The MixEngine extension: settings, backend location, the orientation menu item.
+"""The MixEngine extension: settings, backend location, the orientation and target colour menu items.
 
 Timeline in Cura 4.13:
   plugin load (register)       settings folder added to the resource search path (by __init__.py),
@@ -22,6 +22,8 @@ from .MixPreview import MixPreview
 from .OrientAction import OrientAction
 from .SettingsInjector import SettingsInjector
 from .SettingsNotice import SettingsNotice
+from .TargetColourPicker import ITEM as COLOUR_ITEM
+from .TargetColourPicker import TargetColourPicker
 
 PLUGIN_ID = "MixEngine"
 VISIBLE = "general/visible_settings"
@@ -50,6 +52,8 @@ class MixEngineExtension(Extension):
         self.notice = SettingsNotice(app, NotHonoured.load(settings_dir), self._slicesWithMixEngine)
         self.setMenuName("MixEngine")
         self.addMenuItem(ORIENT_ITEM, self.orient.run)
+        self.colour_picker = TargetColourPicker(app)
+        self.addMenuItem(COLOUR_ITEM, self.colour_picker.run)
         app.initializationFinished.connect(self._onInitializationFinished)
         app.applicationShuttingDown.connect(self._onShutdown)
 

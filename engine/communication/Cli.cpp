@@ -22,7 +22,7 @@ int runHelp(const Words& words, std::ostream& out) {
     const std::optional<std::string> usage = commandHelp(words.front());
     if (!usage)
         throw InputError("help: unknown command '" + words.front() +
-                         "' (commands: help, slice, connect, layers, settings, demo, orient)");
+                         "' (commands: help, slice, connect, layers, settings, demo, orient, mix)");
     out << *usage;
     return 0;
 }
@@ -56,8 +56,10 @@ int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
         return runConnectCommand(words, out, err);
     if (command == "orient")
         return runOrientCommand(words, out, err);
+    if (command == "mix")
+        return runMixCommand(words, out, err);
     throw InputError("unknown command '" + command +
-                     "' (commands: help, slice, connect, layers, settings, demo, orient)");
+                     "' (commands: help, slice, connect, layers, settings, demo, orient, mix)");
 }
 
 }  // namespace mixengine

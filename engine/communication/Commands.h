@@ -15,5 +15,6 @@ int runSettingsCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runDemoCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runConnectCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runOrientCommand(const Words& args, std::ostream& out, std::ostream& err);
+int runMixCommand(const Words& args, std::ostream& out, std::ostream& err);
 
 }  // namespace mixengine

@@ -33,7 +33,8 @@ constexpr std::string_view kSlice =
                 Without -o the G-code goes to standard output.
   --dump-layers <dir>  Also write every layer's outlines as JSON and SVG into <dir>.
   --preview <file.png>  Also write a side view of the print coloured by the filament mix (colour mixing:
-                -s mixing_mode=gradient|dual, mixing_* settings; seed aliases colorMode, colorA, colorB).
+                -s mixing_mode=gradient|dual|color, mixing_* settings; seed aliases colorMode, colorA, colorB;
+                color mode and mixing_gradient_colors draw the colours the pigment model predicts).
   --profiles    Stack Cura's profiles under the user's values, as Cura does: the machine's default
                 variant (nozzle), material, quality and intent. Implied by any of:
   --variant <name>  --material <name>  --quality <name>  --intent <name>
@@ -89,17 +90,27 @@ constexpr std::string_view kOrient =
 	optimise (exit 0). In `slice`, -s dual_orientation_optimize=true runs the same pass.
 )";
 
+constexpr std::string_view kMix =
+    R"(mixengine mix --colors "#rrggbb,#rrggbb[,...]" (--target "#rrggbb" | --ratio a:b[:...])
+	Colour mixing without slicing: the filament colours (2 to 5, white and black included) are
+	mixed in a pigment model (Kubelka-Munk over reflectance spectra). --target prints the ratios
+	that print the colour nearest to the target, the predicted colour and its CIEDE2000 difference
+	dE00 (above 2: outside the mixable gamut, the nearest mixable colour); --ratio prints the colour
+	a mix is predicted to print. In `slice`: -s mixing_mode=color -s mixing_target_color=#rrggbb.
+)";
+
 constexpr std::string_view kExitCodes =
     "Exit codes: 0 success, 1 bad input (one line on stderr names the file, key or value), 2 internal "
     "error.\n";
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 7> kCommands{{{"help", kHelp},
+constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kCommands{{{"help", kHelp},
                                                                                   {"slice", kSlice},
                                                                                   {"connect", kConnect},
                                                                                   {"layers", kLayers},
                                                                                   {"settings", kSettings},
                                                                                   {"demo", kDemo},
-                                                                                  {"orient", kOrient}}};
+                                                                                  {"orient", kOrient},
+                                                                                  {"mix", kMix}}};
 
 }  // namespace
 

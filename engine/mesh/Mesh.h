@@ -29,6 +29,12 @@ struct Mesh {
     std::string name;  ///< shown in ;MESH: markers (CLI: the -l path; Cura: the object's name)
     std::vector<Point3> vertices;
     std::vector<Face> faces;
+    /// Painted colour of each face (3MF colour/material properties, PrusaSlicer/OrcaSlicer painted
+    /// facets): 0 = not painted, kPaintedRgb | 0xRRGGBB (a colour), or kPaintedExtruder | n
+    /// (painted with extruder n ≥ 1 in PrusaSlicer/OrcaSlicer). Empty when no face is painted.
+    std::vector<std::uint32_t> face_colors;
+    static constexpr std::uint32_t kPaintedRgb = 0x01000000;
+    static constexpr std::uint32_t kPaintedExtruder = 0x02000000;
 
     AABB3 bounds() const;
     /// Moves every vertex by (dx, dy, dz) microns.

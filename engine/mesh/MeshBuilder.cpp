@@ -56,7 +56,7 @@ class MeshAssembler {
     /// Adds soup triangles [first, first + count), count <= kBatch.
     void addBatch(std::size_t first, std::size_t count) {
         quantiseBatch(first, count);
-        const std::size_t candidates = weldBatch(count);
+        const std::size_t candidates = weldBatch(first, count);
         keepNewFaces(candidates);
     }
 
@@ -80,7 +80,7 @@ class MeshAssembler {
     }
 
     /// Welds the corners of non-degenerate triangles; returns how many candidate faces it made.
-    std::size_t weldBatch(std::size_t count) {
+    std::size_t weldBatch(std::size_t first, std::size_t count) {
         std::size_t made = 0;
         for (std::size_t i = 0; i < count; ++i) {
             const Point3* p = &points_[3 * i];
@@ -89,6 +89,7 @@ class MeshAssembler {
                 continue;
             }
             candidates_[made] = Face{{welder_.indexOf(p[0]), welder_.indexOf(p[1]), welder_.indexOf(p[2])}};
+            sources_[made] = first + i;
             seen_.prefetch(candidates_[made]);
             ++made;
         }
@@ -99,6 +100,8 @@ class MeshAssembler {
         for (std::size_t i = 0; i < candidates; ++i) {
             if (seen_.insert(candidates_[i])) {
                 mesh_.faces.push_back(candidates_[i]);
+                if (!soup_.colors.empty())
+                    mesh_.face_colors.push_back(soup_.colors[sources_[i]]);
             } else {
                 ++stats_.duplicates_dropped;
             }
@@ -114,6 +117,7 @@ class MeshAssembler {
     MeshBuildStats stats_;
     std::array<Point3, 3 * kBatch> points_;
     std::array<Face, kBatch> candidates_;
+    std::array<std::size_t, kBatch> sources_;  ///< soup triangle of each candidate (its colour)
 };
 
 }  // namespace

@@ -4,9 +4,9 @@
 // Steps: apply the 3x3 transform (mesh_rotation_matrix, may scale), quantise to microns
 // (llround of mm * 1000), weld vertices that share integer coordinates, drop degenerate faces (two
 // equal corners or zero area in integer space) and duplicate faces (the same three vertices in any
-// order or winding). Counts of what was dropped are returned in MeshBuildStats; the caller turns
-// non-zero counts into warnings. Inconsistent winding and small gaps are left for the slicer, which
-// does not depend on them.
+// order or winding); a painted soup's colours follow the faces kept (Mesh::face_colors). Counts of what was
+// dropped are returned in MeshBuildStats; the caller turns non-zero counts into warnings. Inconsistent
+// winding and small gaps are left for the slicer, which does not depend on them.
 //
 // Guarantees: every vertex is used by a kept face; vertices are numbered in order of first use and
 // faces keep the soup's order, so the result is deterministic. O(n) time (hash tables, no

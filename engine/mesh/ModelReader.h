@@ -10,6 +10,7 @@
 //   - STL gives one part; OBJ gives one part per `o`/`g` group that has faces; 3MF one per object
 //     (build items with their transforms applied).
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,6 +22,8 @@ namespace mixengine {
 struct TriangleSoup {
     std::string name;                            ///< part name (file stem, OBJ group or 3MF object name)
     std::vector<std::array<Vec3, 3>> triangles;  ///< millimetres
+    /// Per triangle (3MF only): 0 = not painted, else as Mesh::face_colors; empty = none painted.
+    std::vector<std::uint32_t> colors;
 };
 
 std::vector<TriangleSoup> readModelFile(const std::filesystem::path& file,

@@ -6,7 +6,9 @@
 
 #include "mesh/Affine3.h"
 #include "mesh/Lib3mfHandle.h"
+#include "mesh/Mesh.h"
 #include "mesh/MessageText.h"
+#include "mesh/ThreeMfPaint.h"
 
 namespace mixengine {
 
@@ -54,6 +56,8 @@ class ThreeMfLoader {
     void appendObject(NMR::PLib3MFBase* object, const Affine3& to_mm, int depth, TriangleSoup& soup);
     void appendComponents(NMR::PLib3MFBase* object, const Affine3& to_mm, int depth, TriangleSoup& soup);
     void appendMesh(NMR::PLib3MFBase* mesh, const Affine3& to_mm, TriangleSoup& soup);
+    std::vector<std::uint32_t> meshColors(NMR::PLib3MFBase* mesh, DWORD triangle_count);
+    std::uint32_t triangleColor(NMR::PLib3MFBase* handler, DWORD triangle);
     std::string objectName(NMR::PLib3MFBase* object, std::size_t item_number) const;
     [[noreturn]] void fail(const std::string& defect) const {
         throw InputError(call_.label() + ": " + defect);
@@ -62,9 +66,63 @@ class ThreeMfLoader {
     Lib3mfCaller call_;
     std::string stem_;  ///< names objects that have no name: "<stem>_<build item number>"
     Lib3mfHandle model_;
-    std::vector<NMR::MODELMESHVERTEX> vertices_;     ///< reused between mesh objects
-    std::vector<NMR::MODELMESHTRIANGLE> triangles_;  ///< reused between mesh objects
+    std::vector<NMR::MODELMESHVERTEX> vertices_;         ///< reused between mesh objects
+    std::vector<NMR::MODELMESHTRIANGLE> triangles_;      ///< reused between mesh objects
+    std::map<std::uint32_t, std::vector<int>> painted_;  ///< painted facets by object id (ThreeMfPaint.h)
 };
+
+std::uint32_t ThreeMfLoader::triangleColor(NMR::PLib3MFBase* handler, DWORD triangle) {
+    NMR::eModelPropertyType type = NMR::MODELPROPERTYTYPE_NONE;
+    if (NMR::lib3mf_propertyhandler_getpropertytype(handler, triangle, &type) != 0)
+        return 0;
+    if (type == NMR::MODELPROPERTYTYPE_COLOR) {
+        NMR::MODELMESH_TRIANGLECOLOR_SRGB color{};
+        if (NMR::lib3mf_propertyhandler_getcolor(handler, triangle, &color) != 0)
+            return 0;
+        const NMR::MODELMESHCOLOR_SRGB& c = color.m_Colors[0];  // a facet's colour: its first corner's
+        return Mesh::kPaintedRgb | (std::uint32_t{c.m_Red} << 16) | (std::uint32_t{c.m_Green} << 8) |
+               c.m_Blue;
+    }
+    if (type != NMR::MODELPROPERTYTYPE_BASEMATERIALS)
+        return 0;
+    DWORD group = 0;
+    DWORD index = 0;
+    if (NMR::lib3mf_propertyhandler_getbasematerial(handler, triangle, &group, &index) != 0 || group == 0)
+        return 0;
+    Lib3mfHandle materials;
+    BYTE r = 0, g = 0, b = 0, a = 0;
+    if (NMR::lib3mf_model_getbasematerialbyid(model_.get(), group, materials.out()) != 0 ||
+        NMR::lib3mf_basematerial_getdisplaycolor(materials.get(), index, &r, &g, &b, &a) != 0)
+        return 0;
+    return Mesh::kPaintedRgb | (std::uint32_t{r} << 16) | (std::uint32_t{g} << 8) | b;
+}
+
+/// The painted colour of each triangle: its colour or base material property, else the extruder
+/// painted on it in PrusaSlicer/OrcaSlicer (Mesh::kPaintedExtruder | n); empty when none is painted.
+std::vector<std::uint32_t> ThreeMfLoader::meshColors(NMR::PLib3MFBase* mesh, DWORD triangle_count) {
+    std::vector<std::uint32_t> colors(triangle_count, 0);
+    bool any = false;
+    Lib3mfHandle handler;
+    if (NMR::lib3mf_meshobject_createpropertyhandler(mesh, handler.out()) == 0) {
+        for (DWORD t = 0; t < triangle_count; ++t) {
+            colors[t] = triangleColor(handler.get(), t);
+            any = any || colors[t] != 0;
+        }
+    }
+    DWORD id = 0;
+    const auto painted =
+        NMR::lib3mf_resource_getresourceid(mesh, &id) == 0 ? painted_.find(id) : painted_.end();
+    if (!any && painted != painted_.end() && painted->second.size() == triangle_count) {
+        for (DWORD t = 0; t < triangle_count; ++t) {
+            const int extruder = painted->second[t];
+            colors[t] = extruder > 0 ? Mesh::kPaintedExtruder | static_cast<std::uint32_t>(extruder) : 0;
+            any = any || colors[t] != 0;
+        }
+    }
+    if (!any)
+        colors.clear();
+    return colors;
+}
 
 Affine3 ThreeMfLoader::open(const std::filesystem::path& file, std::vector<std::string>& warnings) {
     call_.check(NMR::lib3mf_createmodel(model_.out()), nullptr, "creating a model");
@@ -127,6 +185,12 @@ void ThreeMfLoader::appendMesh(NMR::PLib3MFBase* mesh, const Affine3& to_mm, Tri
                 "reading vertices");
     call_.check(NMR::lib3mf_meshobject_gettriangleindices(mesh, triangles_.data(), triangle_count, nullptr),
                 mesh, "reading triangles");
+    std::vector<std::uint32_t> colors = meshColors(mesh, triangle_count);
+    if (!colors.empty() || !soup.colors.empty()) {
+        soup.colors.resize(soup.triangles.size(), 0);
+        colors.resize(triangle_count, 0);
+        soup.colors.insert(soup.colors.end(), colors.begin(), colors.end());
+    }
     soup.triangles.reserve(soup.triangles.size() + triangle_count);
     for (const NMR::MODELMESHTRIANGLE& t : triangles_) {
         std::array<Vec3, 3>& out = soup.triangles.emplace_back();
@@ -194,6 +258,7 @@ TriangleSoup ThreeMfLoader::readBuildItem(NMR::PLib3MFBase* item, std::size_t it
 std::vector<TriangleSoup> ThreeMfLoader::load(const std::filesystem::path& file,
                                               std::vector<std::string>& warnings) {
     const Affine3 to_mm = open(file, warnings);
+    painted_ = readPaintedFacets(file);
     Lib3mfHandle items;
     call_.check(NMR::lib3mf_model_getbuilditems(model_.get(), items.out()), model_.get(),
                 "reading the build");
@@ -209,6 +274,8 @@ std::vector<TriangleSoup> ThreeMfLoader::load(const std::filesystem::path& file,
             warnings.push_back(call_.label() + ": build item '" + soup.name + "' has no triangles; skipped");
             continue;
         }
+        if (!soup.colors.empty())
+            soup.colors.resize(soup.triangles.size(), 0);
         parts.push_back(std::move(soup));
     }
     if (parts.empty()) {

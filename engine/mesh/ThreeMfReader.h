@@ -4,8 +4,10 @@
 // One triangle soup per build item, named after the item's object (or "<file stem>_<n>" for the
 // n-th build item when its object has no name). Component objects are flattened with their component
 // transforms; the build item's transform is applied on top, then the model's unit attribute is converted to
-// millimetres. lib3mf's reader warnings are passed on. InputError (naming the file): unreadable archive or
-// model, non-finite coordinates, components nested deeper than 32 levels, no triangles at all.
+// millimetres. Painted triangles (colorgroup colours, basematerials display colours, PrusaSlicer/OrcaSlicer
+// painted facets: mesh/ThreeMfPaint.h) give TriangleSoup::colors. lib3mf's reader warnings are passed on.
+// InputError (naming the file): unreadable archive or model, non-finite coordinates, components nested deeper
+// than 32 levels, no triangles at all.
 #include <filesystem>
 #include <string>
 #include <vector>

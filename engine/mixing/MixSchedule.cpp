@@ -21,7 +21,7 @@ MixVector mixAtHeight(const std::vector<GradientStop>& stops, double height) {
 }
 
 MixVector targetMix(const MeshMixing& mixing, double layer_top_mm, double mesh_height_mm) {
-    if (mixing.mode == MixingMode::Dual)
+    if (mixing.mode == MixingMode::Dual || mixing.mode == MixingMode::Color)
         return mixing.fixed;
     double height = layer_top_mm;
     if (mixing.unit == HeightUnit::Percent)

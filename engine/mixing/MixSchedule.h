@@ -17,7 +17,7 @@ namespace mixengine {
 MixVector mixAtHeight(const std::vector<GradientStop>& stops, double height);
 
 /// The mix of a layer whose top is `layer_top_mm` above the mesh's bottom, for a mesh
-/// `mesh_height_mm` tall: the fixed mix in dual mode, the gradient (in percent of the mesh
+/// `mesh_height_mm` tall: the fixed mix in dual and color mode, the gradient (in percent of the mesh
 /// height, or in mm) in gradient mode.
 MixVector targetMix(const MeshMixing& mixing, double layer_top_mm, double mesh_height_mm);
 

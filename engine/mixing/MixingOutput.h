@@ -11,6 +11,7 @@ enum class MixingMode {
     Single,    ///< one filament: the ordinary E axis, no mixing output at all
     Dual,      ///< a fixed mix per mesh (mixing_ratio)
     Gradient,  ///< the mix follows the height (mixing_gradient_*)
+    Color,     ///< a fixed mix per mesh, solved from its mixing_target_color (mixing/ColorSolver.h)
 };
 
 enum class MixDialectKind {

@@ -7,13 +7,22 @@
 // RaftBase/RaftInterface/RaftSurface extrusions) is printed with the group's mixing_raft_ratio (filament A by
 // default), the support (normal and tree, body and interface, Support/SupportInterface) and the draft shield
 // (DraftShield) with its mixing_support_ratio (filament A by default). The chamber-delay shift
-// (mixing/ChamberDelay.h) is applied last, so the model's first colour is primed through the raft. In single
-// mode (the default) the plan is left untouched: no mixes, every step's mix stays -1. Bad mixing settings
-// throw InputError (mixing/MixingSettings.h) before anything is written.
+// (mixing/ChamberDelay.h) is applied last, so the model's first colour is primed through the raft.
+// In color mode every mesh prints the mix solved for its mixing_target_color (and gradient mode
+// solves mixing_gradient_colors); each solved colour is reported (info: target, mix, predicted
+// colour, ΔE00), and one warning line names a mesh whose target is outside the mixable gamut
+// (ΔE00 above kGamutWarningDeltaE00), which is printed in the nearest mixable colour. A mesh
+// with painted faces (3MF) gets painted regions (mixing/PaintSchedule.h): its extrusions are cut
+// where the region changes (mixing/RegionSplit.h) and each piece takes its region's mix; the
+// chamber delay then shifts all of them alike.
+// In single mode (the default) the plan is left untouched: no mixes, every step's mix stays -1.
+// Bad mixing settings throw InputError (mixing/MixingSettings.h) before anything is written.
+#include <string>
 #include <vector>
 
 #include "common/Log.h"
 #include "geometry/Point.h"
+#include "mesh/Mesh.h"
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
 
@@ -23,8 +32,11 @@ namespace mixengine {
 /// the plate (microns, the same frame as PlannedLayer::z).
 struct MixingMesh {
     const Settings* settings = nullptr;
+    std::string name;  ///< named in colour reports and warnings
     coord_um bottom_um = 0;
     coord_um top_um = 0;
+    const Mesh* mesh = nullptr;  ///< as placed (without the raft's lift); its painted faces make regions
+    coord_um lift_um = 0;        ///< how far the printed layers are lifted above the mesh's frame (raft)
 };
 
 /// What the mixing stage needs of a mesh group. The pointed-to settings outlive the call.

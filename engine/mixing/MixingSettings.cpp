@@ -49,7 +49,9 @@ const char* defaultText(std::string_view key) {
         return "0";
     if (key == "mixing_channel_colors")
         return "#f2c500,#e0408a,#00a3e0,#262626,#f4f4f4";
-    return "";  // mixing_gradient_stops
+    if (key == "mixing_target_color")
+        return "#808080";
+    return "";  // mixing_gradient_stops, mixing_gradient_colors
 }
 
 std::string textOf(const Settings& s, std::string_view key) {
@@ -85,7 +87,9 @@ MixingMode parseMode(const Settings& s) {
         return MixingMode::Dual;
     if (text == "gradient")
         return MixingMode::Gradient;
-    fail("mixing_mode", "unknown mode '" + text + "' (single, dual or gradient)");
+    if (text == "color")
+        return MixingMode::Color;
+    fail("mixing_mode", "unknown mode '" + text + "' (single, dual, gradient or color)");
 }
 
 MixDialectKind parseDialect(const Settings& s) {
@@ -113,6 +117,8 @@ void checkChannels(const Settings& s, const MixingOutput& out) {
         fail("mixing_channels", std::to_string(out.channels) + " channels, but the printer has " +
                                     std::to_string(extruders) + " (machine_extruder_count)");
     const bool two_axes = out.dialect == MixDialectKind::EbAxes || out.dialect == MixDialectKind::KlipperB;
+    if (out.mode == MixingMode::Color && out.channels < 2)
+        fail("mixing_channels", "color mode mixes 2 to 5 channels, not " + std::to_string(out.channels));
     if (two_axes && out.channels != 2)
         fail("mixing_channels", std::to_string(out.channels) + " channels, but dialect " +
                                     dialectName(out.dialect) + " drives exactly 2 (E and B)");
@@ -218,7 +224,7 @@ std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_v
     return stops;
 }
 
-MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output) {
+MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, const PigmentModel* colors) {
     MeshMixing m;
     m.mode = output.mode;
     if (!output.enabled())
@@ -241,12 +247,64 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output) {
         m.fixed = parseMixRatio("mixing_ratio", textOf(scope, "mixing_ratio"), output.channels);
         return m;
     }
+    if (m.mode == MixingMode::Color) {
+        if (!colors)
+            throw InternalError("color mode needs the pigment model of mixing_channel_colors");
+        m.colors.push_back(parseTargetColor(scope, *colors));
+        m.fixed = m.colors.back().solution.mix;
+        return m;
+    }
+    const std::string color_stops = textOf(scope, "mixing_gradient_colors");
+    if (!trimmed(color_stops).empty() && colors) {
+        m.stops = parseGradientColors(color_stops, *colors, m.colors);
+        return m;
+    }
     const std::string stops = textOf(scope, "mixing_gradient_stops");
     m.stops = trimmed(stops).empty() ? twoStopGradient(scope, output.channels)
                                      : parseGradientStops("mixing_gradient_stops", stops, output.channels);
     if (m.stops.empty())
         fail("mixing_gradient_stops", "no stop in '" + stops + "'");
     return m;
+}
+
+SolvedColor parseTargetColor(const Settings& scope, const PigmentModel& colors) {
+    SolvedColor solved;
+    solved.target = parseHexColor("setting 'mixing_target_color'", textOf(scope, "mixing_target_color"));
+    solved.solution = solveColor(colors, solved.target);
+    return solved;
+}
+
+std::vector<GradientStop> parseGradientColors(std::string_view text, const PigmentModel& colors,
+                                              std::vector<SolvedColor>& solved) {
+    constexpr std::string_view kKey = "mixing_gradient_colors";
+    std::vector<GradientStop> stops;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find(';', start);
+        if (end == std::string_view::npos)
+            end = text.size();
+        const std::string item = trimmed(text.substr(start, end - start));
+        start = end + 1;
+        if (item.empty())
+            continue;
+        const std::size_t eq = item.find('=');
+        if (eq == std::string::npos)
+            fail(kKey, "stop '" + item + "' is not height=#rrggbb (e.g. 50=#ff8000)");
+        GradientStop stop;
+        stop.height = parseReal(kKey, trimmed(item.substr(0, eq)));
+        if (!stops.empty() && stop.height < stops.back().height)
+            fail(kKey, "heights must not decrease (" + shown(stop.height) + " after " +
+                           shown(stops.back().height) + ")");
+        SolvedColor color;
+        color.target = parseHexColor("setting 'mixing_gradient_colors'", item.substr(eq + 1));
+        color.solution = solveColor(colors, color.target);
+        stop.mix = color.solution.mix;
+        stops.push_back(stop);
+        solved.push_back(color);
+    }
+    if (stops.empty())
+        fail(kKey, "no stop in '" + std::string(text) + "'");
+    return stops;
 }
 
 MixVector parseRaftMix(const Settings& global, const MixingOutput& output) {

@@ -1,7 +1,7 @@
 #pragma once
 // Parsing and validation of the `mixing` settings (settings/mixengine/mixing.def.json). Every
 // key has a default in code, so the engine behaves (single mode) when the definition file is
-// absent. Values are checked only when mixing is on (mixing_mode dual or gradient); a bad value
+// absent. Values are checked only when mixing is on (mixing_mode dual, gradient or color); a bad value
 // is an InputError of one line naming the setting, thrown before any G-code is written.
 //
 // Formats:
@@ -15,12 +15,20 @@
 //                           = ratios; heights must not decrease. Empty: the seed's two-stop
 //                           gradient from mixing_gradient_start (A only) to mixing_gradient_end
 //                           (B only).
-//   mixing_channel_colors   "#f2c500,#e0408a,…" — one sRGB colour per channel (preview only).
+//   mixing_channel_colors   "#f2c500,#e0408a,…" — one sRGB colour per channel: the preview, and
+//                           the filament colours that colour mode and gradient colours mix.
+//   mixing_target_color     "#ff8000" — color mode: the colour a mesh is printed in (solved to a
+//                           mix by mixing/ColorSolver.h).
+//   mixing_gradient_colors  "0=#ff0000; 100=#0000ff" — gradient mode: stops given as colours
+//                           (height=#rrggbb; heights as mixing_gradient_stops), each solved to a
+//                           mix; between stops the mixes are interpolated (in the mixing model,
+//                           not in RGB). Takes precedence over mixing_gradient_stops when set.
 #include <array>
 #include <cstdint>
 #include <string_view>
 #include <vector>
 
+#include "mixing/ColorSolver.h"
 #include "mixing/MixingOutput.h"
 #include "planning/MixVector.h"
 #include "settings/Settings.h"
@@ -37,15 +45,20 @@ struct GradientStop {
     MixVector mix;
 };
 
+/// A colour asked for (mixing_target_color or a gradient colour stop) and the mix solved for it.
+struct SolvedColor {
+    Rgb target{};
+    ColorSolution solution;
+};
+
 /// How the extrusions of one mesh (or the non-mesh extrusions, from the group's view) are mixed.
 struct MeshMixing {
     MixingMode mode = MixingMode::Single;
     HeightUnit unit = HeightUnit::Percent;
     std::vector<GradientStop> stops;  ///< gradient mode: at least one, heights non-decreasing
-    MixVector fixed;                  ///< dual mode
+    MixVector fixed;                  ///< dual and color mode
+    std::vector<SolvedColor> colors;  ///< color mode: the target; gradient colours: one per stop
 };
-
-using Rgb = std::array<std::uint8_t, 3>;
 
 /// The printer-level part (mode, dialect, channels, resolution, tool). Checks the channel count
 /// against machine_extruder_count when the printer declares more than one extruder train.
@@ -57,8 +70,17 @@ bool relativeExtrusion(const Settings& global);
 /// One scope's schedule (mesh view, or the group's view for non-mesh extrusions). With mixing on
 /// (the print's mixing_mode), a scope's own mixing_mode picks its kind of schedule: a model (a
 /// cutting mesh's region, an infill mesh) may be dual while the print is a gradient, or the reverse;
-/// `single` there means the first filament alone.
-MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output);
+/// `single` there means the first filament alone. `colors` solves target colours (color mode,
+/// mixing_gradient_colors); without it they are an error.
+MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output,
+                           const PigmentModel* colors = nullptr);
+
+/// mixing_target_color of `scope`, solved with `colors`.
+SolvedColor parseTargetColor(const Settings& scope, const PigmentModel& colors);
+
+/// mixing_gradient_colors "h=#rrggbb; …" → stops with solved mixes (empty text: no stops).
+std::vector<GradientStop> parseGradientColors(std::string_view text, const PigmentModel& colors,
+                                              std::vector<SolvedColor>& solved);
 
 /// mixing_raft_ratio: the mix the raft is printed with (mixing on).
 MixVector parseRaftMix(const Settings& global, const MixingOutput& output);

@@ -63,15 +63,25 @@ Rgb mixColor(const MixVector& mix, const std::vector<Rgb>& channel_colors) {
 SidePreview::SidePreview(std::vector<Rgb> channel_colors, int max_size_px)
     : colors_(std::move(channel_colors)), max_size_px_(max_size_px) {}
 
+SidePreview::SidePreview(std::shared_ptr<const PigmentModel> pigments, std::vector<Rgb> channel_colors,
+                         int max_size_px)
+    : colors_(std::move(channel_colors)), pigments_(std::move(pigments)), max_size_px_(max_size_px) {}
+
 SidePreview SidePreview::forSettings(const Settings& global) {
     const MixingOutput output = parseMixingOutput(global);
-    return SidePreview(parseChannelColors(global, output.enabled() ? output.channels : 1));
+    std::vector<Rgb> colors = parseChannelColors(global, output.enabled() ? output.channels : 1);
+    const bool gradient_colors = output.mode == MixingMode::Gradient &&
+                                 global.has("mixing_gradient_colors") &&
+                                 global.text("mixing_gradient_colors").find('#') != std::string::npos;
+    if (output.mode == MixingMode::Color || gradient_colors)
+        return SidePreview(std::make_shared<const PigmentModel>(colors), colors);
+    return SidePreview(std::move(colors));
 }
 
 void SidePreview::add(const PrintPlan& plan) {
     std::vector<Rgb> mix_colors;
     for (const MixVector& mix : plan.mixes)
-        mix_colors.push_back(mixColor(mix, colors_));
+        mix_colors.push_back(pigments_ ? pigments_->predictRgb(mix) : mixColor(mix, colors_));
     const Rgb single = colors_.empty() ? Rgb{128, 128, 128} : colors_.front();
     Point2 head{0, 0};
     coord_um below = 0;

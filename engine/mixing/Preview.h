@@ -4,10 +4,15 @@
 // gradient can be checked before printing. The channel colours (mixing_channel_colors) are
 // mixed in linear light; the extrusion nearest to the viewer wins, and deeper ones are drawn a
 // little darker so that the object's shape stays readable. Single mode draws channel A's colour.
+// When the print asks for colours (mixing_mode color, or mixing_gradient_colors in the global
+// settings) the mixes are drawn in the colour the pigment model predicts (mixing/KubelkaMunk.h),
+// the colour the solver aimed at, instead of the linear-light blend.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "mixing/KubelkaMunk.h"
 #include "mixing/MixingSettings.h"
 #include "planning/LayerPlan.h"
 
@@ -19,6 +24,9 @@ Rgb mixColor(const MixVector& mix, const std::vector<Rgb>& channel_colors);
 class SidePreview {
   public:
     explicit SidePreview(std::vector<Rgb> channel_colors, int max_size_px = 800);
+    /// Mixes drawn in the colours `pigments` predicts.
+    SidePreview(std::shared_ptr<const PigmentModel> pigments, std::vector<Rgb> channel_colors,
+                int max_size_px = 800);
     /// Colours from `global` (mixing_channel_colors, as many as mixing channels).
     static SidePreview forSettings(const Settings& global);
 
@@ -39,6 +47,7 @@ class SidePreview {
         Rgb color;
     };
     std::vector<Rgb> colors_;
+    std::shared_ptr<const PigmentModel> pigments_;  ///< null: linear-light blend (mixColor)
     int max_size_px_;
     std::vector<Band> bands_;
 };

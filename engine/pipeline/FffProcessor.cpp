@@ -106,7 +106,7 @@ MixingGroup mixingInput(const Scene& scene, const SceneGroup& group) {
     const coord_um lift = raftLayout(group.settings, &scene.machine.extruders).modelLiftUm(1);
     for (const SceneMesh& m : group.meshes) {
         const AABB3 box = m.mesh.bounds();
-        input.meshes.push_back({&m.settings, box.min.z + lift, box.max.z + lift});
+        input.meshes.push_back({&m.settings, m.mesh.name, box.min.z + lift, box.max.z + lift, &m.mesh, lift});
     }
     return input;
 }

@@ -33,6 +33,9 @@ class Move:
     xy: bool
     amounts: list  # filament moved per channel on this line (mm), retractions negative
     feature: str = ""  # the ;TYPE: in force ("SUPPORT", "SKIRT", ...)
+    start: tuple = (0.0, 0.0)  # XY where the move starts (mm)
+    end: tuple = (0.0, 0.0)  # XY where it ends
+    mesh: str = ""  # the last ;MESH: name
 
     @property
     def total(self):
@@ -74,6 +77,7 @@ class _Reader:
         self.abs_coord, self.abs_extrude = True, True
         self.pos = {"E": 0.0, "B": 0.0}
         self.layer, self.z, self.feature = None, 0.0, ""
+        self.xy, self.mesh = (0.0, 0.0), ""
         # Power-on state: Marlin's virtual tool t is filament t and tool 0 is selected; RepRapFirmware's
         # default mix is the first drive only.
         self.vtools = {t: [1.0 if c == t else 0.0 for c in range(channels)] for t in range(channels)}
@@ -130,6 +134,10 @@ class _Reader:
     def move(self, p, raw):
         if "Z" in p:
             self.z = self.z + p["Z"] if not self.abs_coord else float(p["Z"])
+        start = self.xy
+        x = float(p["X"]) + (start[0] if not self.abs_coord else 0.0) if "X" in p else start[0]
+        y = float(p["Y"]) + (start[1] if not self.abs_coord else 0.0) if "Y" in p else start[1]
+        self.xy = (x, y)
         amounts = None
         if self.dialect == "rrf_colon" and "E" in p:
             values = _colon_values(raw, "E")
@@ -149,7 +157,8 @@ class _Reader:
             delta = self.axis_move("E", float(p["E"]), self.e_relative())
             amounts = [delta * share for share in self.mix]
         if amounts is not None and self.layer is not None:
-            self.reading.moves.append(Move(self.layer, self.z, "X" in p or "Y" in p, amounts, self.feature))
+            self.reading.moves.append(Move(self.layer, self.z, "X" in p or "Y" in p, amounts, self.feature, start,
+                                           self.xy, self.mesh))
 
     def line(self, parsed, raw):
         if raw.startswith("MANUAL_STEPPER"):
@@ -162,6 +171,8 @@ class _Reader:
             self.layer = int(parsed.comment[6:])
         elif parsed.comment.startswith("TYPE:") and cmd[0] == ";":
             self.feature = parsed.comment[5:].strip()
+        elif parsed.comment.startswith("MESH:") and cmd[0] == ";":
+            self.mesh = parsed.comment[5:]
         elif cmd in (("M", 82), ("M", 83)):
             self.abs_extrude = cmd[1] == 82
         elif cmd in (("G", 90), ("G", 91)):

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "common/Error.h"
+#include "mixing/KubelkaMunk.h"
 
 namespace mixengine {
 namespace {
@@ -23,7 +24,7 @@ class TestGroup {
     }
     void addMesh(coord_um bottom_um, coord_um top_um, SettingValues values) {
         mesh_settings_.emplace_back("mesh", std::move(values));
-        group_.meshes.push_back({&mesh_settings_.back(), bottom_um, top_um});
+        group_.meshes.push_back({&mesh_settings_.back(), "mesh", bottom_um, top_um});
     }
     const MixingGroup& group() const { return group_; }
 
@@ -133,6 +134,35 @@ TEST(MixingPass, DualModeFixedRatioPerMesh) {
         EXPECT_EQ(shareB(plan, layer, 4), 0.0);
     }
     EXPECT_EQ(plan.mixes.size(), 3u);
+}
+
+TEST(MixingPass, ColorModeSolvesEachMeshsTargetAndWarnsOnceOutOfGamut) {
+    const SettingValues global{{"mixing_mode", "color"}, {"mixing_channel_colors", "#ffff00,#0000ff"}};
+    const PigmentModel model({Rgb{255, 255, 0}, Rgb{0, 0, 255}});
+    MixVector quarter = MixVector::only(0, 2);
+    quarter[0] = 0.75;
+    quarter[1] = 0.25;
+    const std::string in_gamut = hexOf(model.predictRgb(quarter));
+    TestGroup group(global);
+    SettingValues first = global, second = global;
+    first["mixing_target_color"] = in_gamut;
+    second["mixing_target_color"] = "#ff0000";  // red: no yellow/blue mix comes near
+    group.addMesh(0, 20000, first);
+    group.addMesh(0, 20000, second);
+    PrintPlan plan = tenLayers(2);
+    std::ostringstream err;
+    Log log(err);
+    assignMixes(plan, group.group(), log);
+    for (int layer = 0; layer < 10; ++layer)
+        EXPECT_NEAR(shareB(plan, layer, 2), 0.25, 0.01) << in_gamut;
+    const std::string text = err.str();
+    const auto first_warning = text.find("[warning]");
+    ASSERT_NE(first_warning, std::string::npos) << text;
+    EXPECT_EQ(text.find("[warning]", first_warning + 1), std::string::npos) << text;
+    EXPECT_NE(text.find("[warning] mixing: 'mesh': target colour #ff0000 is outside the gamut"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("(dE00 "), std::string::npos) << text;
 }
 
 TEST(MixingPass, ChamberDelayCommandsTheNextLayersMixEarlier) {

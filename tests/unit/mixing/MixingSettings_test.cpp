@@ -54,7 +54,7 @@ TEST(MixingSettings, BadValuesNameTheSetting) {
         });
     };
     EXPECT_EQ(output({{"mixing_mode", "rainbow"}}),
-              "setting 'mixing_mode': unknown mode 'rainbow' (single, dual or gradient)");
+              "setting 'mixing_mode': unknown mode 'rainbow' (single, dual, gradient or color)");
     EXPECT_EQ(output({{"mixing_mode", "dual"}, {"mixing_dialect", "bambu"}}),
               "setting 'mixing_dialect': unknown dialect 'bambu' (one of eb_axes, klipper_b, rrf_colon, "
               "marlin_m163, marlin_m165, rrf_m567)");
