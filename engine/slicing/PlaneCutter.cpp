@@ -47,6 +47,7 @@ Paths PlaneCutter::cut(const Mesh& mesh, std::span<const std::uint32_t> facets, 
     }
     segment_count_ += segments_.size();
     StitchResult stitched = stitcher_.stitch(segments_, options.max_gap_um);
+    gap_closed_loops_ += stitched.gap_closed_loops;
     for (Path& open : stitched.open_polylines) {
         if (options.keep_open_polygons && open.size() >= 3)
             stitched.loops.push_back({open, 0.0, 0.0});  // closed by its chord, as CuraEngine 4.13

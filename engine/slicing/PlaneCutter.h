@@ -28,11 +28,14 @@ class PlaneCutter {
 
     /// Segments produced by this cutter so far (for statistics).
     std::size_t segmentCount() const { return segment_count_; }
+    /// Loops closed across gaps between open pieces so far (the mesh is not closed there).
+    std::size_t gapClosedLoops() const { return gap_closed_loops_; }
 
   private:
     std::vector<FacetSegment> segments_;
     SegmentStitcher stitcher_;
     std::size_t segment_count_ = 0;
+    std::size_t gap_closed_loops_ = 0;
 };
 
 }  // namespace mixengine

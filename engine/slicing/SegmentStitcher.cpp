@@ -130,7 +130,9 @@ StitchResult SegmentStitcher::stitch(const std::vector<FacetSegment>& segments, 
             open_pieces.push_back(std::move(path));
         }
     }
+    const std::size_t whole_loops = result.loops.size();
     closeGaps(open_pieces, max_gap_um, result.loops);
+    result.gap_closed_loops = result.loops.size() - whole_loops;
     for (StitchedPath& piece : open_pieces)
         result.open_polylines.push_back(std::move(piece.points));
     return result;

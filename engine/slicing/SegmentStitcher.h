@@ -29,8 +29,9 @@ struct StitchedPath {
 };
 
 struct StitchResult {
-    std::vector<StitchedPath> loops;  ///< closed loops, any orientation
-    Paths open_polylines;             ///< chains that could not be closed
+    std::vector<StitchedPath> loops;   ///< closed loops, any orientation
+    Paths open_polylines;              ///< chains that could not be closed
+    std::size_t gap_closed_loops = 0;  ///< of `loops`, how many were closed across gaps (open mesh)
 };
 
 /// Reusable (keeps its buffers between cuts); not thread-safe.

@@ -101,6 +101,26 @@ class ProgressReporter {
     std::mutex mutex_;
 };
 
+/// An open mesh whose outlines were closed across gaps (SliceOptions::max_gap_um) is still named:
+/// the print may differ from what its author meant there.
+void reportClosedGaps(const std::vector<std::size_t>& gap_loops, const std::vector<SlicedLayer>& result,
+                      const Mesh& mesh, Log& log) {
+    std::size_t layers_with_gaps = 0, loops = 0;
+    coord_um first_z = 0;
+    for (std::size_t i = 0; i < gap_loops.size(); ++i) {
+        if (gap_loops[i] == 0)
+            continue;
+        if (layers_with_gaps++ == 0)
+            first_z = result[i].print_z;
+        loops += gap_loops[i];
+    }
+    if (layers_with_gaps == 0)
+        return;
+    log.warning("mesh '" + mesh.name + "' is not closed: " + std::to_string(loops) +
+                " outlines closed across gaps in " + std::to_string(layers_with_gaps) +
+                " layers (first at z = " + std::to_string(micronsToMm(first_z)) + " mm)");
+}
+
 void reportOpenPolylines(const std::vector<SlicedLayer>& result, const Mesh& mesh, Log& log) {
     std::size_t layers_with_open = 0;
     std::size_t open_count = 0;
@@ -129,6 +149,7 @@ std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& 
     std::vector<SlicedLayer> result(layers.size());
     ProgressReporter progress(log, layers.size());
     std::atomic<std::size_t> segments{0};
+    std::vector<std::size_t> gap_loops(layers.size(), 0);
     parallelFor(layers.size(), options.threads, [&](std::size_t i) {
         PlaneCutter cutter;  // per layer: its buffers are small next to the layer's work
         SlicedLayer& out = result[i];
@@ -144,10 +165,12 @@ std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& 
         else if (cuts.size() == 2)
             out.outlines = combineCuts(cuts[0], cuts[1], options.tolerance);
         segments += cutter.segmentCount();
+        gap_loops[i] = cutter.gapClosedLoops();
         progress.layerDone();
     });
     log.info("sliced '" + mesh.name + "': " + std::to_string(layers.size()) + " layers, " +
              std::to_string(mesh.faces.size()) + " facets, " + std::to_string(segments.load()) + " segments");
+    reportClosedGaps(gap_loops, result, mesh, log);
     reportOpenPolylines(result, mesh, log);
     return result;
 }
