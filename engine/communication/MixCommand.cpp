@@ -20,15 +20,7 @@ struct MixArguments {
 };
 
 std::vector<Rgb> parseColorList(const std::string& text) {
-    std::vector<Rgb> colors;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t comma = text.find(',', start);
-        if (comma == std::string::npos)
-            comma = text.size();
-        colors.push_back(parseHexColor("--colors", text.substr(start, comma - start)));
-        start = comma + 1;
-    }
+    const std::vector<Rgb> colors = parseHexColorList("--colors", text);
     if (colors.size() < 2 || colors.size() > static_cast<std::size_t>(kMaxMixChannels))
         throw InputError("--colors: " + std::to_string(colors.size()) + " colours given, 2 to " +
                          std::to_string(kMaxMixChannels) + " are mixed");
@@ -56,16 +48,6 @@ MixArguments parseMixArguments(const Words& args) {
     if (parsed.target.has_value() == !parsed.ratio.empty())
         throw InputError("mix: give either --target \"#rrggbb\" or --ratio a:b:...");
     return parsed;
-}
-
-std::string ratioText(const MixVector& mix) {
-    std::string text;
-    for (int c = 0; c < mix.channels; ++c) {
-        char share[16];
-        std::snprintf(share, sizeof share, "%.4f", mix[c]);
-        text += (c ? ":" : "") + std::string(share);
-    }
-    return text;
 }
 
 }  // namespace

@@ -92,4 +92,17 @@ std::string hexOf(const Rgb& rgb) {
     return text;
 }
 
+std::vector<Rgb> parseHexColorList(std::string_view label, std::string_view text) {
+    std::vector<Rgb> colors;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t comma = text.find(',', start);
+        if (comma == std::string_view::npos)
+            comma = text.size();
+        colors.push_back(parseHexColor(label, text.substr(start, comma - start)));
+        start = comma + 1;
+    }
+    return colors;
+}
+
 }  // namespace mixengine

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace mixengine {
 
@@ -48,6 +49,9 @@ double deltaE00(const Lab& x, const Lab& y);
 /// "#ff8000" → {255, 128, 0}; throws InputError "<label>: '<text>' is not a colour like #ff8800"
 /// when `text` (surrounding blanks aside) is not #rrggbb.
 Rgb parseHexColor(std::string_view label, std::string_view text);
+
+/// "#00ffff,#ff00ff" → its colours in order (parseHexColor on each comma-separated item).
+std::vector<Rgb> parseHexColorList(std::string_view label, std::string_view text);
 
 /// {255, 128, 0} → "#ff8000".
 std::string hexOf(const Rgb& rgb);

@@ -40,16 +40,6 @@ class MixTable {
     std::map<MixVector, int, MixLess> index_;
 };
 
-std::string ratioText(const MixVector& mix) {
-    std::string text;
-    for (int c = 0; c < mix.channels; ++c) {
-        char share[16];
-        std::snprintf(share, sizeof share, "%.4f", mix[c]);
-        text += (c ? ":" : "") + std::string(share);
-    }
-    return text;
-}
-
 /// The report of one mesh's solved colours, and the warning when one is out of gamut.
 void reportColors(const std::string& name, const MeshMixing& mixing, Log& log) {
     for (const SolvedColor& color : mixing.colors) {

@@ -1,5 +1,7 @@
 #include "mixing/MixingSettings.h"
 
+#include <cstdio>
+
 #include <cmath>
 #include <string>
 
@@ -199,8 +201,17 @@ MixVector parseMixRatio(std::string_view key, std::string_view text, int channel
     return mix;
 }
 
-std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_view text, int channels) {
-    std::vector<GradientStop> stops;
+namespace {
+
+/// One "height=value" item of a stop list.
+struct StopItem {
+    double height = 0;
+    std::string value;
+};
+
+/// "h=v; h=v; …" → its items, heights not decreasing; `form` shows the expected form in errors.
+std::vector<StopItem> splitStops(std::string_view key, std::string_view text, std::string_view form) {
+    std::vector<StopItem> items;
     std::size_t start = 0;
     while (start <= text.size()) {
         std::size_t end = text.find(';', start);
@@ -212,15 +223,32 @@ std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_v
             continue;
         const std::size_t eq = item.find('=');
         if (eq == std::string::npos)
-            fail(key, "stop '" + item + "' is not height=ratios (e.g. 50=0.5:0.5)");
-        GradientStop stop;
-        stop.height = parseReal(key, trimmed(item.substr(0, eq)));
-        stop.mix = parseMixRatio(key, item.substr(eq + 1), channels);
-        if (!stops.empty() && stop.height < stops.back().height)
+            fail(key, "stop '" + item + "' is not " + std::string(form));
+        StopItem stop{parseReal(key, trimmed(item.substr(0, eq))), item.substr(eq + 1)};
+        if (!items.empty() && stop.height < items.back().height)
             fail(key, "heights must not decrease (" + shown(stop.height) + " after " +
-                          shown(stops.back().height) + ")");
-        stops.push_back(stop);
+                          shown(items.back().height) + ")");
+        items.push_back(std::move(stop));
     }
+    return items;
+}
+
+}  // namespace
+
+std::string ratioText(const MixVector& mix) {
+    std::string text;
+    for (int c = 0; c < mix.channels; ++c) {
+        char share[16];
+        std::snprintf(share, sizeof share, "%.4f", mix[c]);
+        text += (c ? ":" : "") + std::string(share);
+    }
+    return text;
+}
+
+std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_view text, int channels) {
+    std::vector<GradientStop> stops;
+    for (const StopItem& item : splitStops(key, text, "height=ratios (e.g. 50=0.5:0.5)"))
+        stops.push_back({item.height, parseMixRatio(key, item.value, channels)});
     return stops;
 }
 
@@ -278,28 +306,11 @@ std::vector<GradientStop> parseGradientColors(std::string_view text, const Pigme
                                               std::vector<SolvedColor>& solved) {
     constexpr std::string_view kKey = "mixing_gradient_colors";
     std::vector<GradientStop> stops;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t end = text.find(';', start);
-        if (end == std::string_view::npos)
-            end = text.size();
-        const std::string item = trimmed(text.substr(start, end - start));
-        start = end + 1;
-        if (item.empty())
-            continue;
-        const std::size_t eq = item.find('=');
-        if (eq == std::string::npos)
-            fail(kKey, "stop '" + item + "' is not height=#rrggbb (e.g. 50=#ff8000)");
-        GradientStop stop;
-        stop.height = parseReal(kKey, trimmed(item.substr(0, eq)));
-        if (!stops.empty() && stop.height < stops.back().height)
-            fail(kKey, "heights must not decrease (" + shown(stop.height) + " after " +
-                           shown(stops.back().height) + ")");
+    for (const StopItem& item : splitStops(kKey, text, "height=#rrggbb (e.g. 50=#ff8000)")) {
         SolvedColor color;
-        color.target = parseHexColor("setting 'mixing_gradient_colors'", item.substr(eq + 1));
+        color.target = parseHexColor("setting 'mixing_gradient_colors'", item.value);
         color.solution = solveColor(colors, color.target);
-        stop.mix = color.solution.mix;
-        stops.push_back(stop);
+        stops.push_back({item.height, color.solution.mix});
         solved.push_back(color);
     }
     if (stops.empty())

@@ -67,6 +67,9 @@ MixingOutput parseMixingOutput(const Settings& global);
 /// relative_extrusion, or true when the mixing dialect only works with relative extrusion (M83).
 bool relativeExtrusion(const Settings& global);
 
+/// "0.2500:0.7500": a mix's channel shares with four decimals, as the mix command and the logs show it.
+std::string ratioText(const MixVector& mix);
+
 /// One scope's schedule (mesh view, or the group's view for non-mesh extrusions). With mixing on
 /// (the print's mixing_mode), a scope's own mixing_mode picks its kind of schedule: a model (a
 /// cutting mesh's region, an infill mesh) may be dual while the print is a gradient, or the reverse;

@@ -13,16 +13,7 @@ std::vector<Rgb> paintColors(const Settings& scope, const std::vector<Rgb>& chan
     const std::string text = scope.has("mixing_paint_colors") ? scope.text("mixing_paint_colors") : "";
     if (text.find_first_not_of(" \t") == std::string::npos)
         return channel_colors;
-    std::vector<Rgb> colors;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t comma = text.find(',', start);
-        if (comma == std::string::npos)
-            comma = text.size();
-        colors.push_back(parseHexColor("setting 'mixing_paint_colors'", text.substr(start, comma - start)));
-        start = comma + 1;
-    }
-    return colors;
+    return parseHexColorList("setting 'mixing_paint_colors'", text);
 }
 
 Rgb colorOfCode(std::uint32_t code, const std::vector<Rgb>& extruder_colors, const std::string& mesh) {

@@ -101,42 +101,41 @@ class ProgressReporter {
     std::mutex mutex_;
 };
 
-/// An open mesh whose outlines were closed across gaps (SliceOptions::max_gap_um) is still named:
-/// the print may differ from what its author meant there.
-void reportClosedGaps(const std::vector<std::size_t>& gap_loops, const std::vector<SlicedLayer>& result,
-                      const Mesh& mesh, Log& log) {
-    std::size_t layers_with_gaps = 0, loops = 0;
+/// How many layers have a count, their sum, and the first such layer's z.
+struct LayerCounts {
+    std::size_t layers = 0;
+    std::size_t total = 0;
     coord_um first_z = 0;
-    for (std::size_t i = 0; i < gap_loops.size(); ++i) {
-        if (gap_loops[i] == 0)
-            continue;
-        if (layers_with_gaps++ == 0)
-            first_z = result[i].print_z;
-        loops += gap_loops[i];
-    }
-    if (layers_with_gaps == 0)
-        return;
-    log.warning("mesh '" + mesh.name + "' is not closed: " + std::to_string(loops) +
-                " outlines closed across gaps in " + std::to_string(layers_with_gaps) +
-                " layers (first at z = " + std::to_string(micronsToMm(first_z)) + " mm)");
-}
 
-void reportOpenPolylines(const std::vector<SlicedLayer>& result, const Mesh& mesh, Log& log) {
-    std::size_t layers_with_open = 0;
-    std::size_t open_count = 0;
-    coord_um first_z = 0;
-    for (const SlicedLayer& layer : result) {
-        if (layer.open_polylines.empty())
-            continue;
-        if (layers_with_open++ == 0)
-            first_z = layer.print_z;
-        open_count += layer.open_polylines.size();
+    void add(std::size_t count, coord_um z) {
+        if (count == 0)
+            return;
+        if (layers++ == 0)
+            first_z = z;
+        total += count;
     }
-    if (layers_with_open == 0)
-        return;
-    log.warning("mesh '" + mesh.name + "' is not closed: " + std::to_string(open_count) +
-                " open outline pieces left out in " + std::to_string(layers_with_open) +
-                " layers (first at z = " + std::to_string(micronsToMm(first_z)) + " mm)");
+    std::string text(const std::string& what) const {
+        return std::to_string(total) + " " + what + " in " + std::to_string(layers) +
+               " layers (first at z = " + std::to_string(micronsToMm(first_z)) + " mm)";
+    }
+};
+
+/// One warning for a mesh that is not closed: the outlines closed across gaps (SliceOptions::max_gap_um;
+/// the print may differ from what its author meant there) and the open pieces left out.
+void reportOpenMesh(const std::vector<std::size_t>& gap_loops, const std::vector<SlicedLayer>& result,
+                    const Mesh& mesh, Log& log) {
+    LayerCounts closed, open;
+    for (std::size_t i = 0; i < result.size(); ++i) {
+        closed.add(gap_loops[i], result[i].print_z);
+        open.add(result[i].open_polylines.size(), result[i].print_z);
+    }
+    std::string parts;
+    if (closed.layers > 0)
+        parts = closed.text("outlines closed across gaps");
+    if (open.layers > 0)
+        parts += (parts.empty() ? "" : "; ") + open.text("open outline pieces left out");
+    if (!parts.empty())
+        log.warning("mesh '" + mesh.name + "' is not closed: " + parts);
 }
 
 }  // namespace
@@ -170,8 +169,7 @@ std::vector<SlicedLayer> sliceMesh(const Mesh& mesh, const std::vector<LayerZ>& 
     });
     log.info("sliced '" + mesh.name + "': " + std::to_string(layers.size()) + " layers, " +
              std::to_string(mesh.faces.size()) + " facets, " + std::to_string(segments.load()) + " segments");
-    reportClosedGaps(gap_loops, result, mesh, log);
-    reportOpenPolylines(result, mesh, log);
+    reportOpenMesh(gap_loops, result, mesh, log);
     return result;
 }
 
