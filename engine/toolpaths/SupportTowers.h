@@ -6,7 +6,8 @@
 //   - a tower roof starts one layer below each point (those with a point of the layer below within
 //     twice the maximum diameter are left to that one), and also under a small support island (area
 //     below the maximum diameter²) whose middle has support six layers up and no model
-//     six + bottom_gap layers down;
+//     six + bottom_gap layers down (on every layer while the island stays that small, so a column
+//     of staggered roofs ends somewhat wider than the diameter, as CuraEngine's);
 //   - each roof is added to the support of its layer and, going down, grows by
 //     layer_height / tan(support_tower_roof_angle) per layer until its area reaches
 //     support_tower_diameter²; from there the ordinary support carries it down to the plate.

@@ -39,7 +39,7 @@ atexit.register(shutil.rmtree, _TMP, True)
 _MEMO = {}
 
 
-GENERATED = ("tube", "tee", "parity", "dual_a", "dual_b", "hook")
+GENERATED = ("tube", "tee", "parity", "dual_a", "dual_b", "hook", "pin")
 # Parts of one two-extruder scene, made in the scene's frame (kept where they are, not centred one by one).
 PLACED = ("dual_a", "dual_b")
 
@@ -55,6 +55,8 @@ def _make(name):
         return _parity_scene(shapely, trimesh)
     if name == "hook":
         return _hook(trimesh)
+    if name == "pin":
+        return _pin(trimesh)
     # tee: a T profile (30 x 6 mm bar on an 8 x 16 mm stem) extruded 10 mm, stood up so that the bar's
     # underside is a 90-degree overhang on both sides of the stem.
     profile = shapely.Polygon([(-4, 0), (4, 0), (4, 16), (15, 16), (15, 22), (-15, 22), (-15, 16), (-4, 16)])
@@ -89,6 +91,16 @@ def _hook(trimesh):
     drop = trimesh.creation.box(extents=[2.0, 2.0, 3.0])
     drop.apply_translation([0, 9.0, 7.5])
     return trimesh.util.concatenate([wall, arm, drop])
+
+
+def _pin(trimesh):
+    """A 20 x 4 x 12 mm wall with a 1.2 x 1.2 mm pin sticking out 2 mm at 8.4 to 9.6 mm: support too small to
+    print without CuraEngine's support towers."""
+    wall = trimesh.creation.box(extents=[20.0, 4.0, 12.0])
+    wall.apply_translation([0, 0, 6.0])
+    pin = trimesh.creation.box(extents=[1.2, 2.0, 1.2])
+    pin.apply_translation([0, 3.0, 9.0])
+    return trimesh.util.concatenate([wall, pin])
 
 
 def _dual_part(name, trimesh):

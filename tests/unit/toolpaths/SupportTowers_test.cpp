@@ -96,5 +96,32 @@ TEST(SupportTowers, ATowerOfTheDiameterStandsUnderTheHangingEnd) {
     }
 }
 
+TEST(SupportTowers, ASmallSupportIslandUnderAPinBecomesATower) {
+    // A 1.2 x 2 mm pin out of the wall on layers 40 … 51: its support (2.4 mm², smaller than the maximum
+    // diameter squared) has support six layers up and no model below, so a roof starts and widens.
+    test::Stack s = test::prismStack(60);
+    test::fill(s, 0, 60, {rect(0, 0, 20'000, 4'000)});
+    test::fill(s, 40, 52, {rect(0, 0, 20'000, 4'000), rect(9'400, 4'000, 10'600, 6'000)});
+    const std::vector<SupportLayerAreas> with = supportOf(s, towers());
+    const std::vector<SupportLayerAreas> without = supportOf(s, {});
+    const Paths beside_the_wall = {rect(0, 4'000, 20'000, 20'000)};
+    for (int i : {36, 32}) {  // the six layers under the pin's support, and the roof's first layer
+        EXPECT_EQ(intersectAll(with[i].support, beside_the_wall),
+                  intersectAll(without[i].support, beside_the_wall))
+            << i;
+    }
+    for (int i : {10, 5}) {
+        const ClipperLib::IntRect box = boundsOf(intersectAll(with[i].support, beside_the_wall));
+        const ClipperLib::IntRect pin = boundsOf(intersectAll(without[i].support, beside_the_wall));
+        EXPECT_EQ(pin.right - pin.left, 1'200) << i;
+        EXPECT_EQ(box.left + box.right, 2 * 10'000) << i;
+        // A roof starts on every layer while the island is small, each growing until its area reaches
+        // 9 mm², so the column keeps widening a little: 2.95 mm on layer 10, 3.13 mm on layer 5.
+        EXPECT_GT(box.right - box.left, 2'800) << i;
+        EXPECT_LT(box.right - box.left, 3'300) << i;
+        EXPECT_GE(areaUm2(with[i].support), 9e6 - 4'000.0 * 700 - 1e6) << i;  // less the wall's xy distance
+    }
+}
+
 }  // namespace
 }  // namespace mixengine
