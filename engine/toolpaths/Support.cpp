@@ -27,6 +27,25 @@ int extruderOf(const Settings& s, std::string_view key) {
     return nr < 0 ? 0 : nr;
 }
 
+/// The maximum diameter of what towers support, 0 when `s` turns towers off.
+coord_um towerMaxDiameter(const Settings& s) {
+    if (!s.has("support_use_towers") || !s.boolean("support_use_towers"))
+        return 0;
+    return std::max<coord_um>(0, s.lengthMicrons("support_tower_maximum_supported_diameter"));
+}
+
+SupportTowerParams towerParams(const Settings& s, coord_um layer_height) {
+    SupportTowerParams t;
+    t.max_supported_diameter_um = towerMaxDiameter(s);
+    if (t.max_supported_diameter_um == 0)
+        return t;
+    t.diameter_um = s.lengthMicrons("support_tower_diameter");
+    const double slope = std::tan(radiansFromDegrees(s.angleDegrees("support_tower_roof_angle")));
+    // A flat roof (0°) is the whole diameter at once.
+    t.roof_step_um = slope > 1e-6 ? static_cast<coord_um>(double(layer_height) / slope) : t.diameter_um;
+    return t;
+}
+
 SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     SupportAreaParams p;
     p.top_gap_layers = layersFor(s.lengthMicrons("support_top_distance"), layer_height, true);
@@ -49,6 +68,7 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
         p.conical_step_um = angle > 0 ? -step : angle < 0 ? step : 0;
         p.conical_min_width_um = s.lengthMicrons("support_conical_min_width");
     }
+    p.towers = towerParams(s, layer_height);
     if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
         p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
     if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
@@ -199,11 +219,29 @@ bool isTree(const SupportMesh& mesh) {
     return mesh.settings->has("support_structure") && mesh.settings->text("support_structure") == "tree";
 }
 
+/// The mesh's overhang points (toolpaths/SupportTowers.h) added to `points`, with its towers on; inset
+/// by half the outer wall's line width (its centre line, as CuraEngine), without walls half the
+/// support line width.
+void addOverhangPoints(const SupportMesh& mesh, const std::vector<Paths>& blockers,
+                       std::vector<std::vector<Paths>>& points) {
+    const Settings& s = *mesh.settings;
+    const coord_um max_diameter = towerMaxDiameter(s);
+    if (max_diameter == 0)
+        return;
+    const bool walls = s.has("wall_line_count") && s.integer("wall_line_count") > 0;
+    const coord_um inset = s.lengthMicrons(walls ? "wall_line_width_0" : "support_line_width") / 2;
+    const std::vector<std::vector<Paths>> own =
+        detectOverhangPoints(*mesh.layers, max_diameter, inset, blockers.empty() ? nullptr : &blockers);
+    for (std::size_t i = 0; i < own.size() && i < points.size(); ++i)
+        points[i].insert(points[i].end(), own[i].begin(), own[i].end());
+}
+
 /// The overhangs of the meshes with support_enable and normal support, united per layer.
 Overhangs collectOverhangs(const SupportInput& in, int threads) {
     Overhangs all;
     all.basic.resize(in.heights->size());
     all.full.resize(in.heights->size());
+    all.points.resize(in.heights->size());
     const std::vector<Paths> blockers = outlinesOf(
         in, [](const SupportMesh& m) { return m.role.anti_overhang_mesh; }, threads);
     for (const SupportMesh& mesh : in.meshes) {
@@ -218,6 +256,7 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
             all.basic[i] = all.basic[i].empty() ? own.basic[i] : unionOf(all.basic[i], own.basic[i]);
             all.full[i] = all.full[i].empty() ? own.full[i] : unionOf(all.full[i], own.full[i]);
         });
+        addOverhangPoints(mesh, blockers, all.points);
     }
     return all;
 }

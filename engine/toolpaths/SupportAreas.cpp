@@ -35,20 +35,41 @@ Paths conicalStep(const Paths& from_above, const SupportAreaParams& p) {
     return unionOf(offsetMiter(from_above, p.conical_step_um), narrow);
 }
 
-/// Top-down: each layer's support is the layer above's plus the overhangs it must carry, joined
-/// (closing by the join distance), minus the model here and bottom_gap layers below, simplified.
-std::vector<Paths> propagateDown(const std::vector<Paths>& full, const std::vector<Paths>& blocked,
-                                 const SupportAreaParams& p) {
+/// The overhang points of `layer`, none when out of range.
+std::vector<Paths> pointsOf(const Overhangs& o, std::size_t layer) {
+    return layer < o.points.size() ? o.points[layer] : std::vector<Paths>{};
+}
+
+/// Towers under small support islands (toolpaths/SupportTowers.h), for layer i of n.
+void startTowersUnderIslands(TowerRoofs& roofs, const std::vector<Paths>& support,
+                             const std::vector<Paths>& model, std::size_t i, const SupportAreaParams& p) {
+    const std::size_t look = TowerRoofs::kSmallIslandLookLayers;
+    const std::size_t below = look + static_cast<std::size_t>(std::max(0, p.bottom_gap_layers));
+    if (i + look < support.size() && i >= below)
+        roofs.startUnderSmallIslands(support[i], support[i + look], model[i - below]);
+}
+
+/// Top-down: each layer's support is the layer above's plus the overhangs it must carry (and the
+/// towers' roofs), joined (closing by the join distance), minus the model here and bottom_gap layers
+/// below, simplified.
+std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<Paths>& model,
+                                 const std::vector<Paths>& blocked, const SupportAreaParams& p) {
+    const std::vector<Paths>& full = overhangs.full;
     const std::size_t n = full.size();
+    const bool towers = p.towers.max_supported_diameter_um > 0;
+    TowerRoofs roofs(p.towers);
     std::vector<Paths> support(n);
     Paths current;
     for (std::size_t i = n; i-- > 0;) {
         const std::size_t source = i + static_cast<std::size_t>(p.top_gap_layers) + 1;
-        const bool added = source < n && !full[source].empty();
         if (p.conical_step_um != 0 && !current.empty())
             current = conicalStep(current, p);
-        if (added)
+        if (source < n && !full[source].empty())
             current = unionOf(current, full[source]);
+        if (towers && i + 2 < n) {  // as CuraEngine: a roof starts one layer under its point
+            roofs.startAt(pointsOf(overhangs, i + 1), pointsOf(overhangs, i));
+            roofs.addTo(current);
+        }
         if (current.empty())
             continue;
         if (p.join_distance_um > 0)  // as CuraEngine: its offsets bevel at a miter limit of 1.2
@@ -56,6 +77,8 @@ std::vector<Paths> propagateDown(const std::vector<Paths>& full, const std::vect
                                   -p.join_distance_um, kCuraMiterLimit);
         current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
         support[i] = current;
+        if (towers)
+            startTowersUnderIslands(roofs, support, model, i, p);
     }
     return support;
 }
@@ -154,7 +177,7 @@ std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& mod
     parallelFor(n, threads, [&](std::size_t i) {
         blocked[i] = gap > 0 && i >= gap ? unionOf(simple[i], simple[i - gap]) : simple[i];
     });
-    const std::vector<Paths> propagated = propagateDown(overhangs.full, blocked, p);
+    const std::vector<Paths> propagated = propagateDown(overhangs, simple, blocked, p);
     const std::vector<Paths> from_meshes = supportMeshSupport(meshes, blocked);
     std::vector<SupportLayerAreas> out(n);
     const std::size_t top = static_cast<std::size_t>(std::max(0, p.top_gap_layers));

@@ -18,6 +18,8 @@
 //     only support_xy_distance_overhang next to the layer's own overhang) and the model top_gap
 //     layers up, and islands under minimum_support_area; support_type buildplate keeps only
 //     columns that reach the plate; support with no support above or below it is dropped;
+//   - towers (params.towers, toolpaths/SupportTowers.h): their roofs are added to each layer's
+//     support before it is joined with the layer above;
 //   - interfaces: the top roof_layers of support under the model are roof, the bottom
 //     floor_layers on the model are floor (support_roof_height / support_bottom_height in layers).
 #include <vector>
@@ -25,6 +27,7 @@
 #include "geometry/Point.h"
 #include "slicing/LayerHeights.h"
 #include "slicing/Slicer.h"
+#include "toolpaths/SupportTowers.h"
 
 namespace mixengine {
 
@@ -42,6 +45,7 @@ struct SupportAreaParams {
     int floor_layers = 0;               ///< 0 = no floor interface
     coord_um conical_step_um = 0;       ///< conical support: offset per layer going down (0 = off)
     coord_um conical_min_width_um = 0;  ///< narrower parts are not shrunk
+    SupportTowerParams towers;          ///< support towers (toolpaths/SupportTowers.h); default off
 };
 
 struct SupportLayerAreas {
@@ -53,6 +57,9 @@ struct SupportLayerAreas {
 struct Overhangs {
     std::vector<Paths> basic;  ///< [layer] not supported by the layer below
     std::vector<Paths> full;   ///< [layer] basic grown by d + 0.1 mm within the layer: to support
+    /// [layer] overhang points: small parts with nothing under them, where towers start
+    /// (toolpaths/SupportTowers.h); may be empty (no towers)
+    std::vector<std::vector<Paths>> points;
 };
 
 /// Per layer the overhangs of `layers` (angle in degrees from vertical). `blockers` (may be null):

@@ -39,7 +39,7 @@ atexit.register(shutil.rmtree, _TMP, True)
 _MEMO = {}
 
 
-GENERATED = ("tube", "tee", "parity", "dual_a", "dual_b")
+GENERATED = ("tube", "tee", "parity", "dual_a", "dual_b", "hook", "pin")
 # Parts of one two-extruder scene, made in the scene's frame (kept where they are, not centred one by one).
 PLACED = ("dual_a", "dual_b")
 
@@ -53,6 +53,10 @@ def _make(name):
         return trimesh.creation.annulus(r_min=6.0, r_max=12.0, height=15.0, sections=128)
     if name == "parity":
         return _parity_scene(shapely, trimesh)
+    if name == "hook":
+        return _hook(trimesh)
+    if name == "pin":
+        return _pin(trimesh)
     # tee: a T profile (30 x 6 mm bar on an 8 x 16 mm stem) extruded 10 mm, stood up so that the bar's
     # underside is a 90-degree overhang on both sides of the stem.
     profile = shapely.Polygon([(-4, 0), (4, 0), (4, 16), (15, 16), (15, 22), (-15, 22), (-15, 16), (-4, 16)])
@@ -75,6 +79,28 @@ def _parity_scene(shapely, trimesh):
     tube = trimesh.creation.annulus(r_min=2.0, r_max=5.0, height=8.0, sections=64)
     tube.apply_translation([8, -8, 4.0])
     return trimesh.util.concatenate([bridge, fin, tube])
+
+
+def _hook(trimesh):
+    """A 20 x 4 x 12 mm wall with a 2 x 2 mm arm sticking out 8 mm at 9 to 11 mm, whose end hangs down 3 mm: the
+    hanging end's lowest layer is a small part with nothing under it (CuraEngine's support towers)."""
+    wall = trimesh.creation.box(extents=[20.0, 4.0, 12.0])
+    wall.apply_translation([0, 0, 6.0])
+    arm = trimesh.creation.box(extents=[2.0, 8.0, 2.0])
+    arm.apply_translation([0, 6.0, 10.0])
+    drop = trimesh.creation.box(extents=[2.0, 2.0, 3.0])
+    drop.apply_translation([0, 9.0, 7.5])
+    return trimesh.util.concatenate([wall, arm, drop])
+
+
+def _pin(trimesh):
+    """A 20 x 4 x 12 mm wall with a 1.2 x 1.2 mm pin sticking out 2 mm at 8.4 to 9.6 mm: support too small to
+    print without CuraEngine's support towers."""
+    wall = trimesh.creation.box(extents=[20.0, 4.0, 12.0])
+    wall.apply_translation([0, 0, 6.0])
+    pin = trimesh.creation.box(extents=[1.2, 2.0, 1.2])
+    pin.apply_translation([0, 3.0, 9.0])
+    return trimesh.util.concatenate([wall, pin])
 
 
 def _dual_part(name, trimesh):
