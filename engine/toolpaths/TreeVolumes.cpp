@@ -40,17 +40,21 @@ Paths TreeVolumes::computeCollision(coord_um radius_um, int layer) const {
     return radius_um > 0 ? offsetMiter(near, radius_um) : near;
 }
 
-const Paths& TreeVolumes::collision(coord_um radius_um, int layer) {
-    const coord_um r = roundedRadius(radius_um);
+bool TreeVolumes::sizedForLayer(std::vector<Paths>& areas, std::vector<bool>& done, int layer) const {
     const std::size_t n = model_->size();
-    std::vector<Paths>& areas = collision_[r];
-    std::vector<bool>& done = collision_done_[r];
     if (areas.size() != n) {
         areas.assign(n, {});
         done.assign(n, false);
     }
+    return layer >= 0 && static_cast<std::size_t>(layer) < n;
+}
+
+const Paths& TreeVolumes::collision(coord_um radius_um, int layer) {
+    const coord_um r = roundedRadius(radius_um);
+    std::vector<Paths>& areas = collision_[r];
+    std::vector<bool>& done = collision_done_[r];
     static const Paths kNone;
-    if (layer < 0 || static_cast<std::size_t>(layer) >= n)
+    if (!sizedForLayer(areas, done, layer))
         return kNone;
     const std::size_t i = static_cast<std::size_t>(layer);
     if (!done[i]) {
@@ -62,15 +66,10 @@ const Paths& TreeVolumes::collision(coord_um radius_um, int layer) {
 
 const Paths& TreeVolumes::avoidance(coord_um radius_um, int layer) {
     const coord_um r = roundedRadius(radius_um);
-    const std::size_t n = model_->size();
     std::vector<Paths>& areas = avoidance_[r];
     std::vector<bool>& done = avoidance_done_[r];
-    if (areas.size() != n) {
-        areas.assign(n, {});
-        done.assign(n, false);
-    }
     static const Paths kNone;
-    if (layer < 0 || static_cast<std::size_t>(layer) >= n)
+    if (!sizedForLayer(areas, done, layer))
         return kNone;
     std::size_t first = static_cast<std::size_t>(layer);
     while (first > 0 && !done[first - 1])

@@ -36,6 +36,8 @@ class TreeVolumes {
 
   private:
     Paths computeCollision(coord_um radius_um, int layer) const;
+    /// Sizes a radius' cache (`areas`, `done`) to the model's layers once; whether `layer` is one of them.
+    bool sizedForLayer(std::vector<Paths>& areas, std::vector<bool>& done, int layer) const;
 
     const std::vector<Paths>* model_;
     TreeVolumeParams params_;
