@@ -86,8 +86,9 @@ OPEN_LAYERS_GAP = ("a layer with only open pieces counts as printing in MixEngin
                    "CuraEngine drops it unless in surface mode: 50 empty layers against none")
 
 
-SUPPORT_MESH_TOP = ("a support mesh alone: ;LAYER_COUNT: one below CuraEngine's (59 / 60) since the walls, "
-                    "simplification and open-mesh work of issue 19 met the per-model work; to look at")
+SUPPORT_MESH_TOP = ("a support mesh alone: CuraEngine's ;LAYER_COUNT: counts the mesh's 60 layers though it writes 58 "
+                    "(its support stops below the top); MixEngine counts the 59 it writes (its support reaches a "
+                    "layer higher)")
 LAYER_GAPS = {"open_box": OPEN_LAYERS_GAP, "open_box_extensive_stitching": OPEN_LAYERS_GAP,
               "support_mesh_alone": SUPPORT_MESH_TOP}
 
