@@ -128,7 +128,7 @@ void GCodeExport::bfbTravel(const Point2& to, coord_um z, double speed_mm_s) {
 
 void GCodeExport::bfbExtrude(const Point2& to, double volume_mm3, double speed_mm_s) {
     const double filament_mm = filamentMm(volume_mm3);
-    const double length_mm = std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / 1000.0;
+    const double length_mm = distanceMm(position_, to);
     std::string before;
     const double feedrate =
         bfb_.extrude(length_mm > 0 ? filament_mm / length_mm : 0.0, speed_mm_s, extruder_, before);
@@ -156,8 +156,7 @@ void GCodeExport::updateOffset(const Point2& to, double volume_mm3, double speed
     if (!offset_update_ || to == position_)
         return;
     offset_update_ = false;
-    const double length_mm =
-        std::hypot(double(to.X - position_.X), double(to.Y - position_.Y)) / kMicronsPerMm;
+    const double length_mm = distanceMm(position_, to);
     const double offset =
         std::min(speed_mm_s * volume_mm3 / length_mm * params_.flow_offset_factor, params_.flow_offset_max);
     if (offset == e_offset_)

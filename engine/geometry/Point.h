@@ -26,6 +26,16 @@ inline double micronsToMm(coord_um um) {
     return static_cast<double>(um) / kMicronsPerMm;
 }
 
+/// The straight distance between two points in the XY plane, in microns.
+inline double distanceUm(const Point2& a, const Point2& b) {
+    return std::hypot(static_cast<double>(a.X - b.X), static_cast<double>(a.Y - b.Y));
+}
+
+/// The same distance in millimetres.
+inline double distanceMm(const Point2& a, const Point2& b) {
+    return distanceUm(a, b) / kMicronsPerMm;
+}
+
 struct Vec3 {
     double x = 0, y = 0, z = 0;
     Vec3 operator+(const Vec3& o) const { return {x + o.x, y + o.y, z + o.z}; }

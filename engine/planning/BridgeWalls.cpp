@@ -13,10 +13,6 @@ constexpr coord_um kMinLineUm = 5;         // shorter pieces are not printed
 constexpr double kSpeedUpPieceUm = 1'000;  // speeding up after a bridge in 1 mm pieces
 constexpr double kSpeedUpFactor = 0.75;
 
-double distanceUm(const Point2& a, const Point2& b) {
-    return std::hypot(double(a.X - b.X), double(a.Y - b.Y));
-}
-
 std::uint8_t kindOf(std::uint8_t bits) {
     return bits & 3;
 }

@@ -41,7 +41,7 @@ bool travelFollows(const std::vector<PlanStep>& steps, std::size_t from, const P
 
 /// Volume per micron of an extrusion from `from`; 0 for a move of no length.
 double volumePerUm(const PlanStep& step, const Point2& from) {
-    const double length = std::hypot(double(step.to.X - from.X), double(step.to.Y - from.Y));
+    const double length = distanceUm(from, step.to);
     return length > 0 ? step.volume_mm3 / length : 0;
 }
 
@@ -133,8 +133,7 @@ void coastPath(const std::vector<PlanStep>& steps, std::size_t begin, std::size_
     out.insert(out.end(), steps.begin() + std::ptrdiff_t(begin), steps.begin() + std::ptrdiff_t(stop + 1));
     PlanStep partial = steps[stop + 1];
     const Point2 from = steps[stop].to;
-    partial.volume_mm3 =
-        volumePerUm(partial, from) * std::hypot(double(start->at.X - from.X), double(start->at.Y - from.Y));
+    partial.volume_mm3 = volumePerUm(partial, from) * distanceUm(from, start->at);
     partial.to = start->at;
     out.push_back(partial);
     for (std::size_t k = stop + 1; k < end; ++k) {

@@ -25,10 +25,6 @@ CoolingParams coolingParams(const Settings& s) {
 
 namespace {
 
-double lengthMm(const Point2& a, const Point2& b) {
-    return std::hypot(double(b.X - a.X), double(b.Y - a.Y)) / kMicronsPerMm;
-}
-
 /// Time spent extruding and travelling, separately.
 std::pair<double, double> splitSeconds(const PlannedLayer& layer, Point2 head) {
     const std::vector<double> seconds = stepSeconds(layer, head);
@@ -96,7 +92,7 @@ std::vector<double> stepSeconds(const PlannedLayer& layer, Point2 head) {
         const PlanStep& step = layer.steps[i];
         if (step.kind != PlanStep::Kind::Travel && step.kind != PlanStep::Kind::Extrude)
             continue;
-        seconds[i] = step.speed_mm_s > 0 ? lengthMm(head, step.to) / step.speed_mm_s : 0;
+        seconds[i] = step.speed_mm_s > 0 ? distanceMm(head, step.to) / step.speed_mm_s : 0;
         head = step.to;
     }
     return seconds;

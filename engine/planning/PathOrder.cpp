@@ -9,10 +9,6 @@
 namespace mixengine {
 namespace {
 
-double distanceUm(const Point2& a, const Point2& b) {
-    return std::hypot(static_cast<double>(a.X - b.X), static_cast<double>(a.Y - b.Y));
-}
-
 /// Index of the best start vertex of `path` seen from `head`; for open paths 0 or size-1.
 std::size_t bestStart(const ExtrusionPath& path, const Point2& head, double& best_distance) {
     best_distance = std::numeric_limits<double>::max();

@@ -5,10 +5,6 @@
 namespace mixengine {
 namespace {
 
-double distanceUm(const Point2& a, const Point2& b) {
-    return std::hypot(static_cast<double>(a.X - b.X), static_cast<double>(a.Y - b.Y));
-}
-
 double lengthUm(Point2 from, const Path& points) {
     double sum = 0;
     for (const Point2& p : points) {

@@ -8,10 +8,6 @@
 namespace mixengine {
 namespace {
 
-double distanceUm(const Point2& a, const Point2& b) {
-    return std::hypot(double(a.X - b.X), double(a.Y - b.Y));
-}
-
 /// The pieces of edge a → b inside `mask`, as distances along it (sorted).
 std::vector<std::pair<double, double>> insidePieces(const Point2& a, const Point2& b, const Paths& mask) {
     std::vector<std::pair<double, double>> pieces;

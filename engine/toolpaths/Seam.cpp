@@ -44,10 +44,6 @@ std::uint64_t mix(std::uint64_t x) {  // splitmix64 finaliser
     return x ^ (x >> 31);
 }
 
-double distanceUm(const Point2& a, const Point2& b) {
-    return std::hypot(double(a.X - b.X), double(a.Y - b.Y));
-}
-
 /// The point reached by walking from vertex i along the loop (step +1 or -1) for at least `reach`.
 const Point2& walk(const Path& loop, std::size_t i, int step, double reach) {
     const std::size_t n = loop.size();

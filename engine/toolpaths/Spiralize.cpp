@@ -14,10 +14,6 @@ constexpr double kBottomStartFlow = 0.25;  ///< the bottom spiral starts at this
 constexpr double kTopMinimumFlow = 0.25;   ///< below it the tapering round moves without extruding
 constexpr double kTopCoastMm = 10.0;       ///< how far the tapering round moves without extruding
 
-double distanceMm(const Point2& a, const Point2& b) {
-    return std::hypot(double(a.X - b.X), double(a.Y - b.Y)) / kMicronsPerMm;
-}
-
 double squared(const Point2& a, const Point2& b) {
     const double dx = double(a.X - b.X), dy = double(a.Y - b.Y);
     return dx * dx + dy * dy;

@@ -67,10 +67,6 @@ class SegmentBuilder {
     std::string types_;
 };
 
-double lengthMm(const Point2& a, const Point2& b) {
-    return std::hypot(static_cast<double>(b.X - a.X), static_cast<double>(b.Y - a.Y)) / 1000.0;
-}
-
 void addLayerSegments(const PlannedLayer& planned, double thickness_mm, cura::proto::LayerOptimized& layer,
                       Point2& head, int& extruder) {
     SegmentBuilder segment(layer, thickness_mm);
@@ -92,7 +88,7 @@ void addLayerSegments(const PlannedLayer& planned, double thickness_mm, cura::pr
                 head = step.to;
                 break;
             case PlanStep::Kind::Extrude: {
-                const double length = lengthMm(head, step.to);
+                const double length = distanceMm(head, step.to);
                 const double width =
                     length > 0 && thickness_mm > 0 ? step.volume_mm3 / (length * thickness_mm) : 0.0;
                 segment.line(step.to, curaLineType(feature), width, step.speed_mm_s);
