@@ -83,15 +83,27 @@ ArcusSession::ArcusSession(Log& log) : log_(log) {
 
 ArcusSession::~ArcusSession() {
     close(2s);
-    if (socket_) {
-        // libArcus 4.13 leaves its thread joinable when the socket ended in Error (its destructor
-        // would then terminate the process); reset() joins it in that state.
-        const auto state = socket_->getState();
-        if (state == Arcus::SocketState::Error || state == Arcus::SocketState::Closed)
-            socket_->reset();
-    }
+    if (socket_)
+        joinSocketThread(2s);
     std::lock_guard lock(shared_->mutex);
     shared_->log = nullptr;
+}
+
+void ArcusSession::joinSocketThread(std::chrono::milliseconds timeout) {
+    std::unique_lock lock(shared_->mutex);
+    const bool settled = shared_->changed.wait_for(lock, timeout, [this] {
+        return (!thread_started_ && shared_->state == Arcus::SocketState::Initial) ||
+               shared_->state == Arcus::SocketState::Closed || shared_->state == Arcus::SocketState::Error;
+    });
+    lock.unlock();
+    if (!settled) {
+        static_cast<void>(socket_.release());  // abandoned on purpose: its thread is still running
+        return;
+    }
+    // The listener hears of a state after libArcus has stored it, so the socket agrees here.
+    const auto state = socket_->getState();
+    if (state == Arcus::SocketState::Closed || state == Arcus::SocketState::Error)
+        socket_->reset();
 }
 
 void ArcusSession::throwIfFailed() const {
@@ -102,6 +114,7 @@ void ArcusSession::throwIfFailed() const {
 void ArcusSession::connect(const std::string& host, int port, std::chrono::milliseconds timeout) {
     log_.info("connecting to " + host + ":" + std::to_string(port));
     socket_->connect(host, port);
+    thread_started_ = true;
     std::unique_lock lock(shared_->mutex);
     const bool settled = shared_->changed.wait_for(lock, timeout, [this] {
         return shared_->state != Arcus::SocketState::Initial &&

@@ -80,9 +80,17 @@ class ArcusSession {
 
     void throwIfFailed() const;  // caller holds shared_->mutex
 
+    /// Ends the socket's thread before the socket is destroyed. libArcus 4.13's ~Socket ends the
+    /// process (a joinable std::thread is deleted) when the socket has already reached Closed or
+    /// Error; reset() joins the thread in those states. A socket still Closing or Connecting
+    /// reaches one of them shortly: this waits for that at most `timeout`, then abandons the
+    /// socket (its thread ends with the process) rather than risk the abort.
+    void joinSocketThread(std::chrono::milliseconds timeout);
+
     Log& log_;
     std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
     std::unique_ptr<Arcus::Socket> socket_ = std::make_unique<Arcus::Socket>();
+    bool thread_started_ = false;  ///< connect() was called: libArcus runs the socket's thread
 };
 
 }  // namespace mixengine
