@@ -102,6 +102,11 @@ std::string GCodeExport::feedrateWord(double speed_mm_s) {
     return " F" + formatFeedrate(speed_mm_s);
 }
 
+std::string GCodeExport::hopCommand(double speed_mm_s) {
+    feedrate_mm_s_ = speed_mm_s;
+    return "G1 F" + formatFeedrate(speed_mm_s);
+}
+
 double GCodeExport::filamentOnAxis(double filament_mm) const {
     if (!params_.volumetric)
         return filament_mm;
@@ -188,6 +193,10 @@ void GCodeExport::travel(const Point2& to, double speed_mm_s) {
 }
 
 void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
+    writeZ(z, speed_mm_s, false);
+}
+
+void GCodeExport::writeZ(coord_um z, double speed_mm_s, bool hop) {
     layer_z_ = z - hop_um_;
     if (z == z_)
         return;
@@ -197,7 +206,8 @@ void GCodeExport::moveZ(coord_um z, double speed_mm_s) {
         return;
     }
     timeMove(position_, z, 0, speed_mm_s, moveFeature());
-    line("G0" + feedrateWord(speed_mm_s) + " Z" + formatCoordMm(micronsToMm(z)));
+    line((hop ? hopCommand(speed_mm_s) : "G0" + feedrateWord(speed_mm_s)) + " Z" +
+         formatCoordMm(micronsToMm(z)));
     z_ = z;
 }
 
@@ -210,10 +220,10 @@ void GCodeExport::hopTo(coord_um hop_um, bool rewrite, double speed_mm_s) {
     if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
         if (params_.bfb)
             return;
-        line("G0" + feedrateWord(speed) + " Z" + formatCoordMm(micronsToMm(z_)));
+        line(hopCommand(speed) + " Z" + formatCoordMm(micronsToMm(z_)));
         return;
     }
-    moveZ(layer + hop_um, speed);
+    writeZ(layer + hop_um, speed, true);
 }
 
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {

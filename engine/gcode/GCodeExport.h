@@ -160,6 +160,9 @@ class GCodeExport {
 
   private:
     std::string feedrateWord(double speed_mm_s);
+    /// moveZ; a z-hop (up or down) is written as CuraEngine writes it: G1 with its feedrate always.
+    void writeZ(coord_um z, double speed_mm_s, bool hop);
+    std::string hopCommand(double speed_mm_s);   ///< "G1 F<speed>" (the feedrate becomes current)
     double filamentMm(double volume_mm3) const;  ///< length of the active filament holding the volume
     double volumeOnAxis(
         double volume_mm3) const;  ///< the volume in the axis unit (mm, or mm³ when volumetric)

@@ -15,6 +15,8 @@ Seen while writing this: on knot2 CuraEngine logs "Removing 1 layers because the
 lowest tip gives nothing printable at 0.1 mm) and prints every later layer one layer lower, hence its 229
 layers, and its 1 % "outside": its layer n matches the model's section at z + 0.2 mm.
 """
+import re
+
 import pytest
 
 import gcode_model
@@ -157,3 +159,36 @@ def test_tree_support_filament_within_25_percent_on_knot2(engine, corpus, report
     assert want > 1000
     assert abs(_rel(got, want)) <= TREE_SUPPORT_TOLERANCE
     assert abs(_rel(mix.filament_mm(), cura.filament_mm())) <= FILAMENT_TOLERANCE
+
+
+E_ONLY_LINE = re.compile(r"^G1 F\d+(\.\d)? E(-?[\d.]+)$")
+HOP_LINE = re.compile(r"^G1 F\d+(\.\d)? Z[\d.]+$")
+
+
+def _hops_after_retractions(path):
+    """(retractions, retractions whose next line is a z-hop written as G1 F<speed> Z<height>). A retraction is
+    an E-only G1 whose E is below the E before it (absolute extrusion; G92 E0 resets)."""
+    lines = path.read_text().splitlines()
+    e, retracts = 0.0, []
+    for i, line in enumerate(lines[:-1]):
+        if line.startswith("G92") and " E" in line:
+            e = 0.0
+        elif line.startswith("G1") and " E" in line:
+            value = float(line.rsplit(" E", 1)[1].split()[0])
+            if E_ONLY_LINE.match(line) and value < e:
+                retracts.append(i)
+            e = value
+    return len(retracts), sum(1 for i in retracts if HOP_LINE.match(lines[i + 1]))
+
+
+def test_z_hops_are_written_as_curaengine_writes_them(corpus):
+    """retraction_hop_enabled on cube20 (combing off, so every travel retracts): CuraEngine lifts right after
+    each retraction with `G1 F<speed_z_hop> Z<layer + hop>` (its feedrate always written); so does MixEngine."""
+    corpus("cube20")
+    overrides = {"retraction_hop_enabled": "True", "retraction_combing": "off"}
+    mix, cura = sbs.run_mixengine("cube20", overrides), sbs.run_cura("cube20", overrides)
+    assert mix.rc == 0 and cura.rc == 0, (mix.stderr[-300:], cura.stderr[-300:])
+    for run in (cura, mix):
+        retractions, hopped = _hops_after_retractions(run.gcode)
+        assert retractions > 500, run.engine
+        assert hopped >= 0.95 * retractions, (run.engine, retractions, hopped)

@@ -93,7 +93,7 @@ def test_wipe_script_between_layers(sliced):
     assert [line.split(" X")[0] for line in block[2:8]] == ["G0 F7200", "G0", "G0", "G0", "G0", "G0"]
     xs = [float(line.split(" X")[1].split()[0]) for line in block[2:8]]
     assert xs == [100, 120, 100, 120, 100, 120]
-    assert block[0].startswith("G1 F1500 E") and block[1].startswith("G0 F600 Z")
+    assert block[0].startswith("G1 F1500 E") and block[1].startswith("G1 F600 Z")
     assert block[-1].startswith("G1 F1500 E")
 
 

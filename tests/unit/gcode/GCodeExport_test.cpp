@@ -284,9 +284,9 @@ TEST(GCodeExport, HopRewrittenOnRequestAndLoweredBeforeExtruding) {
     g.hopTo(2000);        // up already: nothing
     g.hopTo(2000, true);  // the line again
     g.extrude({1'000, 0}, 0.0, 20);
-    EXPECT_EQ(
-        g.text(),
-        "G0 F600 Z0.2\nG1 F1500 E-6.5\nG0 F600 Z2.2\nG0 Z2.2\nG0 Z0.2\nG1 F1500 E0\nG1 F1200 X1 Y0 E0\n");
+    EXPECT_EQ(g.text(),
+              "G0 F600 Z0.2\nG1 F1500 E-6.5\nG1 F600 Z2.2\nG1 F600 Z2.2\nG1 F600 Z0.2\nG1 F1500 E0\nG1 F1200 "
+              "X1 Y0 E0\n");
 }
 
 // Each extruder's fan: P<n> when it is not fan 0, and the speed written again after a switch to another fan.

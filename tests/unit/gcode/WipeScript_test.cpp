@@ -37,13 +37,13 @@ TEST(WipeScript, RetractLiftBrushBackLowerPrimePause) {
     EXPECT_EQ(g.text(),
               ";WIPE_SCRIPT_BEGIN\n"
               "G1 F1800 E-2\n"
-              "G0 F300 Z1.2\n"
+              "G1 F300 Z1.2\n"
               "G0 F9000 X100 Y20\n"
               "G0 X120 Y20\n"
               "G0 X100 Y20\n"
               "G0 X120 Y20\n"
               "G0 X10 Y20\n"
-              "G0 F300 Z0.2\n"
+              "G1 F300 Z0.2\n"
               "G1 F1200 E0\n"
               "G4 P500\n"
               ";WIPE_SCRIPT_END\n");
