@@ -339,11 +339,10 @@ void GCodeExport::dwell(double seconds) {
 }
 
 void GCodeExport::resetExtrusionAxis() {
+    // A flow-rate offset already applied stays applied: the reset moves the coordinate, not the filament.
     std::string reset = dialect_->reset();
-    if (!reset.empty()) {
+    if (!reset.empty())
         line(reset);
-        offset_applied_ = 0;
-    }
 }
 
 void GCodeExport::setMotion(double acceleration_mm_s2, double jerk_mm_s, bool travel) {

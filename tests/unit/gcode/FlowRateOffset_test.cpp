@@ -66,5 +66,20 @@ TEST(FlowRateOffset, NothingWithoutAMaximum) {
     EXPECT_EQ(g.text(), "G1 F1800 X10 Y0 E0.41575\nG0 F9000 X0 Y0\n");
 }
 
+// MixEngine resets E at each layer start (G92 E0) where CuraEngine does not: the offset already run ahead
+// must not be added a second time after the reset, or each layer would push it out again.
+TEST(FlowRateOffset, AResetKeepsTheOffsetItDoesNotAddItAgain) {
+    GCodeExport g(compensated(false));
+    g.newExtrusionConfig();
+    g.extrude({10'000, 0}, 1.0, 30);
+    g.resetExtrusionAxis();
+    g.extrude({20'000, 0}, 1.0, 30);
+    EXPECT_EQ(g.text(),
+              ";FLOW_RATE_COMPENSATED_OFFSET = 1.000000\n"
+              "G1 F1800 X10 Y0 E1.41575\n"
+              "G92 E0\n"
+              "G1 X20 Y0 E0.41575\n");
+}
+
 }  // namespace
 }  // namespace mixengine
