@@ -1,8 +1,10 @@
 // `mixengine layers <slice arguments> -o DIR`: slice only and write what a person or a script
 // wants to look at — DIR/layers.json and one SVG per layer (DIR/layer_00000.svg, ...).
 //
-// layers.json: slicing/SliceDump.h layersToJson, the meshes' outlines united per layer, in the
-// model's own frame (machine_center_is_zero is forced on, so nothing is moved to the plate centre).
+// layers.json: slicing/SliceDump.h layersToJson, the printed meshes' outlines united per layer, in
+// the model's own frame (machine_center_is_zero is forced on, so nothing is moved to the plate centre).
+// Modifier meshes (infill meshes, support meshes, support blockers) are left out: they change how a
+// model prints, they are not its outline. Cutting meshes are drawn, as the part of the model they took.
 #include <cstdio>
 #include <filesystem>
 
@@ -18,12 +20,15 @@
 namespace mixengine {
 namespace {
 
-/// The layers of every mesh of a group merged into one list (outlines unioned per layer).
+/// The layers of every printed mesh of a group merged into one list (outlines unioned per layer).
 std::vector<SlicedLayer> mergeMeshes(const SlicedGroup& sliced) {
     std::vector<SlicedLayer> merged(sliced.heights.size());
     for (std::size_t i = 0; i < merged.size(); ++i) {
         ClipperLib::Clipper clipper;
-        for (const auto& mesh : sliced.meshes) {
+        for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
+            if (m < sliced.roles.size() && !sliced.roles[m].printsAlone())
+                continue;
+            const std::vector<SlicedLayer>& mesh = sliced.meshes[m];
             clipper.AddPaths(mesh[i].outlines, ClipperLib::ptSubject, true);
             merged[i].open_polylines.insert(merged[i].open_polylines.end(), mesh[i].open_polylines.begin(),
                                             mesh[i].open_polylines.end());

@@ -84,3 +84,16 @@ def test_open_mesh_layers(name, engine, corpus, report, tmp_path):
     report(f"areas {name} (open mesh, report only): {len(layers)} layers, {len(ambiguous)} open reference "
            f"sections, {opened} layers with open polylines in mixengine, {len(bad)} closed sections over "
            f"{100 * REL_TOL} % (worst {100 * worst:.3f} %), {len(bad_outline)} outline/area mismatches")
+
+
+@pytest.mark.parametrize("role", ["anti_overhang_mesh", "support_mesh", "infill_mesh"])
+def test_modifier_meshes_are_not_drawn_as_outlines(corpus, tmp_path, role):
+    """cube20 and a second cube20 moved 15 mm in x as a modifier: the layers show the printed cube alone
+    (20 × 20 = 400 mm² on every layer); the modifier changes how the cube prints, it is not an outline."""
+    cube = corpus("cube20")
+    proc = helpers.mixengine("layers", "-l", cube, "-l", cube, "-s", "mesh_position_x=15", "-s", f"{role}=True",
+                             "-o", tmp_path)
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    areas = [layer["area_mm2"] for layer in helpers.read_layers(tmp_path)]
+    assert len(areas) > 90
+    assert areas == pytest.approx([400.0] * len(areas), abs=0.01)
