@@ -37,21 +37,13 @@ bool adaptiveOn(const Settings& s) {
     return s.has("adaptive_layer_height_enabled") && s.boolean("adaptive_layer_height_enabled");
 }
 
-bool printedAsModel(const Settings& s) {
-    for (const char* key : {"infill_mesh", "cutting_mesh", "anti_overhang_mesh"}) {
-        if (s.has(key) && s.boolean(key))
-            return false;
-    }
-    return true;
-}
-
 /// adaptive_layer_height_enabled: the group's layers from the slopes of its printed meshes
 /// (slicing/AdaptiveLayers.h).
 std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance tolerance) {
     const Settings& s = group.settings;
     std::vector<FaceSlope> faces;
     for (const SceneMesh& m : group.meshes) {
-        if (!printedAsModel(m.settings))
+        if (!volumeRoleOf(m.settings, m.mesh).printed())
             continue;
         std::vector<FaceSlope> own = faceSlopes(m.mesh);
         faces.insert(faces.end(), own.begin(), own.end());

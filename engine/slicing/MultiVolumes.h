@@ -34,6 +34,9 @@ struct VolumeRole {
 
     /// Printed as a model of its own (walls, skin, infill) without being a modifier of others.
     bool printsAlone() const { return !infill_mesh && !support_mesh && !anti_overhang_mesh; }
+    /// Puts material of its own on the plate, support meshes included (CuraEngine's Mesh::isPrinted;
+    /// e.g. the slopes adaptive layers follow).
+    bool printed() const { return !infill_mesh && !cutting_mesh && !anti_overhang_mesh; }
 };
 
 struct VolumeParams {

@@ -136,5 +136,21 @@ TEST(MultiVolumes, BoxesMeetWhenTheyTouchOrOverlap) {
     EXPECT_FALSE(boxesMeet(a.bounds, AABB3{}));
 }
 
+// A support mesh prints (its support) but not as a model; a cutting mesh is a model's part, not material of
+// its own.
+TEST(MultiVolumes, PrintedAndPrintsAloneAsCuraEngineTellsThem) {
+    const auto role = [](bool VolumeRole::*flag) {
+        VolumeRole r;
+        if (flag)
+            r.*flag = true;
+        return std::pair{r.printed(), r.printsAlone()};
+    };
+    EXPECT_EQ(role(nullptr), std::pair(true, true));
+    EXPECT_EQ(role(&VolumeRole::support_mesh), std::pair(true, false));
+    EXPECT_EQ(role(&VolumeRole::cutting_mesh), std::pair(false, true));
+    EXPECT_EQ(role(&VolumeRole::infill_mesh), std::pair(false, false));
+    EXPECT_EQ(role(&VolumeRole::anti_overhang_mesh), std::pair(false, false));
+}
+
 }  // namespace
 }  // namespace mixengine
