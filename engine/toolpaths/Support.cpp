@@ -124,6 +124,9 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
             fills.body.pattern = InfillPattern::Grid;
         fills.body.wall_count += 1;
     }
+    // as CuraEngine: the body's infill overlaps its walls by infill_overlap_mm (none without walls)
+    if (fills.body.wall_count > 0 && body.has("infill_overlap_mm"))
+        fills.body.overlap_um = body.lengthMicrons("infill_overlap_mm");
     fills.body.style = featureStyle(
         body, {"support_line_width", "speed_support_infill", "support_material_flow", body_key}, layer);
     fills.body.style.extruder = body_nr;
