@@ -116,13 +116,16 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     return p;
 }
 
-/// travel_compensate_overlapping_walls_0_enabled (toolpaths/WallOverlap.h): less flow where the outer
-/// wall runs closer than its width to another piece of the outer walls, wall_min_flow the least.
+/// travel_compensate_overlapping_walls_0_enabled / _x_enabled (toolpaths/WallOverlap.h): less flow
+/// where the outer walls (the inner walls, all levels together) run closer than their width to another
+/// piece of them, wall_min_flow the least; as CuraEngine 4.13, the inner walls at 1 µm less than their
+/// width, so that neighbouring walls, one width apart, do not count.
 void compensateOverlaps(std::vector<ExtrusionPath>& walls, const Settings& s, const WallParams& p) {
-    if (!flag(s, "travel_compensate_overlapping_walls_0_enabled"))
-        return;
     const double min_flow = s.has("wall_min_flow") ? s.ratio("wall_min_flow") : 0.0;
-    compensateWallOverlaps(walls, Feature::WallOuter, {p.outer_width_um, min_flow});
+    if (flag(s, "travel_compensate_overlapping_walls_0_enabled"))
+        compensateWallOverlaps(walls, Feature::WallOuter, {p.outer_width_um, min_flow});
+    if (flag(s, "travel_compensate_overlapping_walls_x_enabled"))
+        compensateWallOverlaps(walls, Feature::WallInner, {p.inner_width_um - 1, min_flow});
 }
 
 SkinParams skinParams(const Settings& s, const SkinReferences& refs) {

@@ -1,5 +1,5 @@
 #pragma once
-// Overlap compensation of walls (travel_compensate_overlapping_walls_0_enabled: the outer walls), with
+// Overlap compensation of walls (travel_compensate_overlapping_walls_0_enabled / _x_enabled), with
 // the rule of CuraEngine 4.13's wall overlap computation:
 //   - the walls of one set (the outer walls of a layer) are taken in print order, each loop from
 //     its first point; a line piece that runs closer than `width_um` to a piece of the set printed
