@@ -72,7 +72,8 @@ struct ExtrusionPath {
     bool spiral = false;
     std::size_t spiral_flat_tail = 0;
     /// Empty, or one flow per point: flows[k] is the flow of the line that ends at points[k]
-    /// (flows[0] is not used); 0 moves without extruding. Replaces `flow` when given.
+    /// (flows[0]: a loop's closing line; not used on an open path); 0 moves without extruding.
+    /// Replaces `flow` when given.
     std::vector<double> flows;
 
     /// Printed with bridge settings (toolpaths/BridgeSkin.h): ;BRIDGE after its ;TYPE:, and the

@@ -19,6 +19,7 @@
 #include "toolpaths/Skin.h"
 #include "toolpaths/SkinPaths.h"
 #include "toolpaths/Spiralize.h"
+#include "toolpaths/WallOverlap.h"
 #include "toolpaths/Walls.h"
 
 namespace mixengine {
@@ -113,6 +114,18 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.simplify_deviation_um =
         s.has("meshfix_maximum_deviation") ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
     return p;
+}
+
+/// travel_compensate_overlapping_walls_0_enabled / _x_enabled (toolpaths/WallOverlap.h): less flow
+/// where the outer walls (the inner walls, all levels together) run closer than their width to another
+/// piece of them, wall_min_flow the least; as CuraEngine 4.13, the inner walls at 1 µm less than their
+/// width, so that neighbouring walls, one width apart, do not count.
+void compensateOverlaps(std::vector<ExtrusionPath>& walls, const Settings& s, const WallParams& p) {
+    const double min_flow = s.has("wall_min_flow") ? s.ratio("wall_min_flow") : 0.0;
+    if (flag(s, "travel_compensate_overlapping_walls_0_enabled"))
+        compensateWallOverlaps(walls, Feature::WallOuter, {p.outer_width_um, min_flow});
+    if (flag(s, "travel_compensate_overlapping_walls_x_enabled"))
+        compensateWallOverlaps(walls, Feature::WallInner, {p.inner_width_um - 1, min_flow});
 }
 
 SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
@@ -320,6 +333,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
         if (bridge_walls.enabled && layer > 0)
             markBridgedWalls(walls.walls, outlines,
                              adjustedOutlines(layers[i - 1].outlines, settings, layer - 1), bridge_walls);
+        compensateOverlaps(walls.walls, settings, params);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? out.walls[i].outer_walls : out.walls[i].inner_walls)
                 .push_back(std::move(path));

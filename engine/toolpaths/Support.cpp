@@ -46,6 +46,18 @@ SupportTowerParams towerParams(const Settings& s, coord_um layer_height) {
     return t;
 }
 
+/// The joined support's smoothing shortcut (toolpaths/SupportSmoothing.h): as CuraEngine, the widest
+/// of the support line and, when on, the roof and floor lines.
+coord_um smoothingDistance(const Settings& s) {
+    auto width = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
+    coord_um widest = width("support_line_width");
+    if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
+        widest = std::max(widest, width("support_roof_line_width"));
+    if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
+        widest = std::max(widest, width("support_bottom_line_width"));
+    return widest;
+}
+
 SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     SupportAreaParams p;
     p.top_gap_layers = layersFor(s.lengthMicrons("support_top_distance"), layer_height, true);
@@ -69,6 +81,7 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
         p.conical_min_width_um = s.lengthMicrons("support_conical_min_width");
     }
     p.towers = towerParams(s, layer_height);
+    p.smoothing_um = smoothingDistance(s);
     if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
         p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
     if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
@@ -124,6 +137,9 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
             fills.body.pattern = InfillPattern::Grid;
         fills.body.wall_count += 1;
     }
+    // as CuraEngine: the body's infill overlaps its walls by infill_overlap_mm (none without walls)
+    if (fills.body.wall_count > 0 && body.has("infill_overlap_mm"))
+        fills.body.overlap_um = body.lengthMicrons("infill_overlap_mm");
     fills.body.style = featureStyle(
         body, {"support_line_width", "speed_support_infill", "support_material_flow", body_key}, layer);
     fills.body.style.extruder = body_nr;

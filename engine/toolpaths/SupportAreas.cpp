@@ -7,6 +7,7 @@
 #include "geometry/Angles.h"
 #include "toolpaths/LayerWindows.h"
 #include "toolpaths/PolygonOps.h"
+#include "toolpaths/SupportSmoothing.h"
 
 namespace mixengine {
 namespace {
@@ -25,6 +26,7 @@ Paths disallowedArea(const Paths& model, const Paths& own_overhang, const Suppor
 constexpr coord_um kSimplifyUm = 25;  // the model's outlines, once per layer
 constexpr coord_um kCleanUm = 5;      // the propagated support, every layer (must not accumulate)
 constexpr double kCuraMiterLimit = 1.2;
+constexpr double kSmoothingAngleDegrees = 135;  // CuraEngine's: sharper notches are filled
 
 /// Conical support: the support from above shrunk (or grown) by one layer's step, its parts
 /// narrower than the minimum width kept as they are.
@@ -75,6 +77,7 @@ std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<P
         if (p.join_distance_um > 0)  // as CuraEngine: its offsets bevel at a miter limit of 1.2
             current = offsetMiter(offsetMiter(current, p.join_distance_um, kCuraMiterLimit),
                                   -p.join_distance_um, kCuraMiterLimit);
+        current = smoothOutward(current, kSmoothingAngleDegrees, p.smoothing_um);
         current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
         support[i] = current;
         if (towers)

@@ -6,7 +6,8 @@
 //   - the overhang of layer n is supported from layer n − top_gap − 1 downwards, top_gap =
 //     ceil(support_top_distance / layer_height) empty layers under the model; on the way down each
 //     layer's support is united with the one above, closed by support_join_distance (gaps
-//     narrower than twice that are filled, mitred joins, so that it does not drift);
+//     narrower than twice that are filled, mitred joins, so that it does not drift) and smoothed
+//     outward (its notches sharper than 135° filled, toolpaths/SupportSmoothing.h);
 //     the model itself is cut out on the way down, and so is the model bottom_gap =
 //     ceil(support_bottom_distance / layer_height) layers below (the support stops that far above it);
 //   - conical support (support_conical_enabled, angle ≠ 0): on the way down the support from above
@@ -39,6 +40,9 @@ struct SupportAreaParams {
     bool z_overrides_xy = true;
     bool buildplate_only = false;
     coord_um join_distance_um = 0;
+    /// the joined area's notches are filled with shortcuts this long (toolpaths/SupportSmoothing.h;
+    /// CuraEngine's widest of the support, roof and floor lines); 0 = not
+    coord_um smoothing_um = 0;
     coord_um offset_um = 0;
     double min_area_um2 = 0;
     int roof_layers = 0;                ///< 0 = no roof interface

@@ -34,6 +34,7 @@ InfillParams infillParams(const SupportFill& fill, Feature feature, coord_um z) 
     p.extruder = fill.style.extruder;
     p.zigzag_end_pieces = fill.connect_zigzags;
     p.zag_skip_count = fill.zag_skip_count;
+    p.overlap_um = fill.overlap_um;
     return p;
 }
 
@@ -59,6 +60,22 @@ InfillParams densityOf(InfillParams p, std::size_t k, std::size_t last) {
     return p;
 }
 
+/// The infill of an area printed `layers` layers thick: as CuraEngine 4.13, its lines are laid out as
+/// for a line `layers` times as wide (so they keep that much farther from the area's edge), and
+/// printed with the body's width at `layers` times its flow.
+void appendThickInfill(const Paths& area, InfillParams p, std::size_t layers,
+                       std::vector<ExtrusionPath>& out) {
+    if (area.empty())
+        return;
+    const coord_um width_um = p.line_width_um;
+    p.line_width_um = width_um * static_cast<coord_um>(layers);
+    p.flow *= double(layers);
+    for (ExtrusionPath& path : generateInfill(area, p)) {
+        path.width_um = width_um;
+        out.push_back(std::move(path));
+    }
+}
+
 /// The body with its arranged infill: thicker areas first, then the single-layer densities.
 void appendArrangedFill(const Paths& area, const LayerInfill& arranged, const SupportFill& fill, coord_um z,
                         std::vector<ExtrusionPath>& out) {
@@ -76,9 +93,8 @@ void appendArrangedFill(const Paths& area, const LayerInfill& arranged, const Su
         for (std::size_t k = last + 1; k-- > 0;) {
             if (t >= arranged.by_density[k].size())
                 continue;
-            InfillParams p = densityOf(base, k, last);
-            p.flow = base.flow * double(t + 1);
-            appendInfill(intersectAll(arranged.by_density[k][t], inside), p, out);
+            appendThickInfill(intersectAll(arranged.by_density[k][t], inside), densityOf(base, k, last),
+                              t + 1, out);
         }
     }
     for (std::size_t k = last + 1; k-- > 0;)

@@ -118,5 +118,23 @@ TEST(SupportAreas, ConicalSupportNarrowsGoingDownUnlessNarrowerThanTheMinimumWid
     EXPECT_NEAR(areaUm2(kept[0].support), areaUm2(straight[0].support), 1e6);
 }
 
+TEST(SupportAreas, TheJoinedAreasNotchIsSmoothedOutward) {
+    // An L-shaped plate on layers 50 … 59 over a small stem in its far corner: the support under it
+    // keeps the L's 90° notch at (0, 0) unless smoothed, when a 400 µm shortcut fills it (ends
+    // 283 µm from the corner: 283² / 2 µm² more on every layer).
+    test::Stack s = test::prismStack(60);
+    const Path l{{-10'000, -10'000}, {10'000, -10'000}, {10'000, 0}, {0, 0}, {0, 10'000}, {-10'000, 10'000}};
+    test::fill(s, 0, 50, {rect(-10'000, -10'000, -8'000, -8'000)});
+    test::fill(s, 50, 60, {l});
+    const std::vector<SupportLayerAreas> sharp = supportOf(s, defaults());
+    SupportAreaParams p = defaults();
+    p.smoothing_um = 400;
+    const std::vector<SupportLayerAreas> smooth = supportOf(s, p);
+    for (const int layer : {20, 45})
+        EXPECT_NEAR(areaUm2(smooth[layer].support) - areaUm2(sharp[layer].support), 283.0 * 283.0 / 2,
+                    2'000.0)
+            << layer;
+}
+
 }  // namespace
 }  // namespace mixengine

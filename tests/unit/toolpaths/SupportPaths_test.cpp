@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
+#include <utility>
+
 namespace mixengine {
 namespace {
 
@@ -58,6 +62,59 @@ TEST(SupportPaths, GradualDensitiesAndThickerLayers) {
     for (const ExtrusionPath& p : doubled)
         EXPECT_DOUBLE_EQ(p.flow, 2.0);
     EXPECT_NEAR(flowTimesLength(doubled), 2.0 * full, 0.02 * full);
+}
+
+/// The smallest and largest Y of every point of `paths`.
+std::pair<coord_um, coord_um> yRange(const std::vector<ExtrusionPath>& paths) {
+    coord_um lo = std::numeric_limits<coord_um>::max();
+    coord_um hi = std::numeric_limits<coord_um>::min();
+    for (const ExtrusionPath& p : paths) {
+        for (const Point2& q : p.points) {
+            lo = std::min(lo, q.Y);
+            hi = std::max(hi, q.Y);
+        }
+    }
+    return {lo, hi};
+}
+
+TEST(SupportPaths, ThickerZigzagKeepsAsFarFromTheEdgeAsAWiderLine) {
+    // As CuraEngine 4.13: support infill printed two layers thick is laid out for a line twice as
+    // wide (its zigzag runs 2 × 400 / 2 = 400 µm inside the area, not 200 µm), printed 400 µm wide at
+    // twice the flow.
+    SupportLayerAreas areas;
+    areas.support = square(0, 0, 20'000);
+    SupportLayerFills fills = lines2mm();
+    fills.body.pattern = InfillPattern::ZigZag;
+    LayerInfill single;
+    single.by_density = {{areas.support}};
+    EXPECT_EQ(yRange(supportLayerPaths(areas, fills, 200, &single)), std::make_pair(200LL, 19'800LL));
+    LayerInfill thick;
+    thick.by_density = {{Paths{}, areas.support}};
+    const std::vector<ExtrusionPath> doubled = supportLayerPaths(areas, fills, 200, &thick);
+    ASSERT_FALSE(doubled.empty());
+    EXPECT_EQ(yRange(doubled), std::make_pair(400LL, 19'600LL));
+    for (const ExtrusionPath& p : doubled) {
+        EXPECT_EQ(p.width_um, 400);
+        EXPECT_DOUBLE_EQ(p.flow, 2.0);
+    }
+}
+
+TEST(SupportPaths, InfillOverlapsTheWallsBySupportOverlap) {
+    // One wall (its centre 200 µm inside, its inner edge at 400 µm); the zigzag's border runs half a
+    // line inside that edge (600 µm), less the 120 µm overlap CuraEngine gives it when there are walls.
+    SupportLayerAreas areas;
+    areas.support = square(0, 0, 20'000);
+    SupportLayerFills fills = lines2mm();
+    fills.body.pattern = InfillPattern::ZigZag;
+    fills.body.wall_count = 1;
+    std::vector<ExtrusionPath> paths = supportLayerPaths(areas, fills, 200);
+    ASSERT_GE(paths.size(), 2U);
+    paths.erase(paths.begin());  // the wall
+    EXPECT_EQ(yRange(paths), std::make_pair(600LL, 19'400LL));
+    fills.body.overlap_um = 120;
+    paths = supportLayerPaths(areas, fills, 200);
+    paths.erase(paths.begin());
+    EXPECT_EQ(yRange(paths), std::make_pair(480LL, 19'520LL));
 }
 
 }  // namespace
