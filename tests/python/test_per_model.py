@@ -102,8 +102,7 @@ def test_layer_count_as_curaengine(runs, name, report):
     assert mix.layer_count() == cura.layer_count()
 
 
-@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.xfail(strict=True, reason=SKIRT_GAP))
-                                  if n == "support_mesh_alone" else n for n in SCENES])
+@pytest.mark.parametrize("name", list(SCENES))
 def test_filament_as_curaengine(runs, name):
     mix, cura = runs(name)
     assert mix.filament_mm() == pytest.approx(cura.filament_mm(), rel=FILAMENT_TOLERANCE, abs=1.0)
