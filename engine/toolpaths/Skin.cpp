@@ -1,6 +1,7 @@
 #include "toolpaths/Skin.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 #include "common/ParallelFor.h"
 #include "toolpaths/LayerWindows.h"
@@ -11,19 +12,26 @@ namespace {
 
 constexpr double kMinSkinAreaUm2 = 400.0 * 400.0;  // CuraEngine's 0.4 × 0.4 mm²
 
-/// Removal width (an opening by half of it), then expansion, clipped to the inner area.
-Paths reshape(Paths skin, coord_um preshrink, coord_um expand, coord_um min_width, const Paths& inner) {
-    if (skin.empty())
+/// The skin grown by its expand distance plus the removal width left over (which the grown reference
+/// regions took off it), only its parts at least min_width wide when that is set (less what the
+/// removal width already removed), then clipped to the inner area: CuraEngine 4.13's expansion.
+Paths expandSkin(Paths skin, coord_um preshrink, coord_um expand, coord_um min_width, const Paths& inner) {
+    const coord_um half = std::max<coord_um>(0, min_width / 2 - preshrink / 2);
+    const coord_um outset = expand + preshrink + half;
+    if (skin.empty() || outset == 0)
         return skin;
-    if (preshrink > 0)
-        skin = openPolygons(skin, preshrink / 2);
-    if (expand != 0) {
-        const coord_um half = min_width / 2;
-        Paths grown =
-            half > 0 ? offsetPolygons(offsetPolygons(skin, -half), half + expand) : offsetMiter(skin, expand);
-        skin = half > 0 ? unionOf(skin, grown) : std::move(grown);
-    }
-    return (preshrink > 0 || expand != 0) ? intersectAll(skin, inner) : skin;
+    Paths grown = offsetMiter(half > 0 ? offsetMiter(skin, -half) : skin, outset);
+    if (half > 0 || outset < 0)
+        grown = unionOf(grown, skin);
+    return intersectAll(grown, inner);
+}
+
+/// Each layer's reference region grown by the removal width left over, as CuraEngine 4.13 grows
+/// every layer's walls before comparing: the skin loses that much along the covered area.
+std::vector<Paths> grownReferences(const std::vector<Paths>& reference, coord_um by, int threads) {
+    std::vector<Paths> grown(reference.size());
+    parallelFor(reference.size(), threads, [&](std::size_t i) { grown[i] = offsetMiter(reference[i], by); });
+    return grown;
 }
 
 /// not_air for the bottom skin of layer i when the window reaches below layer 0: layers 0 … i-1.
@@ -49,12 +57,18 @@ Paths outerSurfaces(const Paths& skin, const std::vector<Paths>& reference, std:
 }  // namespace
 
 SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_width, coord_um inner_width) {
+    constexpr coord_um kSnapUm = 10;  // a removal width this close to a wall's centre ends there
     SkinReference ref{std::max(0, wall_count), preshrink};
     while (ref.wall > 0) {
         // From wall k's centre to wall k-1's (or, from the outer wall, to the outline).
-        const coord_um step = ref.wall == 1   ? outer_width / 2
-                              : ref.wall == 2 ? outer_width / 2 + inner_width / 2
-                                              : inner_width;
+        const coord_um here = ref.wall == 1 ? outer_width : inner_width;
+        const coord_um next = ref.wall == 1 ? 0 : ref.wall == 2 ? outer_width : inner_width;
+        const coord_um step = (here + next) / 2;
+        if (std::abs(ref.leftover_preshrink_um - step) <= kSnapUm) {
+            ref.leftover_preshrink_um = 0;
+            --ref.wall;
+            break;
+        }
         if (ref.leftover_preshrink_um < step)
             break;
         ref.leftover_preshrink_um -= step;
@@ -66,14 +80,20 @@ SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_w
 std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                                         const std::vector<Paths>& inner_areas, const SkinParams& p,
                                         int threads) {
-    const std::vector<Paths>& top_reference = *references.top;
-    const std::vector<Paths>& bottom_reference = *references.bottom;
-    const std::vector<Paths>& roof_reference = references.roofing ? *references.roofing : top_reference;
-    const int n = static_cast<int>(top_reference.size());
+    const std::vector<Paths>& roof_reference = references.roofing ? *references.roofing : *references.top;
+    const int n = static_cast<int>(references.top->size());
     const int roofing_layers = std::min(p.roofing_layers, p.top_layers);
+    // Each layer's reference grown by the removal width left over, then intersected over the window.
+    const std::vector<Paths> top_reference = grownReferences(*references.top, p.top_preshrink_um, threads);
     const std::vector<Paths> above = windowIntersections(top_reference, p.top_layers, threads);
     // Usually the same regions over the same number of layers (equal preshrink and layer counts).
-    const bool same_windows = p.bottom_layers == p.top_layers && bottom_reference == top_reference;
+    const bool same_reference =
+        p.bottom_preshrink_um == p.top_preshrink_um && *references.bottom == *references.top;
+    const std::vector<Paths> own_bottom_reference =
+        same_reference ? std::vector<Paths>{}
+                       : grownReferences(*references.bottom, p.bottom_preshrink_um, threads);
+    const std::vector<Paths>& bottom_reference = same_reference ? top_reference : own_bottom_reference;
+    const bool same_windows = same_reference && p.bottom_layers == p.top_layers;
     const std::vector<Paths> own_below =
         same_windows ? std::vector<Paths>{} : windowIntersections(bottom_reference, p.bottom_layers, threads);
     const std::vector<Paths>& below = same_windows ? above : own_below;
@@ -95,10 +115,10 @@ std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
             else
                 bottom = differenceOf(inner, prefixIntersection(bottom_reference, i));
         }
-        top =
-            reshape(std::move(top), p.top_preshrink_um, p.top_expand_um, p.min_width_for_expansion_um, inner);
-        bottom = reshape(std::move(bottom), p.bottom_preshrink_um, p.bottom_expand_um,
-                         p.min_width_for_expansion_um, inner);
+        top = expandSkin(std::move(top), p.top_preshrink_um, p.top_expand_um, p.min_width_for_expansion_um,
+                         inner);
+        bottom = expandSkin(std::move(bottom), p.bottom_preshrink_um, p.bottom_expand_um,
+                            p.min_width_for_expansion_um, inner);
         SkinAreas& out = result[index];
         out.skin = removeSmallIslands(unionOf(top, bottom), kMinSkinAreaUm2);
         Paths infill = differenceOf(inner, out.skin);

@@ -86,11 +86,34 @@ TEST(Skin, RemovalWidthDropsNarrowStripsAndExpansionGrowsIntoInfill) {
     EXPECT_EQ(areaUm2(grown.infill), 17'000.0 * 17'000.0);
 }
 
+TEST(Skin, RemovalWidthCountsFromTheCoveredAreaOnly) {
+    // Layer 1: two 10 mm squares joined by a 0.15 mm wide, 4 mm long neck; layer 2 covers the
+    // squares only. The neck has air above: it is top skin although narrower than the removal
+    // width, which takes 0.2 mm off it along the covered squares alone, given back by the expansion.
+    const Paths squares{test::square(0, 0, 10'000), test::square(14'000, 0, 10'000)};
+    const Paths neck{{{10'000, 4'925}, {14'000, 4'925}, {14'000, 5'075}, {10'000, 5'075}}};
+    const std::vector<Paths> areas{unionOf(squares, neck), unionOf(squares, neck), squares};
+    SkinParams p = layersOnly(1, 0);
+    p.top_preshrink_um = 200;
+    EXPECT_NEAR(areaUm2(skins(areas, p)[1].skin), areaUm2(neck), 1e3);
+    // Grown 0.4 mm (plus the 0.2 mm given back) into each square: 0.4 mm deep, 0.15 + 2 × 0.6 mm wide.
+    p.top_expand_um = 400;
+    const SkinAreas s = skins(areas, p)[1];
+    EXPECT_NEAR(areaUm2(intersectAll(s.skin, neck)), areaUm2(neck), 1e3);
+    EXPECT_NEAR(areaUm2(intersectAll(s.skin, {test::square(0, 0, 10'000)})), 400.0 * 1'350, 0.05 * 540e3);
+}
+
 TEST(Skin, ReferenceWallMovesOutWithTheRemovalWidth) {
     // Two walls of 0.4 mm: the innermost centre region is the reference until the removal width
     // covers 0.4 mm (to the outer wall's centre), then 0.2 mm more (to the outline).
     EXPECT_EQ(skinReference(0, 2, 400, 400).wall, 2);
-    EXPECT_EQ(skinReference(399, 2, 400, 400).wall, 2);
+    EXPECT_EQ(skinReference(389, 2, 400, 400).wall, 2);
+    // Within 10 µm of a wall's centre it ends there, nothing left over (CuraEngine 4.13's snap).
+    for (coord_um near : {390, 410}) {
+        const SkinReference snapped = skinReference(near, 2, 400, 400);
+        EXPECT_EQ(snapped.wall, 1) << near;
+        EXPECT_EQ(snapped.leftover_preshrink_um, 0) << near;
+    }
     const SkinReference half = skinReference(500, 2, 400, 400);
     EXPECT_EQ(half.wall, 1);
     EXPECT_EQ(half.leftover_preshrink_um, 100);
