@@ -34,6 +34,46 @@ std::vector<Paths> grownReferences(const std::vector<Paths>& reference, coord_um
     return grown;
 }
 
+/// CuraEngine 4.13's small-area removal: the outlines whose own area (holes not taken off) is under
+/// min_area_um2 go, with the small holes that lie in them; every other hole stays.
+Paths removeSmallOutlines(const Paths& polygons, double min_area_um2) {
+    std::vector<bool> dropped(polygons.size(), false);
+    std::vector<std::size_t> small_holes;
+    bool any = false;
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+        const double area = ClipperLib::Area(polygons[k]);
+        if (std::abs(area) >= min_area_um2)
+            continue;
+        if (area >= 0)
+            dropped[k] = any = true;
+        else
+            small_holes.push_back(k);
+    }
+    if (!any)
+        return polygons;
+    for (std::size_t hole : small_holes) {
+        for (std::size_t k = 0; k < polygons.size() && !polygons[hole].empty(); ++k) {
+            if (dropped[k] && k != hole && ClipperLib::PointInPolygon(polygons[hole][0], polygons[k]) != 0) {
+                dropped[hole] = true;
+                break;
+            }
+        }
+    }
+    Paths kept;
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+        if (!dropped[k])
+            kept.push_back(polygons[k]);
+    }
+    return kept;
+}
+
+/// inner less what covers it; with min_infill_area, the covering pieces under it do not count.
+Paths uncovered(const Paths& inner, const Paths& covered, double min_area_um2) {
+    if (min_area_um2 > 0)
+        return differenceOf(inner, removeSmallOutlines(covered, min_area_um2));
+    return differenceOf(inner, covered);
+}
+
 /// not_air for the bottom skin of layer i when the window reaches below layer 0: layers 0 … i-1.
 Paths prefixIntersection(const std::vector<Paths>& present, int i) {
     Paths result = present[0];
@@ -52,6 +92,68 @@ Paths outerSurfaces(const Paths& skin, const std::vector<Paths>& reference, std:
     const Paths top_most = differenceOf(skin, above);
     const Paths bottom_most = i > 0 ? differenceOf(skin, reference[i - 1]) : skin;
     return unionOf(top_most, bottom_most);
+}
+
+/// What every layer's skin is compared with: the reference regions grown by the removal width left
+/// over, and their intersections over the top, bottom and roofing windows (result[i]: layers i …
+/// i + window − 1). The bottom ones are usually the top ones (same regions, preshrink and count).
+class Windows {
+  public:
+    Windows(const SkinReferenceRegions& references, const SkinParams& p, int threads)
+        : same_reference_(p.bottom_preshrink_um == p.top_preshrink_um &&
+                          *references.bottom == *references.top),
+          same_windows_(same_reference_ && p.bottom_layers == p.top_layers),
+          roof_reference_(references.roofing ? *references.roofing : *references.top),
+          top_reference_(grownReferences(*references.top, p.top_preshrink_um, threads)),
+          above_(windowIntersections(top_reference_, p.top_layers, threads)),
+          roof_above_(
+              windowIntersections(roof_reference_, std::min(p.roofing_layers, p.top_layers), threads)) {
+        if (!same_reference_)
+            own_bottom_reference_ = grownReferences(*references.bottom, p.bottom_preshrink_um, threads);
+        if (!same_windows_)
+            own_below_ = windowIntersections(bottomReference(), p.bottom_layers, threads);
+    }
+    const std::vector<Paths>& above() const { return above_; }
+    const std::vector<Paths>& below() const { return same_windows_ ? above_ : own_below_; }
+    const std::vector<Paths>& bottomReference() const {
+        return same_reference_ ? top_reference_ : own_bottom_reference_;
+    }
+    const std::vector<Paths>& roofReference() const { return roof_reference_; }
+    const std::vector<Paths>& roofAbove() const { return roof_above_; }
+
+  private:
+    bool same_reference_, same_windows_;
+    const std::vector<Paths>& roof_reference_;
+    std::vector<Paths> top_reference_, above_, roof_above_, own_bottom_reference_, own_below_;
+};
+
+Paths topSkin(const Windows& w, const Paths& inner, int i, int n, const SkinParams& p) {
+    if (p.top_layers <= 0)
+        return {};
+    if (i + p.top_layers >= n)
+        return inner;
+    return uncovered(inner, w.above()[static_cast<std::size_t>(i + 1)], p.min_infill_area_um2);
+}
+
+Paths bottomSkin(const Windows& w, const Paths& inner, int i, const SkinParams& p) {
+    if (p.bottom_layers <= 0 && i >= p.initial_bottom_layers)
+        return {};
+    if (i < p.initial_bottom_layers || i == 0)
+        return inner;
+    if (i >= p.bottom_layers)
+        return uncovered(inner, w.below()[static_cast<std::size_t>(i - p.bottom_layers)],
+                         p.min_infill_area_um2);
+    return uncovered(inner, prefixIntersection(w.bottomReference(), i), p.min_infill_area_um2);
+}
+
+/// The part of the skin with air within roofing_layers above (none where the roofing reference has
+/// nothing of it on the layer below).
+Paths roofingOf(const Paths& skin, const Windows& w, int i, int n, int roofing_layers) {
+    const std::size_t index = static_cast<std::size_t>(i);
+    Paths covered = i + roofing_layers < n ? w.roofAbove()[index + 1] : Paths{};
+    if (i > 0)
+        covered = unionOf(covered, differenceOf(w.roofReference()[index], w.roofReference()[index - 1]));
+    return differenceOf(skin, covered);
 }
 
 }  // namespace
@@ -80,59 +182,29 @@ SkinReference skinReference(coord_um preshrink, int wall_count, coord_um outer_w
 std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                                         const std::vector<Paths>& inner_areas, const SkinParams& p,
                                         int threads) {
-    const std::vector<Paths>& roof_reference = references.roofing ? *references.roofing : *references.top;
     const int n = static_cast<int>(references.top->size());
     const int roofing_layers = std::min(p.roofing_layers, p.top_layers);
-    // Each layer's reference grown by the removal width left over, then intersected over the window.
-    const std::vector<Paths> top_reference = grownReferences(*references.top, p.top_preshrink_um, threads);
-    const std::vector<Paths> above = windowIntersections(top_reference, p.top_layers, threads);
-    // Usually the same regions over the same number of layers (equal preshrink and layer counts).
-    const bool same_reference =
-        p.bottom_preshrink_um == p.top_preshrink_um && *references.bottom == *references.top;
-    const std::vector<Paths> own_bottom_reference =
-        same_reference ? std::vector<Paths>{}
-                       : grownReferences(*references.bottom, p.bottom_preshrink_um, threads);
-    const std::vector<Paths>& bottom_reference = same_reference ? top_reference : own_bottom_reference;
-    const bool same_windows = same_reference && p.bottom_layers == p.top_layers;
-    const std::vector<Paths> own_below =
-        same_windows ? std::vector<Paths>{} : windowIntersections(bottom_reference, p.bottom_layers, threads);
-    const std::vector<Paths>& below = same_windows ? above : own_below;
-    const std::vector<Paths> roof_above = windowIntersections(roof_reference, roofing_layers, threads);
+    const Windows windows(references, p, threads);
     std::vector<SkinAreas> result(inner_areas.size());
     parallelFor(inner_areas.size(), threads, [&](std::size_t index) {
         const int i = static_cast<int>(index);
         const Paths& inner = inner_areas[index];
         if (inner.empty())
             return;
-        Paths top, bottom;
-        if (p.top_layers > 0)
-            top = i + p.top_layers < n ? differenceOf(inner, above[index + 1]) : inner;
-        if (p.bottom_layers > 0 || i < p.initial_bottom_layers) {
-            if (i < p.initial_bottom_layers || i == 0)
-                bottom = inner;
-            else if (i - p.bottom_layers >= 0)
-                bottom = differenceOf(inner, below[static_cast<std::size_t>(i - p.bottom_layers)]);
-            else
-                bottom = differenceOf(inner, prefixIntersection(bottom_reference, i));
-        }
-        top = expandSkin(std::move(top), p.top_preshrink_um, p.top_expand_um, p.min_width_for_expansion_um,
-                         inner);
-        bottom = expandSkin(std::move(bottom), p.bottom_preshrink_um, p.bottom_expand_um,
-                            p.min_width_for_expansion_um, inner);
+        const Paths top = expandSkin(topSkin(windows, inner, i, n, p), p.top_preshrink_um, p.top_expand_um,
+                                     p.min_width_for_expansion_um, inner);
+        const Paths bottom = expandSkin(bottomSkin(windows, inner, i, p), p.bottom_preshrink_um,
+                                        p.bottom_expand_um, p.min_width_for_expansion_um, inner);
         SkinAreas& out = result[index];
-        out.skin = removeSmallIslands(unionOf(top, bottom), kMinSkinAreaUm2);
+        out.skin = removeSmallOutlines(unionOf(top, bottom), kMinSkinAreaUm2);
         Paths infill = differenceOf(inner, out.skin);
         if (p.infill_opening_um > 0)
             infill = openPolygons(infill, p.infill_opening_um / 2);
-        out.infill = removeSmallIslands(infill, std::max(kMinSkinAreaUm2, p.min_infill_area_um2));
-        if (roofing_layers > 0 && !out.skin.empty()) {
-            Paths covered = i + roofing_layers < n ? roof_above[index + 1] : Paths{};
-            if (i > 0)
-                covered = unionOf(covered, differenceOf(roof_reference[index], roof_reference[index - 1]));
-            out.roofing = differenceOf(out.skin, covered);
-        }
+        out.infill = removeSmallOutlines(infill, kMinSkinAreaUm2);
+        if (roofing_layers > 0 && !out.skin.empty())
+            out.roofing = roofingOf(out.skin, windows, i, n, roofing_layers);
         if (p.outer_surfaces)
-            out.outer_surfaces = outerSurfaces(out.skin, roof_reference, index);
+            out.outer_surfaces = outerSurfaces(out.skin, windows.roofReference(), index);
     });
     return result;
 }
