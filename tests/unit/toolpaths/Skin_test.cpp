@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "ToolpathTestSupport.h"
 #include "toolpaths/PolygonOps.h"
 
@@ -101,6 +103,29 @@ TEST(Skin, RemovalWidthCountsFromTheCoveredAreaOnly) {
     const SkinAreas s = skins(areas, p)[1];
     EXPECT_NEAR(areaUm2(intersectAll(s.skin, neck)), areaUm2(neck), 1e3);
     EXPECT_NEAR(areaUm2(intersectAll(s.skin, {test::square(0, 0, 10'000)})), 400.0 * 1'350, 0.05 * 540e3);
+}
+
+TEST(Skin, SmallAreaRemovalCountsTheOutlineWithoutItsHoles) {
+    // A 0.5 mm square frame around a 0.4 mm hole: 0.09 mm² of skin, but its outline holds 0.25 mm²
+    // (over CuraEngine's 0.16 mm²): kept whole, hole and all. A 0.3 mm square (0.09 mm²) goes.
+    Path hole = test::square(50, 50, 400);
+    std::reverse(hole.begin(), hole.end());
+    const Paths frame{test::square(0, 0, 500), hole};
+    const SkinAreas kept = skins({frame}, layersOnly(0, 1))[0];
+    EXPECT_EQ(areaUm2(kept.skin), 500.0 * 500 - 400.0 * 400);
+    EXPECT_TRUE(skins({sq(0, 300)}, layersOnly(0, 1))[0].skin.empty());
+}
+
+TEST(Skin, MinInfillAreaDropsSmallCoveringPieces) {
+    // Layer 1 is covered by a 1 mm square on layer 2 only: top skin around it; with min_infill_area
+    // 2 mm² that piece does not count as cover and all of layer 1 is skin.
+    const std::vector<Paths> areas{sq(0, 20'000), sq(0, 20'000), sq(5'000, 1'000)};
+    SkinParams p = layersOnly(1, 0);
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].skin), 400e6 - 1e6);
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].infill), 1e6);
+    p.min_infill_area_um2 = 2e6;
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].skin), 400e6);
+    EXPECT_TRUE(skins(areas, p)[1].infill.empty());
 }
 
 TEST(Skin, ReferenceWallMovesOutWithTheRemovalWidth) {
