@@ -94,24 +94,41 @@ Paths outerSurfaces(const Paths& skin, const std::vector<Paths>& reference, std:
     return unionOf(top_most, bottom_most);
 }
 
+enum class WindowEnd { First, Last };
+
+/// result[i] covers layers i … i + window − 1 (empty past the last layer): their intersection, or
+/// with skin_no_small_gaps_heuristic only the layer at the window's far end from the skin (its
+/// last layer for the top skin, its first for the bottom skin), as CuraEngine 4.13 takes it.
+std::vector<Paths> windowCover(const std::vector<Paths>& layers, int window, bool heuristic, WindowEnd end,
+                               int threads) {
+    if (!heuristic || window <= 1)
+        return windowIntersections(layers, window, threads);
+    const std::size_t w = static_cast<std::size_t>(window);
+    std::vector<Paths> result(layers.size());
+    for (std::size_t i = 0; i + w <= layers.size(); ++i)
+        result[i] = layers[end == WindowEnd::Last ? i + w - 1 : i];
+    return result;
+}
+
 /// What every layer's skin is compared with: the reference regions grown by the removal width left
-/// over, and their intersections over the top, bottom and roofing windows (result[i]: layers i …
-/// i + window − 1). The bottom ones are usually the top ones (same regions, preshrink and count).
+/// over, and what covers them over the top, bottom and roofing windows (windowCover). The bottom
+/// ones are usually the top ones (same regions, preshrink and count, no heuristic).
 class Windows {
   public:
     Windows(const SkinReferenceRegions& references, const SkinParams& p, int threads)
         : same_reference_(p.bottom_preshrink_um == p.top_preshrink_um &&
                           *references.bottom == *references.top),
-          same_windows_(same_reference_ && p.bottom_layers == p.top_layers),
+          same_windows_(same_reference_ && p.bottom_layers == p.top_layers && !p.small_gaps_heuristic),
           roof_reference_(references.roofing ? *references.roofing : *references.top),
           top_reference_(grownReferences(*references.top, p.top_preshrink_um, threads)),
-          above_(windowIntersections(top_reference_, p.top_layers, threads)),
-          roof_above_(
-              windowIntersections(roof_reference_, std::min(p.roofing_layers, p.top_layers), threads)) {
+          above_(windowCover(top_reference_, p.top_layers, p.small_gaps_heuristic, WindowEnd::Last, threads)),
+          roof_above_(windowCover(roof_reference_, std::min(p.roofing_layers, p.top_layers),
+                                  p.small_gaps_heuristic, WindowEnd::Last, threads)) {
         if (!same_reference_)
             own_bottom_reference_ = grownReferences(*references.bottom, p.bottom_preshrink_um, threads);
         if (!same_windows_)
-            own_below_ = windowIntersections(bottomReference(), p.bottom_layers, threads);
+            own_below_ = windowCover(bottomReference(), p.bottom_layers, p.small_gaps_heuristic,
+                                     WindowEnd::First, threads);
     }
     const std::vector<Paths>& above() const { return above_; }
     const std::vector<Paths>& below() const { return same_windows_ ? above_ : own_below_; }
@@ -143,6 +160,9 @@ Paths bottomSkin(const Windows& w, const Paths& inner, int i, const SkinParams& 
     if (i >= p.bottom_layers)
         return uncovered(inner, w.below()[static_cast<std::size_t>(i - p.bottom_layers)],
                          p.min_infill_area_um2);
+    const Paths& reference_0 = w.bottomReference()[0];
+    if (p.small_gaps_heuristic)  // the window's first layer: layer 0
+        return uncovered(inner, reference_0, p.min_infill_area_um2);
     return uncovered(inner, prefixIntersection(w.bottomReference(), i), p.min_infill_area_um2);
 }
 

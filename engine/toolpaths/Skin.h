@@ -18,7 +18,9 @@
 // top_layers), the part of the skin with air within roofing_layer_count layers above is roofing, as
 // CuraEngine 4.13 finds it: "no air above" is the roofing reference region (the centre region of
 // wall min(2, wall count)) of every layer up to roofing_layer_count above, plus where that region
-// has nothing of it on the layer below (air below: such skin stays skin).
+// has nothing of it on the layer below (air below: such skin stays skin). With
+// skin_no_small_gaps_heuristic each window counts by its farthest layer alone (i+top_layers,
+// i-bottom_layers, i+roofing_layers) instead of the intersection of all its layers.
 //
 // The "present in every layer of a window" intersections come from toolpaths/LayerWindows.h.
 #include <vector>
@@ -49,6 +51,8 @@ struct SkinParams {
     coord_um min_width_for_expansion_um = 0;
     int roofing_layers = 0;
     double min_infill_area_um2 = 0;
+    /// skin_no_small_gaps_heuristic: compare with the farthest layer of each window only.
+    bool small_gaps_heuristic = false;
     /// Also find the outer surfaces (SkinAreas::outer_surfaces), against the roofing reference.
     bool outer_surfaces = false;
     /// As CuraEngine: the infill area loses what is narrower than this (infill_line_width).

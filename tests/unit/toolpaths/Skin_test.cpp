@@ -128,6 +128,26 @@ TEST(Skin, MinInfillAreaDropsSmallCoveringPieces) {
     EXPECT_TRUE(skins(areas, p)[1].infill.empty());
 }
 
+TEST(Skin, SmallGapsHeuristicComparesWithTheFarthestLayerOnly) {
+    // Layer 2 has a 2 mm hole that layers 1 and 3 do not: the intersection over layers 2-3 (top
+    // skin of layer 1) and over layers 1-2 (bottom skin of layer 3) has the hole, so both get skin
+    // there; with the heuristic only layer 3 (for layer 1's top) and layer 1 (for layer 3's bottom)
+    // count, and neither gets any.
+    Path hole = test::square(9'000, 9'000, 2'000);
+    std::reverse(hole.begin(), hole.end());
+    const Paths holed{test::square(0, 0, 20'000), hole};
+    std::vector<Paths> areas(7, sq(0, 20'000));
+    areas[2] = holed;
+    SkinParams p = layersOnly(2, 2);
+    p.initial_bottom_layers = 1;
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].skin), 4e6);
+    EXPECT_EQ(areaUm2(skins(areas, p)[3].skin), 4e6);
+    p.small_gaps_heuristic = true;
+    EXPECT_TRUE(skins(areas, p)[1].skin.empty());
+    EXPECT_TRUE(skins(areas, p)[3].skin.empty());
+    EXPECT_EQ(areaUm2(skins(areas, p)[6].skin), 400e6);  // the top layer
+}
+
 TEST(Skin, ReferenceWallMovesOutWithTheRemovalWidth) {
     // Two walls of 0.4 mm: the innermost centre region is the reference until the removal width
     // covers 0.4 mm (to the outer wall's centre), then 0.2 mm more (to the outline).
