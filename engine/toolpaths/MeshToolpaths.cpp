@@ -141,6 +141,7 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     p.min_width_for_expansion_um = length("min_skin_width_for_expansion");
     p.roofing_layers = countOf(s, "roofing_layer_count");
     p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
+    p.small_gaps_heuristic = flag(s, "skin_no_small_gaps_heuristic");
     p.outer_surfaces = outerSurfacesWanted(s);
     p.infill_opening_um = s.has("infill_line_width") ? s.lengthMicrons("infill_line_width") : 0;
     return p;

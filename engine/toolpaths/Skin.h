@@ -6,17 +6,21 @@
 //                 i-1 (all of it on the first initial_bottom_layers layers);
 // where a layer's "present" area is a reference region chosen as CuraEngine 4.13 does
 // (skinReference): the innermost wall's centre region, moved out one wall (and then to the
-// outline) for as long as the skin removal width (top/bottom_skin_preshrink) covers the distance;
-// each skin then loses its parts narrower than what is left of the removal width, is
-// grown by the expand distance (top/bottom_skin_expand_distance; only the parts at least
-// min_skin_width_for_expansion wide when that is set) and clipped to inner_area[i]. The union is
-// the skin; pieces under 0.16 mm² are dropped. The infill area is inner_area[i] minus the skin,
-// less its parts narrower than infill_line_width (pieces under 0.16 mm² and under min_infill_area
+// outline) for as long as the skin removal width (top/bottom_skin_preshrink) covers the distance
+// (a width within 10 µm of a wall's centre ends there), grown by what is left of the removal width.
+// So the skin loses that much along the covered area (only there: a narrow neck with air above
+// stays skin); it is then grown by the expand distance (top/bottom_skin_expand_distance) plus the
+// removal width left over — only its parts at least min_skin_width_for_expansion wide when that is
+// set — and clipped to inner_area[i]. The union is the skin; pieces under 0.16 mm² are dropped.
+// The infill area is inner_area[i] minus the skin, less its parts narrower than infill_line_width
+// (pieces under 0.16 mm² and under min_infill_area
 // dropped). With roofing_layer_count > 0 (at most
 // top_layers), the part of the skin with air within roofing_layer_count layers above is roofing, as
 // CuraEngine 4.13 finds it: "no air above" is the roofing reference region (the centre region of
 // wall min(2, wall count)) of every layer up to roofing_layer_count above, plus where that region
-// has nothing of it on the layer below (air below: such skin stays skin).
+// has nothing of it on the layer below (air below: such skin stays skin). With
+// skin_no_small_gaps_heuristic each window counts by its farthest layer alone (i+top_layers,
+// i-bottom_layers, i+roofing_layers) instead of the intersection of all its layers.
 //
 // The "present in every layer of a window" intersections come from toolpaths/LayerWindows.h.
 #include <vector>
@@ -39,13 +43,16 @@ struct SkinParams {
     int top_layers = 0;
     int bottom_layers = 0;
     int initial_bottom_layers = 0;
-    coord_um top_preshrink_um = 0;  ///< what is left of the removal width (skinReference)
+    coord_um top_preshrink_um = 0;  ///< what is left of the removal width (skinReference): the
+                                    ///< reference regions grow by it
     coord_um bottom_preshrink_um = 0;
     coord_um top_expand_um = 0;
     coord_um bottom_expand_um = 0;
     coord_um min_width_for_expansion_um = 0;
     int roofing_layers = 0;
     double min_infill_area_um2 = 0;
+    /// skin_no_small_gaps_heuristic: compare with the farthest layer of each window only.
+    bool small_gaps_heuristic = false;
     /// Also find the outer surfaces (SkinAreas::outer_surfaces), against the roofing reference.
     bool outer_surfaces = false;
     /// As CuraEngine: the infill area loses what is narrower than this (infill_line_width).

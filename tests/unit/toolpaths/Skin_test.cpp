@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "ToolpathTestSupport.h"
 #include "toolpaths/PolygonOps.h"
 
@@ -86,11 +88,77 @@ TEST(Skin, RemovalWidthDropsNarrowStripsAndExpansionGrowsIntoInfill) {
     EXPECT_EQ(areaUm2(grown.infill), 17'000.0 * 17'000.0);
 }
 
+TEST(Skin, RemovalWidthCountsFromTheCoveredAreaOnly) {
+    // Layer 1: two 10 mm squares joined by a 0.15 mm wide, 4 mm long neck; layer 2 covers the
+    // squares only. The neck has air above: it is top skin although narrower than the removal
+    // width, which takes 0.2 mm off it along the covered squares alone, given back by the expansion.
+    const Paths squares{test::square(0, 0, 10'000), test::square(14'000, 0, 10'000)};
+    const Paths neck{{{10'000, 4'925}, {14'000, 4'925}, {14'000, 5'075}, {10'000, 5'075}}};
+    const std::vector<Paths> areas{unionOf(squares, neck), unionOf(squares, neck), squares};
+    SkinParams p = layersOnly(1, 0);
+    p.top_preshrink_um = 200;
+    EXPECT_NEAR(areaUm2(skins(areas, p)[1].skin), areaUm2(neck), 1e3);
+    // Grown 0.4 mm (plus the 0.2 mm given back) into each square: 0.4 mm deep, 0.15 + 2 × 0.6 mm wide.
+    p.top_expand_um = 400;
+    const SkinAreas s = skins(areas, p)[1];
+    EXPECT_NEAR(areaUm2(intersectAll(s.skin, neck)), areaUm2(neck), 1e3);
+    EXPECT_NEAR(areaUm2(intersectAll(s.skin, {test::square(0, 0, 10'000)})), 400.0 * 1'350, 0.05 * 540e3);
+}
+
+TEST(Skin, SmallAreaRemovalCountsTheOutlineWithoutItsHoles) {
+    // A 0.5 mm square frame around a 0.4 mm hole: 0.09 mm² of skin, but its outline holds 0.25 mm²
+    // (over CuraEngine's 0.16 mm²): kept whole, hole and all. A 0.3 mm square (0.09 mm²) goes.
+    Path hole = test::square(50, 50, 400);
+    std::reverse(hole.begin(), hole.end());
+    const Paths frame{test::square(0, 0, 500), hole};
+    const SkinAreas kept = skins({frame}, layersOnly(0, 1))[0];
+    EXPECT_EQ(areaUm2(kept.skin), 500.0 * 500 - 400.0 * 400);
+    EXPECT_TRUE(skins({sq(0, 300)}, layersOnly(0, 1))[0].skin.empty());
+}
+
+TEST(Skin, MinInfillAreaDropsSmallCoveringPieces) {
+    // Layer 1 is covered by a 1 mm square on layer 2 only: top skin around it; with min_infill_area
+    // 2 mm² that piece does not count as cover and all of layer 1 is skin.
+    const std::vector<Paths> areas{sq(0, 20'000), sq(0, 20'000), sq(5'000, 1'000)};
+    SkinParams p = layersOnly(1, 0);
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].skin), 400e6 - 1e6);
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].infill), 1e6);
+    p.min_infill_area_um2 = 2e6;
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].skin), 400e6);
+    EXPECT_TRUE(skins(areas, p)[1].infill.empty());
+}
+
+TEST(Skin, SmallGapsHeuristicComparesWithTheFarthestLayerOnly) {
+    // Layer 2 has a 2 mm hole that layers 1 and 3 do not: the intersection over layers 2-3 (top
+    // skin of layer 1) and over layers 1-2 (bottom skin of layer 3) has the hole, so both get skin
+    // there; with the heuristic only layer 3 (for layer 1's top) and layer 1 (for layer 3's bottom)
+    // count, and neither gets any.
+    Path hole = test::square(9'000, 9'000, 2'000);
+    std::reverse(hole.begin(), hole.end());
+    const Paths holed{test::square(0, 0, 20'000), hole};
+    std::vector<Paths> areas(7, sq(0, 20'000));
+    areas[2] = holed;
+    SkinParams p = layersOnly(2, 2);
+    p.initial_bottom_layers = 1;
+    EXPECT_EQ(areaUm2(skins(areas, p)[1].skin), 4e6);
+    EXPECT_EQ(areaUm2(skins(areas, p)[3].skin), 4e6);
+    p.small_gaps_heuristic = true;
+    EXPECT_TRUE(skins(areas, p)[1].skin.empty());
+    EXPECT_TRUE(skins(areas, p)[3].skin.empty());
+    EXPECT_EQ(areaUm2(skins(areas, p)[6].skin), 400e6);  // the top layer
+}
+
 TEST(Skin, ReferenceWallMovesOutWithTheRemovalWidth) {
     // Two walls of 0.4 mm: the innermost centre region is the reference until the removal width
     // covers 0.4 mm (to the outer wall's centre), then 0.2 mm more (to the outline).
     EXPECT_EQ(skinReference(0, 2, 400, 400).wall, 2);
-    EXPECT_EQ(skinReference(399, 2, 400, 400).wall, 2);
+    EXPECT_EQ(skinReference(389, 2, 400, 400).wall, 2);
+    // Within 10 µm of a wall's centre it ends there, nothing left over (CuraEngine 4.13's snap).
+    for (coord_um near : {390, 410}) {
+        const SkinReference snapped = skinReference(near, 2, 400, 400);
+        EXPECT_EQ(snapped.wall, 1) << near;
+        EXPECT_EQ(snapped.leftover_preshrink_um, 0) << near;
+    }
     const SkinReference half = skinReference(500, 2, 400, 400);
     EXPECT_EQ(half.wall, 1);
     EXPECT_EQ(half.leftover_preshrink_um, 100);
