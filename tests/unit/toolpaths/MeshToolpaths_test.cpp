@@ -144,7 +144,8 @@ TEST(MeshToolpaths, PerimeterGapsAreFilledWithHalfWidthSkinLines) {
     const auto gapLines = [&](const std::string& mode) {
         const ResolvedMachine m = test::fdmMachine({{"fill_perimeter_gaps", mode}}, {{1, {}}});
         std::size_t count = 0;
-        for (const ExtrusionPath& p : generateMeshToolpaths(strip.layers, m.global, 2)[5].skin)
+        const std::vector<MeshLayerGroups> groups = generateMeshToolpaths(strip.layers, m.global, 2);
+        for (const ExtrusionPath& p : groups[5].skin)
             count += p.width_um == 200 && p.feature == Feature::Skin ? 1 : 0;
         return count;
     };
