@@ -230,6 +230,13 @@ VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
     return role;
 }
 
+std::vector<std::string_view> GCodeOutput::pieces() const {
+    std::vector<std::string_view> out{header, start};
+    out.insert(out.end(), layer_chunks.begin(), layer_chunks.end());
+    out.push_back(suffix);
+    return out;
+}
+
 std::string GCodeOutput::joined() const {
     std::size_t size = header.size() + start.size() + suffix.size();
     for (const std::string& chunk : layer_chunks)
