@@ -4,9 +4,12 @@
 // naming the path when it cannot be written.
 #include <filesystem>
 #include <string_view>
+#include <vector>
 
 namespace mixengine {
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view text);
+/// The same for a text in pieces, written one after the other (no joined copy).
+void writeFileAtomically(const std::filesystem::path& path, const std::vector<std::string_view>& pieces);
 
 }  // namespace mixengine

@@ -28,9 +28,10 @@ int runSliceCommand(const Words& args, std::ostream& out, std::ostream& err) {
         observe = [&preview](const PrintPlan& plan) { preview->add(plan); };
     }
     GCodeOutput gcode = runPipeline(scene, threads, log, observe);
-    const std::string text = gcode.joined();
+    const std::vector<std::string_view> text = gcode.pieces();
     if (request.output.empty()) {
-        out << text;
+        for (std::string_view piece : text)
+            out << piece;
     } else {
         writeFileAtomically(request.output, text);
     }

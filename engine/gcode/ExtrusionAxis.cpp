@@ -27,12 +27,12 @@ std::string ExtrusionAxis::move(double delta) {
         // Write the delta between rounded positions so the sum of words equals the true total.
         position_ += delta;
         const double target = std::round(position_ * 1e5) / 1e5;
-        word += formatExtrusion(target - written_);
+        appendDecimal(word, target - written_, 5);
         written_ = target;
         return word;
     }
     position_ += delta;
-    word += formatExtrusion(position_);
+    appendDecimal(word, position_, 5);
     return word;
 }
 

@@ -38,9 +38,37 @@ void GCodeExport::timeMove(const Point2& to, coord_um z, double filament_mm, dou
         speed_mm_s, feature);
 }
 
-std::string GCodeExport::xyWords(const Point2& to) const {
-    return " X" + formatCoordMm(micronsToMm(to.X - offset_.X)) + " Y" +
-           formatCoordMm(micronsToMm(to.Y - offset_.Y));
+void GCodeExport::appendXy(const Point2& to) {
+    out_ += " X";
+    appendDecimal(out_, micronsToMm(to.X - offset_.X), 3);
+    out_ += " Y";
+    appendDecimal(out_, micronsToMm(to.Y - offset_.Y), 3);
+}
+
+void GCodeExport::appendZ(coord_um z) {
+    out_ += " Z";
+    appendDecimal(out_, micronsToMm(z), 3);
+}
+
+void GCodeExport::startMove(const char* command, double speed_mm_s) {
+    out_ += command;
+    if (speed_mm_s == feedrate_mm_s_)
+        return;
+    feedrate_mm_s_ = speed_mm_s;
+    out_ += " F";
+    appendFeedrate(out_, speed_mm_s);
+}
+
+void GCodeExport::startHop(double speed_mm_s) {
+    feedrate_mm_s_ = speed_mm_s;
+    out_ += "G1 F";
+    appendFeedrate(out_, speed_mm_s);
+}
+
+void GCodeExport::endMove(std::string_view words) {
+    out_ += ' ';
+    out_ += words;
+    out_ += '\n';
 }
 
 void GCodeExport::selectExtruder(const ToolChange& change) {
@@ -93,18 +121,6 @@ void GCodeExport::line(std::string_view text) {
 void GCodeExport::comment(std::string_view text) {
     out_ += ';';
     line(text);
-}
-
-std::string GCodeExport::feedrateWord(double speed_mm_s) {
-    if (speed_mm_s == feedrate_mm_s_)
-        return "";
-    feedrate_mm_s_ = speed_mm_s;
-    return " F" + formatFeedrate(speed_mm_s);
-}
-
-std::string GCodeExport::hopCommand(double speed_mm_s) {
-    feedrate_mm_s_ = speed_mm_s;
-    return "G1 F" + formatFeedrate(speed_mm_s);
 }
 
 double GCodeExport::filamentOnAxis(double filament_mm) const {
@@ -182,12 +198,16 @@ void GCodeExport::travel(const Point2& to, double speed_mm_s) {
         std::string before;
         const std::string words = dialect_->extrude(offsetExtra(), mix_, before);
         out_ += before;
-        line("G0" + feedrateWord(speed_mm_s) + xyWords(to) + " " + words);
+        startMove("G0", speed_mm_s);
+        appendXy(to);
+        endMove(words);
         timeMove(to, z_, 0, speed_mm_s, moveFeature());
         position_ = to;
         return;
     }
-    line("G0" + feedrateWord(speed_mm_s) + xyWords(to));
+    startMove("G0", speed_mm_s);
+    appendXy(to);
+    endLine();
     timeMove(to, z_, 0, speed_mm_s, moveFeature());
     position_ = to;
 }
@@ -206,8 +226,12 @@ void GCodeExport::writeZ(coord_um z, double speed_mm_s, bool hop) {
         return;
     }
     timeMove(position_, z, 0, speed_mm_s, moveFeature());
-    line((hop ? hopCommand(speed_mm_s) : "G0" + feedrateWord(speed_mm_s)) + " Z" +
-         formatCoordMm(micronsToMm(z)));
+    if (hop)
+        startHop(speed_mm_s);
+    else
+        startMove("G0", speed_mm_s);
+    appendZ(z);
+    endLine();
     z_ = z;
 }
 
@@ -220,7 +244,9 @@ void GCodeExport::hopTo(coord_um hop_um, bool rewrite, double speed_mm_s) {
     if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
         if (params_.bfb)
             return;
-        line(hopCommand(speed) + " Z" + formatCoordMm(micronsToMm(z_)));
+        startHop(speed);
+        appendZ(z_);
+        endLine();
         return;
     }
     writeZ(layer + hop_um, speed, true);
@@ -237,7 +263,9 @@ void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s
     std::string before;
     const std::string words = dialect_->extrude(e + (e_offset_ != 0 ? offsetExtra() : 0.0), mix_, before);
     out_ += before;
-    line("G1" + feedrateWord(speed_mm_s) + xyWords(to) + " " + words);
+    startMove("G1", speed_mm_s);
+    appendXy(to);
+    endMove(words);
     timeMove(to, z_, filamentMm(volume_mm3), speed_mm_s, extrusion_feature_);
     position_ = to;
 }
@@ -247,20 +275,24 @@ void GCodeExport::extrudeRising(const Point2& to, coord_um z_um, double volume_m
         if (retracted() || hop_um_ > 0 || state().extra_prime_mm3 > 0)
             unretract();
     }
-    std::string words = "G1" + feedrateWord(speed_mm_s) + xyWords(to);
-    if (z_um != z_)
-        words += " Z" + formatCoordMm(micronsToMm(z_um));
     double filament_mm = 0;
+    std::string extrusion;
     if (volume_mm3 > 0) {
         const double e = volumeOnAxis(volume_mm3);
         state().extruded += e;
         std::string before;
-        const std::string extrusion = dialect_->extrude(e, mix_, before);
+        extrusion = dialect_->extrude(e, mix_, before);
         out_ += before;
-        words += " " + extrusion;
         filament_mm = filamentMm(volume_mm3);
     }
-    line(words);
+    startMove("G1", speed_mm_s);
+    appendXy(to);
+    if (z_um != z_)
+        appendZ(z_um);
+    if (volume_mm3 > 0)
+        endMove(extrusion);
+    else
+        endLine();
     timeMove(to, z_um, filament_mm, speed_mm_s, extrusion_feature_);
     position_ = to;
     z_ = z_um;
@@ -292,7 +324,8 @@ void GCodeExport::retractTo(const RetractionConfig& config) {
                                       ? dialect_->retract(filamentOnAxis(change_mm) + applied, before)
                                       : dialect_->prime(filamentOnAxis(-change_mm) - applied, before);
         out_ += before;
-        line("G1" + feedrateWord(speed) + " " + words);
+        startMove("G1", speed);
+        endMove(words);
         timeMove(position_, z_, -change_mm, speed, TimeFeature::Retraction);
     }
     s.retracted_mm = config.amount_mm;
@@ -324,7 +357,8 @@ void GCodeExport::writePrime() {
         std::string before;
         const std::string words = dialect_->prime(filamentOnAxis(moved_mm) - dropOffset(), before);
         out_ += before;
-        line("G1" + feedrateWord(s.prime_speed_mm_s) + " " + words);
+        startMove("G1", s.prime_speed_mm_s);
+        endMove(words);
     }
     if (prime_mm > 0)
         timeMove(position_, z_, prime_mm, s.prime_speed_mm_s, TimeFeature::Retraction);

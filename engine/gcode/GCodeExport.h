@@ -159,10 +159,15 @@ class GCodeExport {
     double retractedMm() const { return states_[static_cast<std::size_t>(extruder_)].retracted_mm; }
 
   private:
-    std::string feedrateWord(double speed_mm_s);
     /// moveZ; a z-hop (up or down) is written as CuraEngine writes it: G1 with its feedrate always.
     void writeZ(coord_um z, double speed_mm_s, bool hop);
-    std::string hopCommand(double speed_mm_s);   ///< "G1 F<speed>" (the feedrate becomes current)
+    void startHop(double speed_mm_s);  ///< "G1 F<mm/min>", the feedrate always (it is then in force)
+    /// Appends `command` and, when the speed changed, " F<mm/min>" (the feedrate is then in force).
+    void startMove(const char* command, double speed_mm_s);
+    void appendXy(const Point2& to);       ///< " X.. Y..", relative to the active nozzle
+    void appendZ(coord_um z);              ///< " Z.."
+    void endMove(std::string_view words);  ///< " <words>" and the line end
+    void endLine() { out_ += '\n'; }
     double filamentMm(double volume_mm3) const;  ///< length of the active filament holding the volume
     double volumeOnAxis(
         double volume_mm3) const;  ///< the volume in the axis unit (mm, or mm³ when volumetric)
@@ -180,7 +185,6 @@ class GCodeExport {
     };
     ExtruderState& state();
     double filamentOnAxis(double filament_mm) const;  ///< filament in the axis unit
-    std::string xyWords(const Point2& to) const;      ///< " X.. Y..", relative to the active nozzle
     /// BFB: a move without extrusion (the motor stops first).
     void bfbTravel(const Point2& to, coord_um z, double speed_mm_s);
     void bfbExtrude(const Point2& to, double volume_mm3, double speed_mm_s);

@@ -9,9 +9,9 @@ namespace {
 
 constexpr long long kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000};
 
-/// Text of `value` with at most `decimals` decimals (rounded half away from zero), no trailing
-/// zeros, no "-0"; integer arithmetic, so no locale and no printf.
-std::string formatScaled(double value, int decimals) {
+/// Appends the text of `value` with at most `decimals` decimals (rounded half away from zero), no
+/// trailing zeros, no "-0"; integer arithmetic, so no locale and no printf.
+void appendScaled(std::string& out, double value, int decimals) {
     const long long scale = kPow10[decimals];
     const long long scaled = std::llround(value * static_cast<double>(scale));
     const bool negative = scaled < 0;
@@ -35,14 +35,24 @@ std::string formatScaled(double value, int decimals) {
         for (char* q = tail; q != end; ++q)
             *p++ = *q;
     }
-    return std::string(buffer, p);
+    out.append(buffer, p);
 }
 
 }  // namespace
 
-std::string formatDecimal(double value, int decimals) {
+void appendDecimal(std::string& out, double value, int decimals) {
     if (decimals >= 0 && decimals <= 8 && std::fabs(value) < 9e9)
-        return formatScaled(value, decimals);
+        appendScaled(out, value, decimals);
+    else
+        out += formatDecimal(value, decimals);
+}
+
+std::string formatDecimal(double value, int decimals) {
+    if (decimals >= 0 && decimals <= 8 && std::fabs(value) < 9e9) {
+        std::string text;
+        appendScaled(text, value, decimals);
+        return text;
+    }
     const double scale = std::pow(10.0, decimals);
     double rounded = std::round(value * scale) / scale;
     if (rounded == 0.0)

@@ -7,6 +7,8 @@
 namespace mixengine {
 
 std::string formatDecimal(double value, int decimals);
+/// formatDecimal(value, decimals) appended to `out` (the writer's hot path: no string of its own).
+void appendDecimal(std::string& out, double value, int decimals);
 inline std::string formatCoordMm(double mm) {
     return formatDecimal(mm, 3);
 }
@@ -15,5 +17,8 @@ inline std::string formatExtrusion(double amount) {
 }
 /// Feedrate in mm/min from mm/s, at most one decimal ("F1500", "F1687.5").
 std::string formatFeedrate(double mm_per_s);
+inline void appendFeedrate(std::string& out, double mm_per_s) {
+    appendDecimal(out, mm_per_s * 60.0, 1);
+}
 
 }  // namespace mixengine

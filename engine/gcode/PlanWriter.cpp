@@ -90,7 +90,7 @@ void writeTravel(const PlanStep& step, GCodeExport& gcode) {
     gcode.travel(step.to, step.speed_mm_s);
 }
 
-void writeExtrusion(const PlanStep& step, coord_um layer_z, const PrintPlan& plan, GCodeExport& gcode) {
+void writeExtrusion(const PlanStep& step, coord_um layer_z, const PlanTables& plan, GCodeExport& gcode) {
     gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, false);
     if (step.mix >= 0)  // colour mixing (mixing/MixingPass.h)
         gcode.setMix(plan.mixes[static_cast<std::size_t>(step.mix)]);
@@ -108,7 +108,7 @@ void writeFeature(const PlanStep& step, GCodeExport& gcode) {
     gcode.setTimeFeature(timeFeature(step.feature));
 }
 
-void writeStep(const PlanStep& step, coord_um layer_z, const PrintPlan& plan, const PlanWriterParams& params,
+void writeStep(const PlanStep& step, coord_um layer_z, const PlanTables& plan, const PlanWriterParams& params,
                GCodeExport& gcode, WrittenLayers& out) {
     switch (step.kind) {
         case PlanStep::Kind::Travel:
@@ -155,23 +155,28 @@ void writeStep(const PlanStep& step, coord_um layer_z, const PrintPlan& plan, co
 
 }  // namespace
 
+void writeLayer(const PlannedLayer& layer, int number, const PlanTables& tables,
+                const PlanWriterParams& params, GCodeExport& gcode, WrittenLayers& out) {
+    gcode.takeText();  // start a fresh chunk
+    gcode.comment("LAYER:" + std::to_string(number));
+    if (params.reset_e_each_layer && !gcode.retracted())
+        gcode.resetExtrusionAxis();
+    gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
+    gcode.newExtrusionConfig();
+    for (const PlanStep& step : layer.steps)
+        writeStep(step, layer.z, tables, params, gcode, out);
+    gcode.flushTime();
+    char elapsed[64];
+    std::snprintf(elapsed, sizeof elapsed, "TIME_ELAPSED:%.6f", gcode.elapsedSeconds());
+    gcode.comment(elapsed);
+    out.chunks.push_back(gcode.takeText());
+}
+
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode) {
     WrittenLayers out;
-    for (const PlannedLayer& layer : plan.layers) {
-        gcode.takeText();  // start a fresh chunk
-        gcode.comment("LAYER:" + std::to_string(layer.index));
-        if (params.reset_e_each_layer && !gcode.retracted())
-            gcode.resetExtrusionAxis();
-        gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
-        gcode.newExtrusionConfig();
-        for (const PlanStep& step : layer.steps)
-            writeStep(step, layer.z, plan, params, gcode, out);
-        gcode.flushTime();
-        char elapsed[64];
-        std::snprintf(elapsed, sizeof elapsed, "TIME_ELAPSED:%.6f", gcode.elapsedSeconds());
-        gcode.comment(elapsed);
-        out.chunks.push_back(gcode.takeText());
-    }
+    const PlanTables tables{plan.mesh_names, plan.mixes};
+    for (const PlannedLayer& layer : plan.layers)
+        writeLayer(layer, layer.index, tables, params, gcode, out);
     return out;
 }
 

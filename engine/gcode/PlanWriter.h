@@ -47,4 +47,16 @@ struct PlanWriterParams {
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode);
 
+/// What the steps of a plan's layers refer to by index (PlanStep::mesh_index, PlanStep::mix): the
+/// plan's own tables or copies of them, alive while layers are written.
+struct PlanTables {
+    const std::vector<std::string>& mesh_names;
+    const std::vector<MixVector>& mixes;
+};
+
+/// One layer as writePlan() writes it, numbered `number` (";LAYER:<number>"): its chunk is appended
+/// to out.chunks. Writing a plan's layers in order through one GCodeExport gives writePlan()'s text.
+void writeLayer(const PlannedLayer& layer, int number, const PlanTables& tables,
+                const PlanWriterParams& params, GCodeExport& gcode, WrittenLayers& out);
+
 }  // namespace mixengine

@@ -1,12 +1,15 @@
 #include "pipeline/FffProcessor.h"
 
 #include <algorithm>
+#include <optional>
 
+#include "common/Error.h"
 #include "gcode/Bfb.h"
 #include "gcode/StartEndCode.h"
 #include "mixing/MixingPass.h"
 #include "mixing/MixingSettings.h"
 #include "pipeline/OutputParams.h"
+#include "pipeline/StreamedWriter.h"
 #include "planning/PrintPlanner.h"
 #include "slicing/MultiVolumes.h"
 
@@ -71,8 +74,10 @@ void reshapeOutlines(const SceneGroup& group, SlicedGroup& sliced) {
     }
 }
 
-PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
-                    PlannerState& state, Log& log) {
+/// Plans `group` into `plan` (empty at the call), handing each layer to `on_final` once it is final
+/// (planning/PrintPlanner.h).
+void planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
+               PlannerState& state, Log& log, PrintPlan& plan, const FinalLayer& on_final) {
     ToolpathInput input;
     input.global = &group.settings;
     input.extruders = &scene.machine.extruders;
@@ -88,7 +93,24 @@ PrintPlan planGroup(const Scene& scene, const SceneGroup& group, const SlicedGro
         log.warning(warning);
     for (const std::string& note : toolpaths.notes)
         log.info(note);
-    return planPrint(toolpaths, group.settings, scene.machine.extruders, state, threads);
+    planPrint(plan, toolpaths, group.settings, scene.machine.extruders, state, threads, on_final);
+}
+
+/// Whether the group mixes colours (mixing/MixingPass.h assigns the mixes to the finished plan).
+/// Bad mixing settings count as mixing: assignMixes() then reports them where it always does.
+bool mixesColours(const Settings& group) {
+    try {
+        return parseMixingOutput(group).enabled();
+    } catch (const InputError&) {
+        return true;
+    }
+}
+
+void extendBounds(PrintSummary& summary, const WrittenLayers& written) {
+    summary.min = {std::min(summary.min.x, written.min.x), std::min(summary.min.y, written.min.y),
+                   std::min(summary.min.z, written.min.z)};
+    summary.max = {std::max(summary.max.x, written.max.x), std::max(summary.max.y, written.max.y),
+                   std::max(summary.max.z, written.max.z)};
 }
 
 /// The mixing stage's view of the group: each mesh's height span as printed, i.e. lifted by the
@@ -200,6 +222,13 @@ VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
     return role;
 }
 
+std::vector<std::string_view> GCodeOutput::pieces() const {
+    std::vector<std::string_view> out{header, start};
+    out.insert(out.end(), layer_chunks.begin(), layer_chunks.end());
+    out.push_back(suffix);
+    return out;
+}
+
 std::string GCodeOutput::joined() const {
     std::size_t size = header.size() + start.size() + suffix.size();
     for (const std::string& chunk : layer_chunks)
@@ -282,21 +311,27 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         log.progress(ProgressStage::Slicing, 0.0);
         SlicedGroup sliced = sliceGroup(group, threads, log);
         log.progress(ProgressStage::Toolpaths, 0.3);
-        PrintPlan plan = planGroup(scene, group, sliced, threads, state, log);
+        const bool first_group = output.layer_chunks.empty();
+        PrintPlan plan;  // outlives the streamed writer, which reads its layers
+        std::optional<WrittenLayers> written;
+        if (threads > 1 && !mixesColours(group.settings)) {  // written while later layers are planned
+            StreamedWriter streamed(writer, gcode,
+                                    first_group ? std::nullopt : std::optional<int>(next_index));
+            planGroup(scene, group, sliced, threads, state, log, plan, streamed.observer());
+            written = streamed.finish();
+        } else {
+            planGroup(scene, group, sliced, threads, state, log, plan, {});
+        }
         assignMixes(plan, mixingInput(scene, group), log);
         model_layers += modelLayers(plan);
-        next_index = renumber(plan, next_index, output.layer_chunks.empty());
+        next_index = renumber(plan, next_index, first_group);
         if (on_plan)
             on_plan(plan);
         log.progress(ProgressStage::GCode, 0.8);
-        WrittenLayers written = writePlan(plan, writer, gcode);
-        output.summary.min = {std::min(output.summary.min.x, written.min.x),
-                              std::min(output.summary.min.y, written.min.y),
-                              std::min(output.summary.min.z, written.min.z)};
-        output.summary.max = {std::max(output.summary.max.x, written.max.x),
-                              std::max(output.summary.max.y, written.max.y),
-                              std::max(output.summary.max.z, written.max.z)};
-        for (std::string& chunk : written.chunks)
+        if (!written)
+            written = writePlan(plan, writer, gcode);
+        extendBounds(output.summary, *written);
+        for (std::string& chunk : written->chunks)
             output.layer_chunks.push_back(std::move(chunk));
     }
     if (output.layer_chunks.empty()) {

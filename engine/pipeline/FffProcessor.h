@@ -3,6 +3,7 @@
 // G-code. Each stage is a function of the previous stage's values and the resolved settings.
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/Log.h"
@@ -35,6 +36,8 @@ struct GCodeOutput {
     PrintSummary summary;
 
     std::string joined() const;
+    /// The text of joined() in its pieces, in order (views into this output).
+    std::vector<std::string_view> pieces() const;
 };
 
 /// Layer heights and outlines of every mesh of `group`, combined as CuraEngine combines them (cutting

@@ -1,5 +1,6 @@
 #include "planning/Coasting.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -160,6 +161,9 @@ CoastingParams coastingParams(const Settings& extruder) {
 }
 
 void applyCoasting(PrintPlan& plan, const std::vector<CoastingParams>& per_extruder, int extruder) {
+    if (std::none_of(per_extruder.begin(), per_extruder.end(),
+                     [](const CoastingParams& p) { return p.enabled; }))
+        return;  // nothing coasts: the steps stay as they are
     std::optional<Point2> head;
     for (std::size_t li = 0; li < plan.layers.size(); ++li) {
         PlannedLayer& layer = plan.layers[li];

@@ -27,8 +27,9 @@ LayerWipeParams layerWipeParams(const Settings& extruder) {
 }
 
 void planLayerWipes(PrintPlan& plan, const std::vector<LayerWipeParams>& per_extruder, int extruder) {
-    if (per_extruder.empty())
-        return;
+    if (std::none_of(per_extruder.begin(), per_extruder.end(),
+                     [](const LayerWipeParams& p) { return p.enabled; }))
+        return;  // no train wipes
     std::vector<double> since_wipe(per_extruder.size(), 0.0);
     auto train = [&](int e) {
         return std::min<std::size_t>(static_cast<std::size_t>(std::max(e, 0)), per_extruder.size() - 1);

@@ -417,6 +417,53 @@ PlannedLayer planModelLayer(std::size_t i, const LayerBoundaries& boundaries, bo
     return planned;
 }
 
+/// The extruders the plan will use (useExtruder): those of the raft's paths and of every model layer.
+std::set<int> plannedExtruders(const GroupToolpaths& toolpaths) {
+    std::set<int> used;
+    for (const RaftLayer& layer : toolpaths.raft)
+        collectExtruders(layer.paths, used);
+    for (std::size_t i = 0; i < toolpaths.heights.size(); ++i)
+        for (int extruder : extruderOrder(toolpaths, i, -1))
+            used.insert(extruder);
+    return used;
+}
+
+/// The temperature steps made layer by layer, when each layer's last planning step can follow
+/// right after the next layer is planned: one extruder (no switch temperatures), no coasting, no
+/// layer wipes; then only the temperature steps come after a layer, and they look one layer ahead.
+/// Nothing when the plan must be complete first.
+std::optional<TemperatureSteps> layerByLayer(const GroupToolpaths& toolpaths, const Settings& global,
+                                             const std::vector<Settings>& extruders,
+                                             const std::vector<CoastingParams>& coasting,
+                                             const std::vector<LayerWipeParams>& wipes, Point2 print_start) {
+    if (std::any_of(coasting.begin(), coasting.end(), [](const CoastingParams& c) { return c.enabled; }) ||
+        std::any_of(wipes.begin(), wipes.end(), [](const LayerWipeParams& w) { return w.enabled; }))
+        return std::nullopt;
+    const std::set<int> used = plannedExtruders(toolpaths);
+    if (used.size() != 1)
+        return std::nullopt;  // as planNozzleTemperatures: several extruders (or none) plan otherwise
+    return TemperatureSteps(temperatureParams(global, extruders[trainOf(*used.begin(), extruders)]), true,
+                            print_start);
+}
+
+/// Hands the plan's layers to FinalLayer in order, each once it is final.
+struct FinalLayers {
+    PrintPlan& plan;
+    const FinalLayer& on_final;
+    std::optional<TemperatureSteps> temperatures;  ///< set: layer by layer (see layerByLayer)
+    std::size_t delivered = 0;
+
+    void deliver(std::size_t final_count) {
+        for (; on_final && delivered < final_count; ++delivered)
+            on_final(plan, delivered);
+    }
+    /// After a layer was appended to the plan.
+    void added() {
+        if (temperatures)
+            deliver(temperatures->add(plan));
+    }
+};
+
 }  // namespace
 
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active) {
@@ -483,8 +530,16 @@ Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um) {
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                     const std::vector<Settings>& extruders, PlannerState& state, int threads) {
     PrintPlan plan;
+    planPrint(plan, toolpaths, global, extruders, state, threads, {});
+    return plan;
+}
+
+void planPrint(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings& global,
+               const std::vector<Settings>& extruders, PlannerState& state, int threads,
+               const FinalLayer& on_final) {
     for (const MeshToolpaths& mesh : toolpaths.meshes)
         plan.mesh_names.push_back(mesh.name);
+    plan.layers.reserve(toolpaths.raft.size() + toolpaths.heights.size());  // final layers stay in place
     const Point2 print_start = state.head;
     std::vector<const Settings*> mesh_settings;
     for (const MeshToolpaths& mesh : toolpaths.meshes)
@@ -497,12 +552,24 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                 {},
                 state,
                 global.has("travel_avoid_distance") ? global.lengthMicrons("travel_avoid_distance") : 0};
+    std::vector<CoastingParams> coasting;
+    std::vector<LayerWipeParams> wipes;
+    for (const Settings& train : extruders) {
+        coasting.push_back(coastingParams(train));
+        wipes.push_back(layerWipeParams(train));
+    }
+    FinalLayers final_layers{
+        plan, on_final,
+        on_final ? layerByLayer(toolpaths, global, extruders, coasting, wipes, print_start) : std::nullopt,
+        0};
     if (!toolpaths.raft.empty()) {
         const Paths comb_area =
             combsOnRaft(global) ? offsetPolygons(toolpaths.raft_outline, kRaftCombMarginUm) : Paths{};
         const CombBoundary raft_comb(comb_area);
-        for (const RaftLayer& layer : toolpaths.raft)
+        for (const RaftLayer& layer : toolpaths.raft) {
             plan.layers.push_back(planRaftLayer(layer, raft_comb, !plan.layers.empty(), run));
+            final_layers.added();
+        }
     }
     constexpr std::size_t kLayersAhead = 32;
     computeAhead<LayerBoundaries>(
@@ -510,17 +577,16 @@ PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
         [&](std::size_t i) { return layerBoundaries(toolpaths, i, run.avoid_distance_um); },
         [&](std::size_t i, LayerBoundaries boundaries) {
             plan.layers.push_back(planModelLayer(i, boundaries, !plan.layers.empty(), run));
+            final_layers.added();
         });
-    std::vector<CoastingParams> coasting;
-    std::vector<LayerWipeParams> wipes;
-    for (const Settings& train : extruders) {
-        coasting.push_back(coastingParams(train));
-        wipes.push_back(layerWipeParams(train));
+    if (final_layers.temperatures) {
+        final_layers.deliver(final_layers.temperatures->finish(plan));
+        return;
     }
     applyCoasting(plan, coasting, start_extruder);
     planLayerWipes(plan, wipes, start_extruder);
     planNozzleTemperatures(plan, toolpaths, global, extruders, run.used, start_extruder, print_start);
-    return plan;
+    final_layers.deliver(plan.layers.size());
 }
 
 }  // namespace mixengine

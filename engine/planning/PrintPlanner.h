@@ -12,6 +12,7 @@
 // Travel combs inside the layer's comb area (combArea: per mesh by its retraction_combing mode),
 // even-odd (planning/CombBoundary.h), and goes around the parts through the air with
 // travel_avoid_other_parts (freeSpace; planning/TravelRoute.h).
+#include <functional>
 #include <set>
 #include <vector>
 
@@ -33,6 +34,19 @@ struct PlannerState {
 /// the layers are planned in order (the result does not depend on it).
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,
                     const std::vector<Settings>& extruders, PlannerState& state, int threads = 1);
+
+/// Called on the planning thread with each layer of the plan being made (`plan.layers[layer]`), in
+/// order, as soon as no later planning step changes it. With one extruder and neither coasting nor
+/// layer wipes a layer is final once the layer after it is planned; else every layer is handed
+/// over when the plan is complete.
+using FinalLayer = std::function<void(const PrintPlan& plan, std::size_t layer)>;
+
+/// planPrint() into `plan` (empty at the call), handing each layer to `on_final` once it is final.
+/// The layers handed over stay where they are (no reallocation) as long as `plan` lives, also when
+/// planning throws, so another thread may read them while later layers are planned.
+void planPrint(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings& global,
+               const std::vector<Settings>& extruders, PlannerState& state, int threads,
+               const FinalLayer& on_final);
 
 /// The outlines of every mesh's sliced layer toolpaths.first_sliced_layer + layer, one after the
 /// other (microns).

@@ -130,35 +130,54 @@ Point2 lastPosition(const PlannedLayer& layer, Point2 start) {
     return start;
 }
 
-void planNozzle(PrintPlan& plan, const NozzleTemperatureParams& p, Point2 start) {
-    std::vector<Point2> starts;
-    for (const PlannedLayer& layer : plan.layers) {
-        starts.push_back(start);
-        start = lastPosition(layer, start);
+}  // namespace
+
+void TemperatureSteps::planNozzle(PrintPlan& plan, std::size_t i) {
+    const NozzleTemperatureParams& p = params_.nozzle;
+    if (i == 0) {
+        current_c_ = wantedTemperature(p, plan.layers[0], start_, true);
+        return;
     }
-    double current = plan.layers.empty() ? 0 : wantedTemperature(p, plan.layers[0], starts[0], true);
-    for (std::size_t i = 1; i < plan.layers.size(); ++i) {
-        const double wanted = wantedTemperature(p, plan.layers[i], starts[i], false);
-        if (wanted == current)
-            continue;
-        PlannedLayer& before = plan.layers[i - 1];
-        const double lead_s =
-            std::min(naiveLayerSeconds(before, starts[i - 1]), 0.5 * secondsBetween(p, current, wanted));
-        insertBeforeEnd(before, starts[i - 1], lead_s,
-                        temperatureStep(PlanStep::Kind::SetNozzleTemperature, wanted));
-        current = wanted;
+    const double wanted = wantedTemperature(p, plan.layers[i], start_, false);
+    if (wanted == current_c_)
+        return;
+    PlannedLayer& before = plan.layers[i - 1];
+    const double lead_s =
+        std::min(naiveLayerSeconds(before, previous_start_), 0.5 * secondsBetween(p, current_c_, wanted));
+    insertBeforeEnd(before, previous_start_, lead_s,
+                    temperatureStep(PlanStep::Kind::SetNozzleTemperature, wanted));
+    current_c_ = wanted;
+}
+
+void TemperatureSteps::finalizeBefore(PrintPlan& plan, std::size_t end) {
+    for (; final_ < end; ++final_) {
+        if (final_ == 1 && params_.heated_bed && params_.bed_c != params_.bed_layer0_c) {
+            std::vector<PlanStep>& steps = plan.layers[1].steps;
+            steps.insert(steps.begin(), temperatureStep(PlanStep::Kind::SetBedTemperature, params_.bed_c));
+        }
     }
 }
 
-}  // namespace
+std::size_t TemperatureSteps::add(PrintPlan& plan) {
+    for (; planned_ < plan.layers.size(); ++planned_) {
+        if (single_ && params_.nozzle.enabled)
+            planNozzle(plan, planned_);
+        previous_start_ = start_;
+        start_ = lastPosition(plan.layers[planned_], start_);
+        if (planned_ > 0)
+            finalizeBefore(plan, planned_);  // layers before this one are final
+    }
+    return final_;
+}
+
+std::size_t TemperatureSteps::finish(PrintPlan& plan) {
+    add(plan);
+    finalizeBefore(plan, plan.layers.size());
+    return final_;
+}
 
 void planTemperatures(PrintPlan& plan, const TemperatureParams& params, bool single_extruder, Point2 start) {
-    if (single_extruder && params.nozzle.enabled)
-        planNozzle(plan, params.nozzle, start);
-    if (params.heated_bed && params.bed_c != params.bed_layer0_c && plan.layers.size() > 1) {
-        std::vector<PlanStep>& steps = plan.layers[1].steps;
-        steps.insert(steps.begin(), temperatureStep(PlanStep::Kind::SetBedTemperature, params.bed_c));
-    }
+    TemperatureSteps(params, single_extruder, start).finish(plan);
 }
 
 }  // namespace mixengine

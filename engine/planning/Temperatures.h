@@ -60,4 +60,29 @@ double flowTemperature(const NozzleTemperatureParams& p, double flow_mm3_s);
 /// uses one extruder (multi-extruder prints change temperatures at tool changes instead).
 void planTemperatures(PrintPlan& plan, const TemperatureParams& params, bool single_extruder, Point2 start);
 
+/// planTemperatures() for a plan that grows a layer at a time, with the same result: add() after
+/// layers were appended, finish() when the plan is complete. A layer is final (no later call
+/// changes it) once the layer after it is added: its nozzle step depends on that layer's wish.
+class TemperatureSteps {
+  public:
+    TemperatureSteps(const TemperatureParams& params, bool single_extruder, Point2 start)
+        : params_(params), single_(single_extruder), start_(start) {}
+    /// Plans the layers appended since the last call; returns how many layers at the front of
+    /// `plan` are final.
+    std::size_t add(PrintPlan& plan);
+    /// Plans what is left; every layer is final (returns their count).
+    std::size_t finish(PrintPlan& plan);
+
+  private:
+    void planNozzle(PrintPlan& plan, std::size_t layer);
+    void finalizeBefore(PrintPlan& plan, std::size_t end);  ///< the bed step, then final up to `end`
+
+    TemperatureParams params_;
+    bool single_;
+    Point2 start_;           ///< where the next layer to plan starts
+    Point2 previous_start_;  ///< where the layer before it started
+    double current_c_ = 0;   ///< the nozzle temperature wanted so far
+    std::size_t planned_ = 0, final_ = 0;
+};
+
 }  // namespace mixengine

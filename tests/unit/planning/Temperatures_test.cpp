@@ -131,5 +131,48 @@ TEST(Temperatures, UnderARaftTheRaftsBaseIsTheInitialLayer) {
     EXPECT_EQ(positions(plan.layers[1], PlanStep::Kind::SetBedTemperature), std::vector<std::size_t>{0});
 }
 
+TEST(Temperatures, LayerByLayerGivesTheWholePlansStepsAndFinalLayersStayFinal) {
+    // Layers of 20, 4, 20, 3, 20 moves, layer 2 with more material per move: with the flow graph each
+    // layer wants its own temperature, set in the layer before; the bed changes in layer 1.
+    TemperatureParams p = params();
+    p.nozzle.flow_dependent = true;
+    p.nozzle.graph = {{1.0, 190}, {3.0, 230}};
+    PrintPlan source;
+    source.layers = {layer(0, 20), layer(1, 4), layer(2, 20), layer(3, 3), layer(4, 20)};
+    for (PlanStep& s : source.layers[2].steps)
+        s.volume_mm3 = 3;
+    PrintPlan whole = source;
+    planTemperatures(whole, p, true, {0, 0});
+
+    PrintPlan growing;
+    TemperatureSteps steps(p, true, {0, 0});
+    std::vector<std::size_t> final_counts;
+    std::vector<std::vector<PlanStep>> seen_final;  // each layer as it was when it became final
+    for (const PlannedLayer& l : source.layers) {
+        growing.layers.push_back(l);
+        const std::size_t final_count = steps.add(growing);
+        final_counts.push_back(final_count);
+        for (std::size_t i = seen_final.size(); i < final_count; ++i)
+            seen_final.push_back(growing.layers[i].steps);
+    }
+    const std::size_t total = steps.finish(growing);
+    for (std::size_t i = seen_final.size(); i < total; ++i)
+        seen_final.push_back(growing.layers[i].steps);
+    EXPECT_EQ(final_counts, (std::vector<std::size_t>{0, 1, 2, 3, 4}));  // final once the next is added
+    EXPECT_EQ(total, 5u);
+    ASSERT_EQ(seen_final.size(), whole.layers.size());
+    std::size_t temperature_steps = 0;
+    for (std::size_t i = 0; i < whole.layers.size(); ++i) {
+        const std::vector<PlanStep>& expected = whole.layers[i].steps;
+        ASSERT_EQ(seen_final[i].size(), expected.size()) << "layer " << i;
+        for (std::size_t k = 0; k < expected.size(); ++k) {
+            EXPECT_EQ(seen_final[i][k].kind, expected[k].kind) << "layer " << i << " step " << k;
+            EXPECT_EQ(seen_final[i][k].temperature_c, expected[k].temperature_c);
+        }
+        temperature_steps += expected.size() - source.layers[i].steps.size();
+    }
+    EXPECT_EQ(temperature_steps, 5u);  // a nozzle step in each of layers 0-3 (flows differ), the bed
+}
+
 }  // namespace
 }  // namespace mixengine

@@ -1,0 +1,96 @@
+// Writing a plan while it is being made (pipeline/StreamedWriter.h with planning/PrintPlanner.h's
+// FinalLayer): the text is writePlan()'s for the finished plan, layer numbers included, and each
+// layer is handed over once, in order, before planning ends.
+#include "pipeline/StreamedWriter.h"
+
+#include <gtest/gtest.h>
+
+#include "../toolpaths/ToolpathTestSupport.h"
+
+namespace mixengine {
+namespace {
+
+struct Planned {
+    ResolvedMachine machine;
+    test::Stack stack;
+    GroupToolpaths toolpaths;
+};
+
+/// A cube on a raft, 20 model layers, the nozzle and bed temperatures changing after the first layer
+/// (temperature steps that look one layer ahead).
+Planned cubeOnRaft() {
+    Planned p;
+    p.machine = test::fdmMachine({{"adhesion_type", "raft"},
+                                  {"material_print_temperature", "200"},
+                                  {"material_print_temperature_layer_0", "215"},
+                                  {"material_bed_temperature", "50"},
+                                  {"material_bed_temperature_layer_0", "60"},
+                                  {"machine_heated_bed", "true"},
+                                  {"retraction_combing", "all"}});
+    p.stack = test::prismStack(20);
+    test::fill(p.stack, 0, 20, {test::square(100'000, 100'000, 10'000)});
+    ToolpathInput in{&p.machine.global,
+                     &p.machine.extruders,
+                     p.stack.heights,
+                     {{&p.machine.global, "cube", &p.stack.layers, std::nullopt, {}}}};
+    p.toolpaths = generateGroupToolpaths(in, 2);
+    return p;
+}
+
+std::string joined(const WrittenLayers& written) {
+    std::string text;
+    for (const std::string& chunk : written.chunks)
+        text += chunk;
+    return text;
+}
+
+TEST(StreamedWriter, WritesWritePlansTextWhileLaterLayersArePlanned) {
+    const Planned p = cubeOnRaft();
+    const PlanWriterParams params;
+    PlannerState state;
+    const PrintPlan whole = planPrint(p.toolpaths, p.machine.global, p.machine.extruders, state, 2);
+    GCodeExport after(ExportParams{});
+    const std::string expected = joined(writePlan(whole, params, after));
+    ASSERT_NE(expected.find("M140 S50"), std::string::npos);  // the temperature steps are there
+    ASSERT_NE(expected.find("M104 S200"), std::string::npos);
+
+    PrintPlan plan;
+    GCodeExport during(ExportParams{});
+    StreamedWriter writer(params, during, std::nullopt);
+    const FinalLayer to_writer = writer.observer();
+    std::vector<std::size_t> handed, planned_then;
+    PlannerState streamed_state;
+    planPrint(plan, p.toolpaths, p.machine.global, p.machine.extruders, streamed_state, 2,
+              [&](const PrintPlan& growing, std::size_t layer) {
+                  handed.push_back(layer);
+                  planned_then.push_back(growing.layers.size());
+                  to_writer(growing, layer);
+              });
+    const WrittenLayers written = writer.finish();
+    EXPECT_EQ(joined(written), expected);
+    ASSERT_EQ(handed.size(), whole.layers.size());
+    for (std::size_t i = 0; i < handed.size(); ++i)
+        EXPECT_EQ(handed[i], i);
+    EXPECT_EQ(planned_then.front(), 2u);  // the first layer goes once the second is planned
+    EXPECT_LT(planned_then[handed.size() / 2], whole.layers.size());
+    EXPECT_EQ(written.min.x, writePlan(whole, params, after).min.x);
+}
+
+TEST(StreamedWriter, NumbersTheLayersOnFromFirstNumber) {
+    const Planned p = cubeOnRaft();
+    PrintPlan plan;
+    GCodeExport gcode(ExportParams{});
+    const PlanWriterParams params;
+    StreamedWriter writer(params, gcode, 100);
+    PlannerState state;
+    planPrint(plan, p.toolpaths, p.machine.global, p.machine.extruders, state, 2, writer.observer());
+    const WrittenLayers written = writer.finish();
+    ASSERT_EQ(written.chunks.size(), plan.layers.size());
+    EXPECT_LT(plan.layers.front().index, 0);  // raft layers are numbered below 0 in the plan
+    EXPECT_EQ(written.chunks.front().rfind(";LAYER:100\n", 0), 0u);
+    const int last = plan.layers.back().index + 100 - plan.layers.front().index;  // as the pipeline renumbers
+    EXPECT_EQ(written.chunks.back().rfind(";LAYER:" + std::to_string(last) + "\n", 0), 0u);
+}
+
+}  // namespace
+}  // namespace mixengine
