@@ -22,7 +22,9 @@ struct SkinOutput {
 Paths skinLoops(const Paths& part, int count, coord_um width_um, Paths& inner) {
     Paths loops, last;
     for (int i = 0; i < count; ++i) {
-        Paths ring = i == 0 ? offsetMiter(part, -width_um / 2 + kInsetSlackUm) : offsetMiter(last, -width_um);
+        // `part` is an island of splitIslands' union: united.
+        Paths ring = i == 0 ? offsetMiter(part, -width_um / 2 + kInsetSlackUm, Loops::United)
+                            : offsetMiter(last, -width_um);
         if (ring.empty())
             break;
         loops.insert(loops.end(), ring.begin(), ring.end());
