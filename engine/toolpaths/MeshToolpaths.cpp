@@ -201,7 +201,9 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
                             !(concentric && (flag(s, "alternate_extra_perimeter") || wider_first));
     if (!inner_gaps || inner_area.empty())
         return between_walls;
-    Paths gaps = differenceOf(offsetMiter(inner_area, -15), unionOf(areas.skin, areas.infill));
+    // The inner area is an inset (united) unless there are no walls (then it is the outlines).
+    const Loops loops = countOf(s, "wall_line_count") > 0 ? Loops::United : Loops::Any;
+    Paths gaps = differenceOf(offsetMiter(inner_area, -15, loops), unionOf(areas.skin, areas.infill));
     if (!s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps")) {
         const double width = double(s.lengthMicrons("infill_line_width"));
         gaps = removeSmallIslands(gaps, 2 * width * width);

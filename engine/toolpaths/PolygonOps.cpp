@@ -68,11 +68,14 @@ Paths offsetPolygons(const Paths& polygons, coord_um delta_um) {
     return offsetWith(polygons, delta_um, ClipperLib::jtRound);
 }
 
-Paths offsetMiter(const Paths& polygons, coord_um delta_um) {
+Paths offsetMiter(const Paths& polygons, coord_um delta_um, Loops loops) {
     if (polygons.empty() || delta_um == 0)
         return polygons;
     ClipperLib::ClipperOffset offset(1.2, kArcToleranceUm);
-    offset.AddPaths(unionOf(polygons), ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    if (loops == Loops::United)
+        offset.AddPaths(polygons, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+    else
+        offset.AddPaths(unionOf(polygons), ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
     Paths result;
     offset.Execute(result, static_cast<double>(delta_um));
     return result;
@@ -82,10 +85,10 @@ Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit) 
     return offsetWith(polygons, delta_um, ClipperLib::jtMiter, miter_limit);
 }
 
-Paths openPolygons(const Paths& polygons, coord_um radius_um) {
+Paths openPolygons(const Paths& polygons, coord_um radius_um, Loops loops) {
     if (radius_um <= 0)
         return polygons;
-    return offsetMiter(offsetMiter(polygons, -radius_um), radius_um);
+    return offsetMiter(offsetMiter(polygons, -radius_um, loops), radius_um);
 }
 
 Paths unionOf(const Paths& polygons) {

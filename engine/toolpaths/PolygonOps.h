@@ -11,17 +11,24 @@ namespace mixengine {
 /// lines are round: skirt, brim, support distances, ooze shield.
 Paths offsetPolygons(const Paths& polygons, coord_um delta_um);
 
+/// What is known of an area's loops. `United`: they are as a Clipper union, difference,
+/// intersection or offset with non-zero (or positive) fill returned them and unedited since (not
+/// simplified): no overlaps, no crossings, holes clockwise, so uniting them again changes nothing.
+enum class Loops { Any, United };
+
 /// Offset with mitred joins as CuraEngine 4.13 offsets its walls, skin and infill areas: the
-/// polygons are united first (so a zero-width bridge left by an earlier inset is gone), the miter
-/// limit is 1.2 × delta (corners sharper than about 113° are squared off).
-Paths offsetMiter(const Paths& polygons, coord_um delta_um);
+/// polygons are united first (so a zero-width bridge left by an earlier inset is gone; left out
+/// for Loops::United input, which that union would return as it is), the miter limit is 1.2 ×
+/// delta (corners sharper than about 113° are squared off).
+Paths offsetMiter(const Paths& polygons, coord_um delta_um, Loops loops = Loops::Any);
 /// The same with another miter limit (CuraEngine's Polygons::offset uses 1.2: corners sharper than
 /// about 113° are bevelled).
 Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit);
 
 /// Removes the parts narrower than 2·radius (erode, then grow back with mitred joins), so the
-/// corners of what is left stay as they were.
-Paths openPolygons(const Paths& polygons, coord_um radius_um);
+/// corners of what is left stay as they were. (The erosion's output is united: only the first
+/// offset unites `polygons`, and not for Loops::United.)
+Paths openPolygons(const Paths& polygons, coord_um radius_um, Loops loops = Loops::Any);
 
 Paths unionOf(const Paths& polygons);
 Paths unionOf(const Paths& a, const Paths& b);

@@ -22,13 +22,15 @@ struct SkinOutput {
 Paths skinLoops(const Paths& part, int count, coord_um width_um, Paths& inner) {
     Paths loops, last;
     for (int i = 0; i < count; ++i) {
-        Paths ring = i == 0 ? offsetMiter(part, -width_um / 2 + kInsetSlackUm) : offsetMiter(last, -width_um);
+        // `part` is an island of splitIslands' union: united.
+        Paths ring = i == 0 ? offsetMiter(part, -width_um / 2 + kInsetSlackUm, Loops::United)
+                            : offsetMiter(last, -width_um, Loops::United);
         if (ring.empty())
             break;
         loops.insert(loops.end(), ring.begin(), ring.end());
         last = std::move(ring);
     }
-    inner = last.empty() ? part : offsetMiter(last, -width_um / 2);
+    inner = last.empty() ? part : offsetMiter(last, -width_um / 2, Loops::United);
     return loops;
 }
 
@@ -93,7 +95,7 @@ void appendFill(const Paths& area, const SkinFillParams& fill, const SkinPathPar
         return;
     }
     std::vector<ExtrusionPath> lines =
-        generateInfill(offsetMiter(area, fill.overlap_um), patternParams(fill, params.z_um));
+        generateInfill(offsetMiter(area, fill.overlap_um, Loops::United), patternParams(fill, params.z_um));
     if (fill.monotonic) {
         appendMonotonic(std::move(lines), fill, out);
         return;
@@ -106,7 +108,7 @@ void appendGapLines(const Paths& gaps, const SkinPathParams& params, std::vector
     if (gaps.empty() || !params.gap_style || params.gap_style->width_um <= 0)
         return;
     const FeatureStyle& style = *params.gap_style;
-    const Paths area = offsetMiter(gaps, params.skin.overlap_um);
+    const Paths area = offsetMiter(gaps, params.skin.overlap_um, Loops::United);
     for (const Path& line : lineSegments(area, style.width_um, params.gap_angle_degrees, 0))
         out.push_back(styledPath(line, false, Feature::Skin, style));
 }

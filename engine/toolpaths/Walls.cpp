@@ -31,6 +31,12 @@ Paths simplifiedRegion(Paths region, const WallParams& p) {
     return region;
 }
 
+/// The wall centre regions are offsets, then simplified (meshfix_maximum_resolution / _deviation),
+/// which moves no vertex off the loop by more than the deviation: they are taken as united, so the
+/// next offset does not unite them again (quality.sh: coverage on armadillo52k, bunny69k and
+/// rear_case as with the union).
+constexpr Loops kRegionLoops = Loops::United;
+
 /// Wall `i`'s centre region in one part, from the previous wall's (`from`, with `from_count`
 /// loops; the part's outline for i = 0). As CuraEngine 4.13: a plain inward offset, so a piece
 /// narrower than the line still gets its loop; when the offset breaks into more than three loops
@@ -39,10 +45,11 @@ Paths simplifiedRegion(Paths region, const WallParams& p) {
 Paths insetRegion(const Paths& from, std::size_t from_count, int i, const WallParams& p) {
     constexpr std::size_t kMinSaving = 3;
     const coord_um step = insetStepUm(p, i);
-    Paths region = offsetMiter(from, -step);
+    const Loops loops = i == 0 ? Loops::United : kRegionLoops;  // a part: an island of a union
+    Paths region = offsetMiter(from, -step, loops);
     const std::size_t count = region.size();
     if (count > kMinSaving + 1 && (i == 0 || count > from_count + kMinSaving)) {
-        Paths smaller = offsetMiter(from, -(step - (i <= 1 ? 5 : 10)));
+        Paths smaller = offsetMiter(from, -(step - (i <= 1 ? 5 : 10)), loops);
         if (smaller.size() + kMinSaving < count)
             region = std::move(smaller);
     }
@@ -72,7 +79,8 @@ Paths referenceRegion(const Paths& outlines, const std::vector<Paths>& regions,
     const std::size_t last = static_cast<std::size_t>(std::min<int>(k, static_cast<int>(regions.size()))) - 1;
     if (last == 0)
         return regions[0];
-    return unionOf(regions[last], differenceOf(regions[0], offsetMiter(regions[last], depths[last] + 10)));
+    return unionOf(regions[last],
+                   differenceOf(regions[0], offsetMiter(regions[last], depths[last] + 10, kRegionLoops)));
 }
 
 FeatureStyle levelStyle(const WallParams& p, std::size_t level) {
@@ -122,9 +130,10 @@ Paths gapsBetweenWalls(const std::vector<Paths>& levels, const WallParams& p) {
         if (last && !walls_missing)
             break;  // inside the innermost wall: skin and infill, and their gaps (MeshToolpaths)
         const coord_um width = k == 0 ? p.outer_width_um : p.inner_width_um;
-        const Paths outer = offsetMiter(levels[k], -width / 2 - kSlackUm);
-        gaps = unionOf(gaps,
-                       last ? outer : differenceOf(outer, offsetMiter(levels[k + 1], p.inner_width_um / 2)));
+        const Paths outer = offsetMiter(levels[k], -width / 2 - kSlackUm, kRegionLoops);
+        gaps = unionOf(
+            gaps, last ? outer
+                       : differenceOf(outer, offsetMiter(levels[k + 1], p.inner_width_um / 2, kRegionLoops)));
     }
     if (p.filter_tiny_gaps)
         gaps = removeSmallIslands(gaps, 2.0 * double(p.outer_width_um) * double(p.outer_width_um));
@@ -161,7 +170,7 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     result.walls = wallPaths(regions, depths, params);
     if (params.perimeter_gaps)
         result.perimeter_gaps = gapsBetweenWalls(regions, params);
-    result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half);
+    result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half, kRegionLoops);
     result.top_reference = referenceRegion(outlines, regions, depths, params.top_reference);
     result.bottom_reference = params.bottom_reference == params.top_reference
                                   ? result.top_reference
