@@ -26,9 +26,12 @@ inline double micronsToMm(coord_um um) {
     return static_cast<double>(um) / kMicronsPerMm;
 }
 
-/// The straight distance between two points in the XY plane, in microns.
+/// The straight distance between two points in the XY plane, in microns. The squares of integer
+/// differences below 2^26 µm (67 m) add up exactly in a double, so the square root is the correctly
+/// rounded distance, as std::hypot's, without its cost (it was 2.6 % of a slice's CPU).
 inline double distanceUm(const Point2& a, const Point2& b) {
-    return std::hypot(static_cast<double>(a.X - b.X), static_cast<double>(a.Y - b.Y));
+    const auto dx = static_cast<double>(a.X - b.X), dy = static_cast<double>(a.Y - b.Y);
+    return std::sqrt(dx * dx + dy * dy);
 }
 
 /// The same distance in millimetres.

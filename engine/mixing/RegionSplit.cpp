@@ -1,4 +1,5 @@
 #include "mixing/RegionSplit.h"
+#include "geometry/Point.h"
 
 #include <cmath>
 
@@ -27,9 +28,7 @@ struct Segment {
         const Point2 p = at(t);
         return regions->regionAt({p.X, p.Y, z});
     }
-    double lengthUm() const {
-        return std::hypot(static_cast<double>(to.X - from.X), static_cast<double>(to.Y - from.Y));
-    }
+    double lengthUm() const { return distanceUm(to, from); }
 };
 
 struct Piece {

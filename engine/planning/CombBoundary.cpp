@@ -1,4 +1,5 @@
 #include "planning/CombBoundary.h"
+#include "geometry/Point.h"
 
 #include <algorithm>
 #include <cmath>
@@ -119,10 +120,14 @@ bool CombBoundary::inside(const Point2& p) const {
 }
 
 bool CombBoundary::straightInside(const Point2& a, const Point2& b) const {
+    return inside(a) && inside(b) && straightBetweenInside(a, b);
+}
+
+bool CombBoundary::straightBetweenInside(const Point2& a, const Point2& b) const {
     // The midpoint catches chords between two boundary points that run outside without a
     // proper crossing (e.g. corner to edge across a hole).
     const Point2 middle{a.X + (b.X - a.X) / 2, a.Y + (b.Y - a.Y) / 2};
-    if (!inside(a) || !inside(b) || !inside(middle))
+    if (!inside(middle))
         return false;
     const coord_um c0 = column(std::min(a.X, b.X)), c1 = column(std::max(a.X, b.X));
     const coord_um r0 = row(std::min(a.Y, b.Y)), r1 = row(std::max(a.Y, b.Y));
@@ -186,7 +191,7 @@ Path CombBoundary::aroundLoop(const Crossing& from, const Crossing& to) const {
     auto length = [](const Path& p) {
         double sum = 0;
         for (std::size_t m = 1; m < p.size(); ++m)
-            sum += std::hypot(double(p[m].X - p[m - 1].X), double(p[m].Y - p[m - 1].Y));
+            sum += distanceUm(p[m], p[m - 1]);
         return sum;
     };
     Path forward = walk(true), backward = walk(false);
@@ -195,19 +200,24 @@ Path CombBoundary::aroundLoop(const Crossing& from, const Crossing& to) const {
 
 Path CombBoundary::shortened(const Point2& start, const Path& points) const {
     constexpr std::size_t kLookAhead = 48;
+    std::vector<bool> point_inside(points.size());  // each point's test once, not once per shortcut tried
+    for (std::size_t k = 0; k < points.size(); ++k)
+        point_inside[k] = inside(points[k]);
     Path result;
     Point2 current = start;
+    bool current_inside = inside(start);
     std::size_t i = 0;
     while (i < points.size()) {
         std::size_t best = i;
         const std::size_t last = std::min(points.size() - 1, i + kLookAhead);
-        for (std::size_t j = last; j > i; --j) {
-            if (straightInside(current, points[j])) {
+        for (std::size_t j = last; j > i && current_inside; --j) {
+            if (point_inside[j] && straightBetweenInside(current, points[j])) {
                 best = j;
                 break;
             }
         }
         current = points[best];
+        current_inside = point_inside[best];
         result.push_back(current);
         i = best + 1;
     }
@@ -264,7 +274,7 @@ std::optional<Point2> CombBoundary::moveInside(const Point2& p, coord_um max_dis
         for (coord_um c = c0; c <= c1; ++c) {
             for (std::uint32_t e : cells_[cellIndex(c, r)]) {
                 const Point2 q = nearestOnSegment(p, edges_[e].a, edges_[e].b);
-                const double d = std::hypot(double(q.X - p.X), double(q.Y - p.Y));
+                const double d = distanceUm(q, p);
                 if (d <= best)
                     best = d, nearest = q;
             }

@@ -54,6 +54,8 @@ class CombBoundary {
     std::vector<Crossing> crossings(const Point2& a, const Point2& b) const;
     Path aroundLoop(const Crossing& from, const Crossing& to) const;
     Path shortened(const Point2& start, const Path& points) const;
+    /// straightInside for end points already known to be inside.
+    bool straightBetweenInside(const Point2& a, const Point2& b) const;
     std::size_t cellIndex(coord_um cx, coord_um cy) const {
         return static_cast<std::size_t>(cy) * static_cast<std::size_t>(columns_) +
                static_cast<std::size_t>(cx);

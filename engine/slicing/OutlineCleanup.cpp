@@ -5,12 +5,13 @@
 #include <optional>
 
 #include "common/ParallelFor.h"
+#include "geometry/Point.h"
 
 namespace mixengine {
 namespace {
 
 double lengthUm(const Point2& a, const Point2& b) {
-    return std::hypot(static_cast<double>(b.X - a.X), static_cast<double>(b.Y - a.Y));
+    return distanceUm(b, a);
 }
 
 double squaredUm2(const Point2& a, const Point2& b) {

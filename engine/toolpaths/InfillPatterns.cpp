@@ -6,6 +6,7 @@
 
 #include "common/Error.h"
 #include "geometry/Angles.h"
+#include "geometry/Point.h"
 #include "toolpaths/ConnectedLines.h"
 #include "toolpaths/FeatureStyle.h"
 #include "toolpaths/GyroidInfill.h"
@@ -93,7 +94,7 @@ Paths separateLines(const Paths& area, const std::vector<LineSet>& sets, coord_u
     const double min_length = double(line_width / 5);
     for (const LineSet& set : sets) {
         for (Path& line : lineSegments(area, set.spacing_um, set.angle_degrees, set.phase_um)) {
-            const double length = std::hypot(double(line[1].X - line[0].X), double(line[1].Y - line[0].Y));
+            const double length = distanceUm(line[1], line[0]);
             if (length >= min_length)
                 out.push_back(std::move(line));
         }

@@ -1,4 +1,5 @@
 #include "toolpaths/PolygonOps.h"
+#include "geometry/Point.h"
 
 #include <algorithm>
 #include <cmath>
@@ -187,9 +188,9 @@ ClipperLib::IntRect boundsOf(const Paths& polygons) {
 double lengthUm(const Path& path, bool closed) {
     double total = 0;
     for (std::size_t i = 1; i < path.size(); ++i)
-        total += std::hypot(double(path[i].X - path[i - 1].X), double(path[i].Y - path[i - 1].Y));
+        total += distanceUm(path[i], path[i - 1]);
     if (closed && path.size() > 2)
-        total += std::hypot(double(path.front().X - path.back().X), double(path.front().Y - path.back().Y));
+        total += distanceUm(path.front(), path.back());
     return total;
 }
 
