@@ -517,7 +517,7 @@ Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
 Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um) {
     if (outlines.empty())
         return {};
-    Paths free = offsetPolygons(unionOf(outlines), avoid_distance_um);
+    Paths free = offsetMiter(outlines, avoid_distance_um);  // as 4.13's Comb: united, mitred
     const ClipperLib::IntRect box = boundsOf(free);
     constexpr coord_um kMarginUm = 5'000;
     free.insert(free.begin(), Path{{box.left - kMarginUm, box.top - kMarginUm},

@@ -57,7 +57,8 @@ Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer);
 Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer);
 
 /// The space through-air travel may use with travel_avoid_other_parts: a rectangle 5 mm around the
-/// parts, less the parts grown (round) by `avoid_distance_um`, as even-odd loops (rectangle first).
+/// parts, less the parts grown by `avoid_distance_um` (mitred, as CuraEngine 4.13's Comb grows its
+/// outside boundary), as even-odd loops (rectangle first).
 Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um);
 
 /// The extruders used on `layer`, in print order: `active` first if used, then ascending.
