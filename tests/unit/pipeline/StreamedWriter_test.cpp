@@ -29,11 +29,7 @@ Planned cubeOnRaft() {
                                   {"retraction_combing", "all"}});
     p.stack = test::prismStack(20);
     test::fill(p.stack, 0, 20, {test::square(100'000, 100'000, 10'000)});
-    ToolpathInput in{&p.machine.global,
-                     &p.machine.extruders,
-                     p.stack.heights,
-                     {{&p.machine.global, "cube", &p.stack.layers, std::nullopt, {}}}};
-    p.toolpaths = generateGroupToolpaths(in, 2);
+    p.toolpaths = test::oneMeshToolpaths(p.machine, p.stack, "cube");
     return p;
 }
 

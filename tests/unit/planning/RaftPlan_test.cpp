@@ -33,11 +33,7 @@ RaftPrint raftPrint() {
                                   {"retraction_combing", "all"}});
     r.stack = test::prismStack(20);
     test::fill(r.stack, 0, 20, {test::square(100'000, 100'000, 10'000)});
-    ToolpathInput in{&r.machine.global,
-                     &r.machine.extruders,
-                     r.stack.heights,
-                     {{&r.machine.global, "cube", &r.stack.layers, std::nullopt, {}}}};
-    r.toolpaths = generateGroupToolpaths(in, 2);
+    r.toolpaths = test::oneMeshToolpaths(r.machine, r.stack, "cube");
     PlannerState state;
     r.plan = planPrint(r.toolpaths, r.machine.global, r.machine.extruders, state);
     return r;

@@ -157,8 +157,7 @@ TEST(GroupToolpaths, SupportAndBrimForATee) {
     test::Stack s = test::prismStack(60);
     test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
     test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt, {}}}};
-    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const GroupToolpaths g = test::oneMeshToolpaths(m, s, "tee");
     const Paths stem{rect(50'000 - 699, 50'000 - 699, 60'000 + 699, 60'000 + 699)};
     for (int i = 0; i < 60; ++i) {
         EXPECT_EQ(!g.support[i].empty(), i < 49) << i;
@@ -184,8 +183,7 @@ TEST(GroupToolpaths, BrimReplacesTheSupportsFirstLayerAroundTheModel) {
     test::Stack s = test::prismStack(60);
     test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
     test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt, {}}}};
-    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const GroupToolpaths g = test::oneMeshToolpaths(m, s, "tee");
     // 3 lines rounded up to 4 of 0.4 mm: 1.6 mm around the stem (the support reaches to 0.7 mm above).
     const Paths brim_zone{rect(50'000 - 1'599, 50'000 - 1'599, 60'000 + 1'599, 60'000 + 1'599)};
     ASSERT_FALSE(g.support[0].empty());
@@ -215,8 +213,7 @@ TEST(GroupToolpaths, RaftUnderATeeLiftsTheModelAndTakesTheFirstLayersSupport) {
     test::Stack s = test::prismStack(60);  // 0.3 mm first layer, then 0.1 mm
     test::fill(s, 0, 50, {rect(50'000, 50'000, 60'000, 60'000)});
     test::fill(s, 50, 60, {rect(40'000, 50'000, 70'000, 60'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "tee", &s.layers, std::nullopt, {}}}};
-    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const GroupToolpaths g = test::oneMeshToolpaths(m, s, "tee");
     const RaftLayout layout = raftLayout(m.global, &m.extruders);
     EXPECT_TRUE(g.adhesion.empty());  // no skirt or brim under a raft
     EXPECT_TRUE(g.warnings.empty());
@@ -255,8 +252,7 @@ TEST(GroupToolpaths, EmptyBottomLayersAreDroppedAndThePrintStartsAtTheFirstHeigh
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
     test::Stack s = test::prismStack(30);
     test::fill(s, 3, 30, {square(50'000, 50'000, 10'000)});
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "late", &s.layers, std::nullopt, {}}}};
-    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const GroupToolpaths g = test::oneMeshToolpaths(m, s, "late");
     EXPECT_EQ(g.first_sliced_layer, 3U);
     ASSERT_EQ(g.heights.size(), 27U);
     EXPECT_EQ(g.heights.front().print_z, s.heights.front().print_z);
@@ -274,9 +270,7 @@ TEST(GroupToolpaths, TheSkirtGoesAroundTheFirstLayerThatPrints) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "skirt"}});
     test::Stack s = test::prismStack(30);
     test::fill(s, 2, 28, {square(50'000, 50'000, 10'000)});
-    ToolpathInput in{
-        &m.global, &m.extruders, s.heights, {{&m.global, "middle", &s.layers, std::nullopt, {}}}};
-    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const GroupToolpaths g = test::oneMeshToolpaths(m, s, "middle");
     EXPECT_EQ(g.first_sliced_layer, 2U);
     ASSERT_EQ(g.heights.size(), 28U);
     EXPECT_EQ(g.meshes[0].layers.size(), 28U);
@@ -291,8 +285,7 @@ TEST(GroupToolpaths, TheSkirtGoesAroundTheFirstLayerThatPrints) {
 TEST(GroupToolpaths, NothingToPrintDropsEveryLayer) {
     ResolvedMachine m = test::fdmMachine({{"adhesion_type", "none"}});
     test::Stack s = test::prismStack(5);
-    ToolpathInput in{&m.global, &m.extruders, s.heights, {{&m.global, "empty", &s.layers, std::nullopt, {}}}};
-    const GroupToolpaths g = generateGroupToolpaths(in, 2);
+    const GroupToolpaths g = test::oneMeshToolpaths(m, s, "empty");
     EXPECT_TRUE(g.heights.empty());
     EXPECT_EQ(g.first_sliced_layer, 5U);
 }

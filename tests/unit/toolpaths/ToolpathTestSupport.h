@@ -11,6 +11,7 @@
 #include "slicing/LayerHeights.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/GroupToolpaths.h"
 
 namespace mixengine::test {
 
@@ -82,6 +83,15 @@ inline void fill(Stack& s, int from, int to, const Paths& outlines) {
         Paths& o = s.layers[static_cast<std::size_t>(i)].outlines;
         o.insert(o.end(), outlines.begin(), outlines.end());
     }
+}
+
+/// The group toolpaths of one mesh, `stack`, printed with the machine's global settings (on 2 threads).
+inline GroupToolpaths oneMeshToolpaths(const ResolvedMachine& machine, const Stack& stack, const char* name) {
+    ToolpathInput in{&machine.global,
+                     &machine.extruders,
+                     stack.heights,
+                     {{&machine.global, name, &stack.layers, std::nullopt, {}}}};
+    return generateGroupToolpaths(in, 2);
 }
 
 }  // namespace mixengine::test
