@@ -39,7 +39,7 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
                                   const std::string& flavor) {
     const bool marlin = flavor == "RepRap (Marlin/Sprinter)";
     std::string out;
-    const bool heated_bed = global.has("machine_heated_bed") && global.boolean("machine_heated_bed");
+    const bool heated_bed = global.flag("machine_heated_bed");
     const double bed = global.temperatureCelsius("material_bed_temperature_layer_0");
     if (heated_bed && bed != 0 && global.boolean("material_bed_temp_prepend")) {
         const bool wait = global.boolean("material_bed_temp_wait");
@@ -67,13 +67,13 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
 }
 
 bool heatedBuildVolume(const Settings& global) {
-    return global.has("machine_heated_build_volume") && global.boolean("machine_heated_build_volume");
+    return global.flag("machine_heated_build_volume");
 }
 
 /// What CuraEngine switches off before the end code: the bed and the build volume.
 std::string heatersOff(const Settings& global) {
     std::string out;
-    if (global.has("machine_heated_bed") && global.boolean("machine_heated_bed"))
+    if (global.flag("machine_heated_bed"))
         appendLine(out, "M140 S0");
     const std::string flavor = flavorText(global);
     if (heatedBuildVolume(global) && global.temperatureCelsius("build_volume_temperature") != 0 &&
@@ -133,11 +133,11 @@ std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::v
                         bool relative_extrusion) {
     gcode.retract();
     std::string out = gcode.takeText() + heatersOff(global);
-    if (global.has("acceleration_enabled") && global.boolean("acceleration_enabled")) {
+    if (global.flag("acceleration_enabled")) {
         gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, false);
         gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, true);
     }
-    if (global.has("jerk_enabled") && global.boolean("jerk_enabled"))
+    if (global.flag("jerk_enabled"))
         gcode.setMotion(0, global.velocityMmPerS("machine_max_jerk_xy"), false);
     out += gcode.takeText();
     if (relative_extrusion) {  // absolute mode before the fan and the end code, as CuraEngine

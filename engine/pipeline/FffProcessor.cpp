@@ -32,12 +32,8 @@ SlicingTolerance toleranceOf(const Settings& s) {
     return SlicingTolerance::Middle;
 }
 
-bool flagOf(const Settings& s, std::string_view key) {
-    return s.has(key) && s.boolean(key);
-}
-
 bool adaptiveOn(const Settings& s) {
-    return s.has("adaptive_layer_height_enabled") && s.boolean("adaptive_layer_height_enabled");
+    return s.flag("adaptive_layer_height_enabled");
 }
 
 /// adaptive_layer_height_enabled: the group's layers from the slopes of its printed meshes
@@ -209,10 +205,10 @@ coord_um stitchDistanceUm(const Settings& s) {
 
 VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
     VolumeRole role;
-    role.infill_mesh = flagOf(s, "infill_mesh");
-    role.cutting_mesh = flagOf(s, "cutting_mesh");
-    role.support_mesh = flagOf(s, "support_mesh");
-    role.anti_overhang_mesh = flagOf(s, "anti_overhang_mesh");
+    role.infill_mesh = s.flag("infill_mesh");
+    role.cutting_mesh = s.flag("cutting_mesh");
+    role.support_mesh = s.flag("support_mesh");
+    role.anti_overhang_mesh = s.flag("anti_overhang_mesh");
     role.surface_only = s.has("magic_mesh_surface_mode") && s.text("magic_mesh_surface_mode") == "surface";
     role.union_all = !s.has("meshfix_union_all") || s.boolean("meshfix_union_all");
     role.infill_mesh_order =
@@ -258,7 +254,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     for (const SceneMesh& m : group.meshes) {
         SliceOptions own = options;
         own.union_all = !m.settings.has("meshfix_union_all") || m.settings.boolean("meshfix_union_all");
-        own.keep_open_polygons = flagOf(m.settings, "meshfix_keep_open_polygons");
+        own.keep_open_polygons = m.settings.flag("meshfix_keep_open_polygons");
         own.max_gap_um = stitchDistanceUm(m.settings);
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, own, log));
     }
@@ -269,11 +265,11 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
         cleanOutlines(sliced.meshes[m], cleanup, threads);
         const Settings& own = group.meshes[m].settings;
-        if (own.has("meshfix_union_all_remove_holes") && own.boolean("meshfix_union_all_remove_holes"))
+        if (own.flag("meshfix_union_all_remove_holes"))
             removeHoles(sliced.meshes[m], threads);
         sliced.roles.push_back(volumeRoleOf(own, group.meshes[m].mesh));
     }
-    const VolumeParams volumes{flagOf(s, "carve_multiple_volumes"),
+    const VolumeParams volumes{s.flag("carve_multiple_volumes"),
                                !s.has("alternate_carve_order") || s.boolean("alternate_carve_order")};
     combineVolumes(sliced.meshes, sliced.roles, volumes, threads);
     if (!anyLayerMesh(sliced.roles)) {  // only modifiers: nothing prints, as CuraEngine (0 layers)

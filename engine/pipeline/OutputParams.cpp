@@ -39,7 +39,7 @@ ExportParams exportParams(const Scene& scene) {
     p.retraction_hop_um = e0.boolean("retraction_hop_enabled") ? e0.lengthMicrons("retraction_hop") : 0;
     p.retraction_extra_prime_mm3 = e0.real("retraction_extra_prime_amount");
     p.z_hop_speed_mm_s = e0.velocityMmPerS("speed_z_hop");
-    p.firmware_retract = e0.has("machine_firmware_retract") && e0.boolean("machine_firmware_retract");
+    p.firmware_retract = e0.flag("machine_firmware_retract");
     p.temperatures = temperatureCommandParams(scene);
     p.fan_number = static_cast<int>(e0.integer("machine_extruder_cooling_fan_number"));
     p.kinematics = kinematicsOf(global);
@@ -136,7 +136,7 @@ PlanWriterParams writerParams(const Scene& scene) {
         out.start_code = e.text("machine_extruder_start_code");
         out.end_code = e.text("machine_extruder_end_code");
         switchParams(e, out);
-        if (e.has("clean_between_layers") && e.boolean("clean_between_layers"))
+        if (e.flag("clean_between_layers"))
             out.wipe = wipeScript(e);
         writer.extruders.push_back(std::move(out));
     }

@@ -21,7 +21,7 @@ void placeMesh(Mesh& mesh, const Settings& group, const Settings& settings) {
         dx += group.lengthMicrons("machine_width") / 2;
         dy += group.lengthMicrons("machine_depth") / 2;
     }
-    if (settings.has("center_object") && settings.boolean("center_object")) {
+    if (settings.flag("center_object")) {
         const AABB3 box = mesh.bounds();
         dx -= (box.min.x + box.max.x) / 2;
         dy -= (box.min.y + box.max.y) / 2;

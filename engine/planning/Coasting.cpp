@@ -150,7 +150,7 @@ void coastPath(const std::vector<PlanStep>& steps, std::size_t begin, std::size_
 
 CoastingParams coastingParams(const Settings& extruder) {
     CoastingParams p;
-    p.enabled = extruder.has("coasting_enable") && extruder.boolean("coasting_enable");
+    p.enabled = extruder.flag("coasting_enable");
     if (!p.enabled)
         return p;
     p.volume_mm3 = extruder.real("coasting_volume");

@@ -20,7 +20,7 @@ bool switchesFirst(const PlannedLayer& layer) {
 
 LayerWipeParams layerWipeParams(const Settings& extruder) {
     LayerWipeParams p;
-    p.enabled = extruder.has("clean_between_layers") && extruder.boolean("clean_between_layers");
+    p.enabled = extruder.flag("clean_between_layers");
     if (extruder.has("max_extrusion_before_wipe"))
         p.max_extrusion_mm3 = extruder.real("max_extrusion_before_wipe");
     return p;

@@ -86,9 +86,8 @@ void setMotion(PlanStep& step, const MotionSources& sources, const Tracker& at, 
 MotionSources motionSources(const Settings& global, std::vector<const Settings*> meshes,
                             const std::vector<Settings>& extruders) {
     MotionSources sources;
-    sources.acceleration_enabled =
-        global.has("acceleration_enabled") && global.boolean("acceleration_enabled");
-    sources.jerk_enabled = global.has("jerk_enabled") && global.boolean("jerk_enabled");
+    sources.acceleration_enabled = global.flag("acceleration_enabled");
+    sources.jerk_enabled = global.flag("jerk_enabled");
     sources.meshes = std::move(meshes);
     sources.extruders = &extruders;
     return sources;

@@ -52,8 +52,7 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
         p.comb = comb;
     if (!s.has("travel_avoid_other_parts") || s.boolean("travel_avoid_other_parts"))
         p.free = free;
-    p.limit_support_retractions =
-        s.has("limit_support_retractions") && s.boolean("limit_support_retractions");
+    p.limit_support_retractions = s.flag("limit_support_retractions");
     if (s.has("retraction_combing_max_distance"))
         p.combing_max_distance_um = s.lengthMicrons("retraction_combing_max_distance");
     p.comb_move_inside_um = combMoveInside(s, layer);
@@ -63,7 +62,7 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
     p.layer_thickness_um = thickness;
-    if (s.has("wall_0_wipe_dist") && !(s.has("magic_spiralize") && s.boolean("magic_spiralize")))
+    if (s.has("wall_0_wipe_dist") && !(s.flag("magic_spiralize")))
         p.wall_0_wipe_um = s.lengthMicrons("wall_0_wipe_dist");
     if (s.has("infill_wipe_dist"))
         p.infill_wipe_um = s.lengthMicrons("infill_wipe_dist");
@@ -110,7 +109,7 @@ std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s
     }
     order.push_back({g.skin});
     order.push_back({g.infill, true});
-    if (s.has("infill_before_walls") && s.boolean("infill_before_walls"))
+    if (s.flag("infill_before_walls"))
         std::rotate(order.begin(), order.end() - 1, order.end());
     order.push_back({g.ironing});
     return order;
@@ -120,8 +119,7 @@ std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s
 /// distances (infill_enable_travel_optimization).
 TravelParams infillTravel(TravelParams travel, const MeshLayerGroups& groups, const Settings& s) {
     travel.order_from = groups.infill_start;
-    travel.comb_aware_order =
-        s.has("infill_enable_travel_optimization") && s.boolean("infill_enable_travel_optimization");
+    travel.comb_aware_order = s.flag("infill_enable_travel_optimization");
     return travel;
 }
 
@@ -163,8 +161,7 @@ std::size_t trainOf(int extruder, const std::vector<Settings>& extruders) {
 /// retract_at_layer_change: the first travel of a layer retracts (not in spiralize mode).
 void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
     if (!extruder.has("retract_at_layer_change") || !extruder.boolean("retract_at_layer_change") ||
-        !extruder.boolean("retraction_enable") ||
-        (extruder.has("magic_spiralize") && extruder.boolean("magic_spiralize")))
+        !extruder.boolean("retraction_enable") || (extruder.flag("magic_spiralize")))
         return;
     for (std::size_t i = 0; i < layer.steps.size(); ++i) {
         PlanStep& step = layer.steps[i];

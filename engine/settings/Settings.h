@@ -28,6 +28,8 @@ class Settings {
     const SettingValues& all() const { return values_; }
 
     bool boolean(std::string_view key) const;
+    /// A switch that may be absent: boolean(key) when present, false when not.
+    bool flag(std::string_view key) const { return has(key) && boolean(key); }
     double real(std::string_view key) const;
     long long integer(std::string_view key) const;
     coord_um lengthMicrons(std::string_view key) const;  ///< mm in text

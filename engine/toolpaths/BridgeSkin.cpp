@@ -119,7 +119,7 @@ int bridgeLineAngle(const Paths& part, const Paths& solid_below, const Paths& is
 
 BridgeSkinParams bridgeSkinParams(const Settings& s) {
     BridgeSkinParams p;
-    p.enabled = s.has("bridge_settings_enabled") && s.boolean("bridge_settings_enabled");
+    p.enabled = s.flag("bridge_settings_enabled");
     if (!p.enabled)
         return p;
     p.more_layers = s.boolean("bridge_enable_more_layers");

@@ -32,7 +32,7 @@ Point2 along(const Point2& a, const Point2& b, double t, double length) {
 
 BridgeWallParams bridgeWallParams(const Settings& s) {
     BridgeWallParams p;
-    p.enabled = s.has("bridge_settings_enabled") && s.boolean("bridge_settings_enabled");
+    p.enabled = s.flag("bridge_settings_enabled");
     if (!p.enabled)
         return p;
     p.outer_width_um = s.lengthMicrons("wall_line_width_0");

@@ -33,7 +33,7 @@ Paths withSmallHolesKept(const Paths& layer, Paths above, double max_hole_area_m
 }  // namespace
 
 bool conicalOverhangWanted(const Settings& s) {
-    return s.has("conical_overhang_enabled") && s.boolean("conical_overhang_enabled");
+    return s.flag("conical_overhang_enabled");
 }
 
 ConicalOverhangParams conicalOverhangParams(const Settings& s) {

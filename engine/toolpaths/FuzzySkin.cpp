@@ -27,12 +27,12 @@ bool isHole(const Path& loop) {
 
 FuzzySkinParams fuzzySkinParams(const Settings& s, int layer) {
     FuzzySkinParams p;
-    p.enabled = s.has("magic_fuzzy_skin_enabled") && s.boolean("magic_fuzzy_skin_enabled");
+    p.enabled = s.flag("magic_fuzzy_skin_enabled");
     if (p.enabled && layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim")
         p.enabled = false;
     if (!p.enabled)
         return p;
-    p.outside_only = s.has("magic_fuzzy_skin_outside_only") && s.boolean("magic_fuzzy_skin_outside_only");
+    p.outside_only = s.flag("magic_fuzzy_skin_outside_only");
     p.thickness_um = s.lengthMicrons("magic_fuzzy_skin_thickness");
     p.point_dist_um = s.lengthMicrons("magic_fuzzy_skin_point_dist");
     return p;

@@ -107,7 +107,7 @@ IroningParams ironingParams(const Settings& s, int layer) {
                                         : InfillPattern::ZigZag;
     p.line_spacing_um = s.lengthMicrons("ironing_line_spacing");
     p.angle_degrees = ironingAngle(s, layer);
-    p.monotonic = s.has("ironing_monotonic") && s.boolean("ironing_monotonic");
+    p.monotonic = s.flag("ironing_monotonic");
     p.style.width_um = s.lengthMicrons("skin_line_width");
     p.style.speed_mm_s = layerSpeed(s, "speed_ironing", layer);
     p.style.flow = s.ratio("ironing_flow");

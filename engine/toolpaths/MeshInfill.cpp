@@ -23,10 +23,6 @@ int countOf(const Settings& s, std::string_view key) {
     return s.has(key) ? static_cast<int>(std::clamp<long long>(s.integer(key), 0, 1'000'000)) : 0;
 }
 
-bool flag(const Settings& s, std::string_view key) {
-    return s.has(key) && s.boolean(key);
-}
-
 int combinedLayers(const Settings& s) {
     const coord_um layer_height = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
     const coord_um thickness = lengthOr(s, "infill_sparse_thickness", layer_height);
@@ -109,7 +105,7 @@ void thickerLayers(const LayerInfill& layer, const InfillParams& base, std::vect
 InfillLayerParams infillLayerParams(const Settings& s) {
     InfillLayerParams p;
     const coord_um layer_height = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
-    p.support_only = flag(s, "infill_support_enabled");
+    p.support_only = s.flag("infill_support_enabled");
     if (p.support_only) {
         const double angle = s.has("infill_support_angle") ? s.angleRadians("infill_support_angle") : 0.0;
         p.support_reach_um = static_cast<coord_um>((std::tan(angle) - 0.01) * double(layer_height));
@@ -118,7 +114,7 @@ InfillLayerParams infillLayerParams(const Settings& s) {
     // At least one layer per step (CuraEngine would loop for ever on 0).
     p.gradual_step_layers = static_cast<int>(
         std::max<long long>(1, roundDivide(lengthOr(s, "gradual_infill_step_height", 0), layer_height)));
-    p.small_gaps_heuristic = flag(s, "skin_no_small_gaps_heuristic");
+    p.small_gaps_heuristic = s.flag("skin_no_small_gaps_heuristic");
     p.combine_layers = combinedLayers(s);
     p.initial_bottom_layers = countOf(s, "initial_bottom_layers");
     p.top_layers = countOf(s, "top_layers");
@@ -146,7 +142,7 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
     p.overlap_um = lengthOr(s, "infill_overlap_mm", 0);
     p.wall_count = countOf(s, "infill_wall_line_count");
     p.multiplier = std::max(1, countOf(s, "infill_multiplier"));
-    p.connect_lines = flag(s, "zig_zaggify_infill") || p.pattern == InfillPattern::ZigZag;
+    p.connect_lines = s.flag("zig_zaggify_infill") || p.pattern == InfillPattern::ZigZag;
     return p;
 }
 

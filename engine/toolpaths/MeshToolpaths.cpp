@@ -71,10 +71,6 @@ SkinReferences skinReferences(const Settings& s) {
             countOf(s, "roofing_layer_count") > 0 || outerSurfacesWanted(s) ? std::min(2, walls) : -1};
 }
 
-bool flag(const Settings& s, std::string_view key) {
-    return s.has(key) && s.boolean(key);
-}
-
 /// initial_bottom_layers: below it a spiralized mesh prints as usual.
 int spiralBottomLayers(const Settings& s) {
     return countOf(s, "initial_bottom_layers", countOf(s, "bottom_layers"));
@@ -83,7 +79,7 @@ int spiralBottomLayers(const Settings& s) {
 /// fill_perimeter_gaps (not in spiralize mode).
 bool fillsPerimeterGaps(const Settings& s) {
     return !(s.has("fill_perimeter_gaps") && s.text("fill_perimeter_gaps") == "nowhere") &&
-           !flag(s, "magic_spiralize");
+           !s.flag("magic_spiralize");
 }
 
 WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
@@ -92,7 +88,7 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.bottom_reference = refs.bottom.wall;
     p.roofing_reference = refs.roofing_wall;
     p.wall_count = countOf(s, "wall_line_count");
-    if (layer % 2 == 1 && s.has("alternate_extra_perimeter") && s.boolean("alternate_extra_perimeter"))
+    if (layer % 2 == 1 && s.flag("alternate_extra_perimeter"))
         ++p.wall_count;  // one wall more on every other layer
     if (layer % 2 == 1 && spiralizeOn(s) && layer < spiralBottomLayers(s))
         p.wall_count += 5;  // spiralize: a watertight bottom (toolpaths/Spiralize.h)
@@ -105,7 +101,7 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.inner_flow = styles.wall_x.flow;
     p.outer_extruder = styles.wall_0.extruder;
     p.inner_extruder = styles.wall_x.extruder;
-    p.group_by_outline = flag(s, "optimize_wall_printing_order");
+    p.group_by_outline = s.flag("optimize_wall_printing_order");
     p.perimeter_gaps = fillsPerimeterGaps(s);
     p.filter_tiny_gaps = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
     p.outer_first = outerWallFirst(s, layer);
@@ -122,9 +118,9 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
 /// width, so that neighbouring walls, one width apart, do not count.
 void compensateOverlaps(std::vector<ExtrusionPath>& walls, const Settings& s, const WallParams& p) {
     const double min_flow = s.has("wall_min_flow") ? s.ratio("wall_min_flow") : 0.0;
-    if (flag(s, "travel_compensate_overlapping_walls_0_enabled"))
+    if (s.flag("travel_compensate_overlapping_walls_0_enabled"))
         compensateWallOverlaps(walls, Feature::WallOuter, {p.outer_width_um, min_flow});
-    if (flag(s, "travel_compensate_overlapping_walls_x_enabled"))
+    if (s.flag("travel_compensate_overlapping_walls_x_enabled"))
         compensateWallOverlaps(walls, Feature::WallInner, {p.inner_width_um - 1, min_flow});
 }
 
@@ -141,7 +137,7 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     p.min_width_for_expansion_um = length("min_skin_width_for_expansion");
     p.roofing_layers = countOf(s, "roofing_layer_count");
     p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
-    p.small_gaps_heuristic = flag(s, "skin_no_small_gaps_heuristic");
+    p.small_gaps_heuristic = s.flag("skin_no_small_gaps_heuristic");
     p.outer_surfaces = outerSurfacesWanted(s);
     p.infill_opening_um = s.has("infill_line_width") ? s.lengthMicrons("infill_line_width") : 0;
     return p;
@@ -168,13 +164,13 @@ SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const Me
     p.skin.angle_degrees = angleFor(s, "skin_angles", layer, {45, 135});
     p.skin.overlap_um = s.has("skin_overlap_mm") ? s.lengthMicrons("skin_overlap_mm") : 0;
     p.skin.style = styles.skin;
-    p.skin.monotonic = flag(s, "skin_monotonic");
+    p.skin.monotonic = s.flag("skin_monotonic");
     p.roofing.pattern = s.has("roofing_pattern")
                             ? infillPatternOf(s.text("roofing_pattern"), "roofing_pattern")
                             : p.skin.pattern;
     p.roofing.angle_degrees = angleFor(s, "roofing_angles", layer, {45, 135});
     p.roofing.style = styles.roofing;
-    p.roofing.monotonic = flag(s, "roofing_monotonic");
+    p.roofing.monotonic = s.flag("roofing_monotonic");
     p.gap_style = gapStyle(s, layer);
     p.gap_angle_degrees = p.roofing.angle_degrees;  // as CuraEngine: perimeter gaps at the roofing angles
     return p;
@@ -198,7 +194,7 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
                              s.ratio("initial_layer_line_width_factor") > 1.0;
     const bool inner_gaps = s.lengthMicrons("infill_line_distance") > 0 &&
                             (!s.has("infill_overlap_mm") || s.lengthMicrons("infill_overlap_mm") >= 0) &&
-                            !(concentric && (flag(s, "alternate_extra_perimeter") || wider_first));
+                            !(concentric && (s.flag("alternate_extra_perimeter") || wider_first));
     if (!inner_gaps || inner_area.empty())
         return between_walls;
     // The inner area is an inset (united) unless there are no walls (then it is the outlines).
@@ -262,7 +258,7 @@ std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const
     if (!s.has("ironing_enabled") || !s.boolean("ironing_enabled"))
         return {};
     const int layer = static_cast<int>(i);
-    const bool only_highest = s.has("ironing_only_highest_layer") && s.boolean("ironing_only_highest_layer");
+    const bool only_highest = s.flag("ironing_only_highest_layer");
     if (only_highest && layer != highestFilledLayer(layers))
         return {};
     const Paths above =
@@ -303,7 +299,7 @@ void addSpirals(const std::vector<Paths>& spiral_loops, const Settings& s, const
 }  // namespace
 
 bool outerWallFirst(const Settings& s, int layer) {
-    return flag(s, "outer_inset_first") ||
+    return s.flag("outer_inset_first") ||
            (layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim");
 }
 

@@ -10,7 +10,7 @@ namespace mixengine {
 namespace {
 
 bool moldOn(const MoldMesh& m) {
-    return m.settings->has("mold_enabled") && m.settings->boolean("mold_enabled");
+    return m.settings->flag("mold_enabled");
 }
 
 /// Open pieces as areas `width_um` wide (square ends), as CuraEngine thickens them for the mold.

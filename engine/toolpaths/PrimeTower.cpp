@@ -27,8 +27,7 @@ int adhesionExtruder(const Settings& g) {
 }
 
 bool towerBrimEnabled(const Settings& g) {
-    return g.has("prime_tower_brim_enable") && g.boolean("prime_tower_brim_enable") &&
-           g.text("adhesion_type") != "raft";
+    return g.flag("prime_tower_brim_enable") && g.text("adhesion_type") != "raft";
 }
 
 /// The width of the tower's own brim (0 without it).

@@ -179,7 +179,7 @@ SeamParams seamParamsFrom(const Settings& s, const Point2& mesh_centre_um) {
     p.type = seamTypeOf(s.text("z_seam_type"));
     p.corner = s.has("z_seam_corner") ? seamCornerOf(s.text("z_seam_corner")) : SeamCorner::Inner;
     p.position_um = {s.lengthMicrons("z_seam_x"), s.lengthMicrons("z_seam_y")};
-    if (s.has("z_seam_relative") && s.boolean("z_seam_relative")) {
+    if (s.flag("z_seam_relative")) {
         p.position_um.X += mesh_centre_um.X;
         p.position_um.Y += mesh_centre_um.Y;
     }

@@ -197,7 +197,7 @@ std::vector<ExtrusionPath> spiralSlice(const Path& wall, std::size_t seam, const
 }
 
 bool spiralizeOn(const Settings& s) {
-    return s.has("magic_spiralize") && s.boolean("magic_spiralize");
+    return s.flag("magic_spiralize");
 }
 
 SpiralParts splitSpiralPart(const Paths& outlines) {
@@ -270,7 +270,7 @@ std::vector<std::vector<ExtrusionPath>> spiralPaths(const std::vector<Paths>& wa
         SpiralSliceParams p;
         p.bottom = static_cast<int>(i) == bottom;
         p.top = i + 1 == layers || contours[i + 1].size() < 3;
-        p.smooth = s.has("smooth_spiralized_contours") && s.boolean("smooth_spiralized_contours");
+        p.smooth = s.flag("smooth_spiralized_contours");
         p.style = meshStyles(s, static_cast<int>(i)).wall_0;
         p.min_layer_time_s = s.has("cool_min_layer_time") ? s.real("cool_min_layer_time") : 0.0;
         SpiralBelow below;

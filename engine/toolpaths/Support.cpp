@@ -51,9 +51,9 @@ SupportTowerParams towerParams(const Settings& s, coord_um layer_height) {
 coord_um smoothingDistance(const Settings& s) {
     auto width = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
     coord_um widest = width("support_line_width");
-    if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
+    if (s.flag("support_roof_enable"))
         widest = std::max(widest, width("support_roof_line_width"));
-    if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
+    if (s.flag("support_bottom_enable"))
         widest = std::max(widest, width("support_bottom_line_width"));
     return widest;
 }
@@ -72,7 +72,7 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     p.join_distance_um = s.has("support_join_distance") ? s.lengthMicrons("support_join_distance") : 0;
     p.offset_um = s.has("support_offset") ? s.lengthMicrons("support_offset") : 0;
     p.min_area_um2 = s.has("minimum_support_area") ? s.real("minimum_support_area") * 1e6 : 0.0;
-    if (s.has("support_conical_enabled") && s.boolean("support_conical_enabled")) {
+    if (s.flag("support_conical_enabled")) {
         const double angle = s.angleDegrees("support_conical_angle");
         const double slope = std::tan(radiansFromDegrees(std::abs(angle))) - 0.01;
         const coord_um step =
@@ -82,9 +82,9 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     }
     p.towers = towerParams(s, layer_height);
     p.smoothing_um = smoothingDistance(s);
-    if (s.has("support_roof_enable") && s.boolean("support_roof_enable"))
+    if (s.flag("support_roof_enable"))
         p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
-    if (s.has("support_bottom_enable") && s.boolean("support_bottom_enable"))
+    if (s.flag("support_bottom_enable"))
         p.floor_layers =
             std::max(1, layersFor(s.lengthMicrons("support_bottom_height"), layer_height, false));
     return p;
@@ -124,10 +124,8 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
         layer == 0 && body.has("support_initial_layer_line_distance") ? "support_initial_layer_line_distance"
                                                                       : "support_line_distance");
     fills.body.angle_degrees = angleFor(body, "support_infill_angles", layer, 0);
-    fills.body.connect_zigzags =
-        body.has("support_connect_zigzags") && body.boolean("support_connect_zigzags");
-    if (body.has("support_skip_some_zags") && body.boolean("support_skip_some_zags") &&
-        body.has("support_zag_skip_count"))
+    fills.body.connect_zigzags = body.flag("support_connect_zigzags");
+    if (body.flag("support_skip_some_zags") && body.has("support_zag_skip_count"))
         fills.body.zag_skip_count =
             static_cast<int>(std::max<long long>(0, body.integer("support_zag_skip_count")));
     fills.body.wall_count =
@@ -421,7 +419,7 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         areas[0].roof = differenceOf(areas[0].roof, in.first_layer_exclusion);
     }
     result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
-    if (!in.raft && body.has("support_brim_enable") && body.boolean("support_brim_enable"))
+    if (!in.raft && body.flag("support_brim_enable"))
         result.brim = supportBrim(body, extruderOf(g, "support_infill_extruder_nr"), areas[0].support);
     const std::vector<LayerInfill> arranged =
         arrangedBodies(areas, body, g.lengthMicrons("layer_height"), threads);

@@ -20,10 +20,6 @@ coord_um ceilDiv(coord_um a, coord_um b) {
     return b <= 0 ? 0 : (a + b - 1) / b;
 }
 
-bool flag(const Settings& s, std::string_view key) {
-    return s.has(key) && s.boolean(key);
-}
-
 coord_um maxMoveUm(const Settings& g, coord_um layer_height) {
     const double angle = g.angleDegrees("support_tree_angle");
     if (angle >= 90)
@@ -53,7 +49,7 @@ TreeContactParams contactParams(const Settings& s, coord_um layer_height) {
     TreeContactParams p;
     p.branch_distance_um = std::max<coord_um>(1, s.lengthMicrons("support_tree_branch_distance"));
     p.z_layers = zLayers(s, layer_height);
-    if (flag(s, "support_roof_enable"))
+    if (s.flag("support_roof_enable"))
         p.roof_layers =
             static_cast<int>((s.lengthMicrons("support_roof_height") + layer_height / 2) / layer_height);
     p.half_overhang_step_um = std::llround(std::tan(radiansFromDegrees(s.angleDegrees("support_angle"))) *
@@ -160,7 +156,7 @@ std::vector<SupportLayerAreas> treeSupportAreas(const Settings& g, const std::ve
         addContactPoints(*mesh.overhang, mesh.bounds, contactParams(*mesh.settings, height), volumes, nodes);
     dropNodes(dropParams(g, height), height, volumes, nodes);
     const CircleStyle style = circleStyle(g, height);
-    const bool floors = flag(g, "support_bottom_enable");
+    const bool floors = g.flag("support_bottom_enable");
     parallelFor(model.size(), threads, [&](std::size_t i) {
         out[i] = drawLayer(nodes[i], style);
         if (floors && !out[i].support.empty()) {
