@@ -133,14 +133,18 @@ void markBridge(Feature feature, bool bridge, double fan_ratio, std::optional<Fe
         current = feature;
         marks.bridge = bridge;
     }
-    if (fan_ratio != marks.fan) {
-        PlanStep fan;
-        fan.kind = PlanStep::Kind::SetFan;
-        fan.fan_ratio = fan_ratio;
-        fan.fan_fixed = fan_ratio >= 0;
-        steps.push_back(fan);
-        marks.fan = fan_ratio;
-    }
+    markFan(fan_ratio, marks, steps);
+}
+
+void markFan(double fan_ratio, BridgeMarks& marks, std::vector<PlanStep>& steps) {
+    if (fan_ratio == marks.fan)
+        return;
+    PlanStep fan;
+    fan.kind = PlanStep::Kind::SetFan;
+    fan.fan_ratio = fan_ratio;
+    fan.fan_fixed = fan_ratio >= 0;
+    steps.push_back(fan);
+    marks.fan = fan_ratio;
 }
 
 std::size_t emitBridgedWall(const ExtrusionPath& wall, std::size_t start, const TravelParams& params,

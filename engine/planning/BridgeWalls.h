@@ -27,6 +27,8 @@ struct BridgeMarks {
 /// A ;TYPE: (with ;BRIDGE when `bridge`) and the fan (a bridge's, or the layer's: −1) when they change.
 void markBridge(Feature feature, bool bridge, double fan_ratio, std::optional<Feature>& current,
                 BridgeMarks& marks, std::vector<PlanStep>& steps);
+/// A SetFan step when the fan ratio (a bridge's, or the layer's: −1) changes.
+void markFan(double fan_ratio, BridgeMarks& marks, std::vector<PlanStep>& steps);
 
 /// The steps of the closed `wall` (with air_edges and bridge_wall) from vertex `start`, the head at
 /// `head` (updated); returns the vertex it started at.

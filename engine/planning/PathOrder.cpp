@@ -230,19 +230,6 @@ bool lastMarkedBridge(const std::vector<PlanStep>& steps) {
     return false;
 }
 
-/// A path's own fan (`ratio`, a bridge's) before it, or the layer's again (−1) after a bridge: a
-/// SetFan step when that changes (the layer's is filled in by cooling).
-void setPathFan(double ratio, BridgeMarks& marks, std::vector<PlanStep>& steps) {
-    if (ratio == marks.fan)
-        return;
-    PlanStep fan;
-    fan.kind = PlanStep::Kind::SetFan;
-    fan.fan_ratio = ratio;
-    fan.fan_fixed = ratio >= 0;
-    steps.push_back(fan);
-    marks.fan = ratio;
-}
-
 }  // namespace
 
 void appendTravelTo(const Point2& from, const Point2& to, const TravelParams& params,
@@ -284,7 +271,7 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
             appendPathWipe(path, start, params, before, head, steps);
             return;
         }
-        setPathFan(path.fan_ratio, marks, steps);
+        markFan(path.fan_ratio, marks, steps);
         emitPath(path, startOf(path, from, params), params, head, steps);
     };
     for (;;) {
@@ -300,7 +287,7 @@ void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& pa
                 print(j);
         }
     }
-    setPathFan(-1, marks, steps);  // the layer's fan again after a bridge
+    markFan(-1, marks, steps);  // the layer's fan again after a bridge
 }
 
 }  // namespace mixengine
