@@ -2,8 +2,11 @@
 // Overlaps an order-dependent loop with the independent work it needs: use(i, make(i)) for i in
 // [0, count), use() on the calling thread in ascending i (it may carry state from one i to the
 // next), make() on `threads` helper threads ahead of it, at most `ahead` values made but not yet
-// used (memory stays bounded). threads ≤ 1: make and use alternate on the calling thread. The first
-// exception thrown by make or use stops the helpers and is rethrown.
+// used (memory stays bounded). The helpers run at a lower scheduling priority (Linux: nice +10 per
+// thread), so on a machine with no core to spare use() keeps its core: it is the ordered critical
+// path, and made values wait for it anyway. threads ≤ 1: make and use alternate on the calling
+// thread. The first exception thrown by make or use stops the helpers and is rethrown.
+#include <cerrno>
 #include <condition_variable>
 #include <cstddef>
 #include <exception>
@@ -12,7 +15,25 @@
 #include <thread>
 #include <vector>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
+
 namespace mixengine {
+
+/// Lowers the calling thread's scheduling priority by `niceness` (Linux; elsewhere nothing).
+inline void yieldPriorityToOthers(int niceness) {
+#ifdef __linux__
+    const auto tid = static_cast<id_t>(gettid());
+    errno = 0;
+    const int current = getpriority(PRIO_PROCESS, tid);
+    if (errno == 0)
+        (void)setpriority(PRIO_PROCESS, tid, current + niceness);  // best effort: ignored when refused
+#else
+    (void)niceness;
+#endif
+}
 
 template <typename T, typename Make, typename Use>
 void computeAhead(std::size_t count, int threads, std::size_t ahead, Make make, Use use) {
@@ -34,6 +55,7 @@ void computeAhead(std::size_t count, int threads, std::size_t ahead, Make make, 
         stop = true;
     };
     auto helper = [&] {
+        yieldPriorityToOthers(10);
         for (;;) {
             std::size_t i = 0;
             {

@@ -389,8 +389,15 @@ struct LayerBoundaries {
 };
 
 LayerBoundaries layerBoundaries(const GroupToolpaths& toolpaths, std::size_t i, coord_um avoid_distance_um) {
+    const std::size_t sliced_layer = toolpaths.first_sliced_layer + i;
+    const auto has_layer = [&](const MeshToolpaths& mesh) {
+        return mesh.sliced && sliced_layer < mesh.sliced->size() &&
+               !(*mesh.sliced)[sliced_layer].outlines.empty();
+    };
+    const bool one_mesh = std::count_if(toolpaths.meshes.begin(), toolpaths.meshes.end(), has_layer) <= 1;
     return {CombBoundary(combArea(toolpaths, i)),
-            CombBoundary(freeSpace(partOutlines(toolpaths, i), avoid_distance_um))};
+            CombBoundary(freeSpace(partOutlines(toolpaths, i), avoid_distance_um,
+                                   one_mesh ? Loops::United : Loops::Any))};
 }
 
 /// Model layer `i`: what each extruder prints on it (planExtruderOnLayer), the active one first.
@@ -511,10 +518,10 @@ Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
     return area;
 }
 
-Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um) {
+Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um, Loops loops) {
     if (outlines.empty())
         return {};
-    Paths free = offsetMiter(outlines, avoid_distance_um);  // as 4.13's Comb: united, mitred
+    Paths free = offsetMiter(outlines, avoid_distance_um, loops);  // as 4.13's Comb: united, mitred
     const ClipperLib::IntRect box = boundsOf(free);
     constexpr coord_um kMarginUm = 5'000;
     free.insert(free.begin(), Path{{box.left - kMarginUm, box.top - kMarginUm},
@@ -568,7 +575,7 @@ void planPrint(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings&
             final_layers.added();
         }
     }
-    constexpr std::size_t kLayersAhead = 32;
+    constexpr std::size_t kLayersAhead = 512;  // helpers run niced (ComputedAhead.h): let them run far ahead
     computeAhead<LayerBoundaries>(
         toolpaths.heights.size(), threads, kLayersAhead,
         [&](std::size_t i) { return layerBoundaries(toolpaths, i, run.avoid_distance_um); },

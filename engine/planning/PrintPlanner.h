@@ -19,6 +19,7 @@
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
 #include "toolpaths/GroupToolpaths.h"
+#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 
@@ -58,8 +59,9 @@ Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer);
 
 /// The space through-air travel may use with travel_avoid_other_parts: a rectangle 5 mm around the
 /// parts, less the parts grown by `avoid_distance_um` (mitred, as CuraEngine 4.13's Comb grows its
-/// outside boundary), as even-odd loops (rectangle first).
-Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um);
+/// outside boundary), as even-odd loops (rectangle first). `loops`: Loops::United when the outlines
+/// are one mesh's (a union already), so they are not united again.
+Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um, Loops loops = Loops::Any);
 
 /// The extruders used on `layer`, in print order: `active` first if used, then ascending.
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active);

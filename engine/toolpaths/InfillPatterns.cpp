@@ -83,7 +83,7 @@ Paths concentricLoops(const Paths& area, const InfillParams& p) {
     Paths ring = offsetMiter(area, -(p.line_distance_um - p.line_width_um / 2));
     while (!ring.empty()) {
         loops.insert(loops.end(), ring.begin(), ring.end());
-        ring = offsetMiter(ring, -p.line_distance_um);
+        ring = offsetMiter(ring, -p.line_distance_um, Loops::United);
     }
     return loops;
 }

@@ -86,7 +86,7 @@ Paths concentricLoops(const Paths& surface, coord_um first_inset_um, coord_um sp
     Paths ring = offsetMiter(surface, -first_inset_um);
     while (!ring.empty() && spacing_um > 0) {
         loops.insert(loops.end(), ring.begin(), ring.end());
-        ring = offsetMiter(ring, -spacing_um);
+        ring = offsetMiter(ring, -spacing_um, Loops::United);
     }
     return loops;
 }

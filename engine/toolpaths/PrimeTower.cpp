@@ -78,7 +78,7 @@ Paths ringsOf(const Path& outline, coord_um inset_um, coord_um width_um, double 
 Paths filledDisc(const Path& outline, coord_um width_um) {
     Paths loops;
     for (Paths ring = offsetMiter({outline}, -width_um / 2); !ring.empty();
-         ring = offsetMiter(ring, -width_um))
+         ring = offsetMiter(ring, -width_um, Loops::United))
         loops.insert(loops.end(), ring.begin(), ring.end());
     return loops;
 }

@@ -20,7 +20,8 @@ Paths expandSkin(Paths skin, coord_um preshrink, coord_um expand, coord_um min_w
     const coord_um outset = expand + preshrink + half;
     if (skin.empty() || outset == 0)
         return skin;
-    Paths grown = offsetMiter(half > 0 ? offsetMiter(skin, -half) : skin, outset);
+    Paths grown =
+        half > 0 ? offsetMiter(offsetMiter(skin, -half), outset, Loops::United) : offsetMiter(skin, outset);
     if (half > 0 || outset < 0)
         grown = unionOf(grown, skin);
     return intersectAll(grown, inner);
@@ -219,7 +220,7 @@ std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
         out.skin = removeSmallOutlines(unionOf(top, bottom), kMinSkinAreaUm2);
         Paths infill = differenceOf(inner, out.skin);
         if (p.infill_opening_um > 0)
-            infill = openPolygons(infill, p.infill_opening_um / 2);
+            infill = openPolygons(infill, p.infill_opening_um / 2, Loops::United);  // a difference: united
         out.infill = removeSmallOutlines(infill, kMinSkinAreaUm2);
         if (roofing_layers > 0 && !out.skin.empty())
             out.roofing = roofingOf(out.skin, windows, i, n, roofing_layers);

@@ -41,13 +41,13 @@ Paths concentricLoops(const Paths& area, const SkinFillParams& fill, Paths* gaps
     Paths loops;
     Paths ring = offsetMiter(area, fill.overlap_um - w / 2);
     if (gaps)
-        *gaps = unionOf(*gaps, differenceOf(area, offsetMiter(ring, w / 2 + kGapSlackUm)));
+        *gaps = unionOf(*gaps, differenceOf(area, offsetMiter(ring, w / 2 + kGapSlackUm, Loops::United)));
     while (!ring.empty()) {
         loops.insert(loops.end(), ring.begin(), ring.end());
-        Paths next = offsetMiter(ring, -w);
+        Paths next = offsetMiter(ring, -w, Loops::United);
         if (gaps)
-            *gaps = unionOf(*gaps,
-                            differenceOf(offsetMiter(ring, -w / 2 - kGapSlackUm), offsetMiter(next, w / 2)));
+            *gaps = unionOf(*gaps, differenceOf(offsetMiter(ring, -w / 2 - kGapSlackUm, Loops::United),
+                                                offsetMiter(next, w / 2, Loops::United)));
         ring = std::move(next);
     }
     return loops;

@@ -15,7 +15,7 @@ Paths appendWalls(const Paths& area, const SupportFill& fill, Feature feature,
     for (int i = 0; i < fill.wall_count && !inside.empty(); ++i) {
         const Paths loops = offsetMiter(inside, -w / 2);
         appendStyledLoops(loops, feature, fill.style, out);
-        inside = loops.empty() ? Paths{} : offsetMiter(loops, -w / 2);
+        inside = loops.empty() ? Paths{} : offsetMiter(loops, -w / 2, Loops::United);
     }
     return inside;
 }
