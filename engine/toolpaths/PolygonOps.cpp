@@ -1,16 +1,46 @@
 #include "toolpaths/PolygonOps.h"
-#include "geometry/Point.h"
 
 #include <algorithm>
 #include <cmath>
+
+#include "geometry/Point.h"
+#include "toolpaths/SideBySide.h"
 
 namespace mixengine {
 namespace {
 
 constexpr double kArcToleranceUm = 10.0;
+constexpr coord_um kTouchingUm = 2;  // the reach of a boolean operation: loops that touch stay together
 
-Paths offsetWith(const Paths& polygons, coord_um delta_um, ClipperLib::JoinType join,
-                 double miter_limit = 2.0) {
+/// op(a', b') for each side-by-side group a' of `a` and b' of `b` (SideBySide.h: loops farther
+/// apart than `reach_um` do not meet in op), the results one after the other, left to right;
+/// op(a, b) when they form one group.
+template <typename Op>
+Paths bySide(const Paths& a, const Paths& b, coord_um reach_um, Op op) {
+    const std::vector<std::vector<std::size_t>> groups = sideBySideGroups(a, b, reach_um);
+    if (groups.empty())
+        return op(a, b);
+    Paths out;
+    for (const std::vector<std::size_t>& group : groups) {
+        Paths group_a, group_b;
+        for (std::size_t k : group) {
+            if (k < a.size())
+                group_a.push_back(a[k]);
+            else
+                group_b.push_back(b[k - a.size()]);
+        }
+        for (Path& loop : op(group_a, group_b))
+            out.push_back(std::move(loop));
+    }
+    return out;
+}
+
+/// How far an offset by `delta_um` can move a vertex: the miter limit × delta (a margin added).
+coord_um offsetReachUm(coord_um delta_um, double miter_limit) {
+    return static_cast<coord_um>(std::ceil(std::max(miter_limit, 1.0) * double(std::abs(delta_um)))) + 10;
+}
+
+Paths offsetGroup(const Paths& polygons, coord_um delta_um, ClipperLib::JoinType join, double miter_limit) {
     if (polygons.empty())
         return {};
     ClipperLib::ClipperOffset offset(miter_limit, kArcToleranceUm);
@@ -20,13 +50,30 @@ Paths offsetWith(const Paths& polygons, coord_um delta_um, ClipperLib::JoinType 
     return result;
 }
 
-Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
+Paths offsetWith(const Paths& polygons, coord_um delta_um, ClipperLib::JoinType join,
+                 double miter_limit = 2.0) {
+    return bySide(polygons, {}, offsetReachUm(delta_um, miter_limit), [&](const Paths& group, const Paths&) {
+        return offsetGroup(group, delta_um, join, miter_limit);
+    });
+}
+
+Paths clipGroup(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
+    if (operation == ClipperLib::ctIntersection && (a.empty() || b.empty()))
+        return {};
+    if (operation == ClipperLib::ctDifference && a.empty())
+        return {};
     ClipperLib::Clipper clipper;
     clipper.AddPaths(a, ClipperLib::ptSubject, true);
     clipper.AddPaths(b, ClipperLib::ptClip, true);
     Paths result;
     clipper.Execute(operation, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     return result;
+}
+
+Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
+    return bySide(a, b, kTouchingUm, [&](const Paths& group_a, const Paths& group_b) {
+        return clipGroup(group_a, group_b, operation);
+    });
 }
 
 void collectIslands(const ClipperLib::PolyNode& node, std::vector<Paths>& islands) {
@@ -72,14 +119,11 @@ Paths offsetPolygons(const Paths& polygons, coord_um delta_um) {
 Paths offsetMiter(const Paths& polygons, coord_um delta_um, Loops loops) {
     if (polygons.empty() || delta_um == 0)
         return polygons;
-    ClipperLib::ClipperOffset offset(1.2, kArcToleranceUm);
-    if (loops == Loops::United)
-        offset.AddPaths(polygons, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
-    else
-        offset.AddPaths(unionOf(polygons), ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
-    Paths result;
-    offset.Execute(result, static_cast<double>(delta_um));
-    return result;
+    constexpr double kMiterLimit = 1.2;
+    return bySide(polygons, {}, offsetReachUm(delta_um, kMiterLimit), [&](const Paths& group, const Paths&) {
+        return offsetGroup(loops == Loops::United ? group : clipGroup(group, {}, ClipperLib::ctUnion),
+                           delta_um, ClipperLib::jtMiter, kMiterLimit);
+    });
 }
 
 Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit) {
@@ -93,11 +137,7 @@ Paths openPolygons(const Paths& polygons, coord_um radius_um, Loops loops) {
 }
 
 Paths unionOf(const Paths& polygons) {
-    Paths result;
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(polygons, ClipperLib::ptSubject, true);
-    clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-    return result;
+    return clip(polygons, {}, ClipperLib::ctUnion);
 }
 
 Paths unionOf(const Paths& a, const Paths& b) {
@@ -144,12 +184,16 @@ double areaUm2(const Paths& polygons) {
 }
 
 std::vector<Paths> splitIslands(const Paths& polygons) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(polygons, ClipperLib::ptSubject, true);
-    ClipperLib::PolyTree tree;
-    clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
     std::vector<Paths> islands;
-    collectIslands(tree, islands);
+    auto unite = [&](const Paths& group, const Paths&) {
+        ClipperLib::Clipper clipper;
+        clipper.AddPaths(group, ClipperLib::ptSubject, true);
+        ClipperLib::PolyTree tree;
+        clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+        collectIslands(tree, islands);
+        return Paths{};
+    };
+    bySide(polygons, {}, kTouchingUm, unite);
     return islands;
 }
 
