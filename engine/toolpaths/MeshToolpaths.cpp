@@ -199,11 +199,13 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
         return between_walls;
     // The inner area is an inset (united) unless there are no walls (then it is the outlines).
     const Loops loops = countOf(s, "wall_line_count") > 0 ? Loops::United : Loops::Any;
-    Paths gaps = differenceOf(offsetMiter(inner_area, -15, loops), unionOf(areas.skin, areas.infill));
-    if (!s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps")) {
-        const double width = double(s.lengthMicrons("infill_line_width"));
-        gaps = removeSmallIslands(gaps, 2 * width * width);
-    }
+    const double width = double(s.lengthMicrons("infill_line_width"));
+    const bool filter = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
+    Paths gaps =
+        differenceWithoutSmallIslands(offsetMiter(inner_area, -15, loops), unionOf(areas.skin, areas.infill),
+                                      filter ? 2 * width * width : 0);
+    if (gaps.empty() || between_walls.empty())
+        return gaps.empty() ? between_walls : gaps;  // each a Clipper result already
     return unionOf(between_walls, gaps);
 }
 

@@ -183,31 +183,53 @@ double areaUm2(const Paths& polygons) {
     return total;
 }
 
-std::vector<Paths> splitIslands(const Paths& polygons) {
+namespace {
+
+/// The islands of a op b, side-by-side groups apart (see bySide).
+std::vector<Paths> islandsOf(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
     std::vector<Paths> islands;
-    auto unite = [&](const Paths& group, const Paths&) {
+    auto islandsOfGroup = [&](const Paths& group_a, const Paths& group_b) {
         ClipperLib::Clipper clipper;
-        clipper.AddPaths(group, ClipperLib::ptSubject, true);
+        clipper.AddPaths(group_a, ClipperLib::ptSubject, true);
+        clipper.AddPaths(group_b, ClipperLib::ptClip, true);
         ClipperLib::PolyTree tree;
-        clipper.Execute(ClipperLib::ctUnion, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+        clipper.Execute(operation, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
         collectIslands(tree, islands);
         return Paths{};
     };
-    bySide(polygons, {}, kTouchingUm, unite);
+    bySide(a, b, kTouchingUm, islandsOfGroup);
     return islands;
 }
 
-Paths removeSmallIslands(const Paths& polygons, double min_area_um2) {
-    if (min_area_um2 <= 0)
-        return polygons;
+Paths withoutSmallIslands(std::vector<Paths> islands, double min_area_um2) {
     Paths kept;
-    for (Paths& island : splitIslands(polygons)) {
+    for (Paths& island : islands) {
         if (areaUm2(island) < min_area_um2)
             continue;
         for (Path& p : island)
             kept.push_back(std::move(p));
     }
     return kept;
+}
+
+}  // namespace
+
+std::vector<Paths> splitIslands(const Paths& polygons) {
+    return islandsOf(polygons, {}, ClipperLib::ctUnion);
+}
+
+Paths removeSmallIslands(const Paths& polygons, double min_area_um2) {
+    if (min_area_um2 <= 0)
+        return polygons;
+    return withoutSmallIslands(splitIslands(polygons), min_area_um2);
+}
+
+Paths differenceWithoutSmallIslands(const Paths& a, const Paths& b, double min_area_um2) {
+    if (min_area_um2 <= 0)
+        return differenceOf(a, b);
+    if (a.empty())
+        return {};
+    return withoutSmallIslands(islandsOf(a, b, ClipperLib::ctDifference), min_area_um2);
 }
 
 ClipperLib::IntRect boundsOf(const Paths& polygons) {

@@ -50,6 +50,8 @@ std::vector<Paths> splitIslands(const Paths& polygons);
 
 /// Drops islands whose area (holes subtracted) is below `min_area_um2`.
 Paths removeSmallIslands(const Paths& polygons, double min_area_um2);
+/// removeSmallIslands(differenceOf(a, b), min_area_um2) in one Clipper pass.
+Paths differenceWithoutSmallIslands(const Paths& a, const Paths& b, double min_area_um2);
 
 /// Axis-aligned bounds; empty input gives an all-zero rectangle.
 ClipperLib::IntRect boundsOf(const Paths& polygons);

@@ -124,20 +124,28 @@ std::vector<ExtrusionPath> wallPaths(const std::vector<Paths>& levels, const std
 Paths gapsBetweenWalls(const std::vector<Paths>& levels, const WallParams& p) {
     constexpr coord_um kSlackUm = 15;  // CuraEngine's: no gaps everywhere from rounding
     const bool walls_missing = static_cast<int>(levels.size()) < p.wall_count;
-    Paths gaps;
-    for (std::size_t k = 0; k < levels.size(); ++k) {
-        const bool last = k + 1 == levels.size();
-        if (last && !walls_missing)
-            break;  // inside the innermost wall: skin and infill, and their gaps (MeshToolpaths)
+    // Inside the innermost wall go skin and infill, and their gaps (MeshToolpaths), unless walls are missing.
+    const std::size_t terms = walls_missing ? levels.size() : levels.size() - 1;
+    const double min_area_um2 =
+        p.filter_tiny_gaps ? 2.0 * double(p.outer_width_um) * double(p.outer_width_um) : 0;
+    // Gap k: what of wall k's inside edge (less the slack) wall k + 1 does not reach.
+    auto gapTerms = [&](std::size_t k) {
         const coord_um width = k == 0 ? p.outer_width_um : p.inner_width_um;
-        const Paths outer = offsetMiter(levels[k], -width / 2 - kSlackUm, kRegionLoops);
-        gaps = unionOf(
-            gaps, last ? outer
-                       : differenceOf(outer, offsetMiter(levels[k + 1], p.inner_width_um / 2, kRegionLoops)));
+        std::pair<Paths, Paths> outer_inner{offsetMiter(levels[k], -width / 2 - kSlackUm, kRegionLoops), {}};
+        if (k + 1 < levels.size())
+            outer_inner.second = offsetMiter(levels[k + 1], p.inner_width_um / 2, kRegionLoops);
+        return outer_inner;
+    };
+    if (terms == 1) {  // the usual case, two walls: one pass
+        const auto [outer, inner] = gapTerms(0);
+        return differenceWithoutSmallIslands(outer, inner, min_area_um2);
     }
-    if (p.filter_tiny_gaps)
-        gaps = removeSmallIslands(gaps, 2.0 * double(p.outer_width_um) * double(p.outer_width_um));
-    return gaps;
+    Paths gaps;
+    for (std::size_t k = 0; k < terms; ++k) {
+        const auto [outer, inner] = gapTerms(k);
+        gaps = gaps.empty() ? differenceOf(outer, inner) : unionOf(gaps, differenceOf(outer, inner));
+    }
+    return removeSmallIslands(gaps, min_area_um2);
 }
 
 }  // namespace

@@ -57,5 +57,20 @@ TEST(SideBySide, BooleansOnGroupsApartGiveTheWholeResult) {
     EXPECT_EQ(splitIslands(reversed).size(), 2U);
 }
 
+TEST(SideBySide, DifferenceWithoutSmallIslandsIsTheDifferenceFilteredInOnePass) {
+    // Left: a 10 mm square less a 9 mm one at its lower right leaves an L of 19 mm². Right: two
+    // 9 mm squares leave two 1 mm² corners.
+    const Paths a{square(0, 0, 10'000), square(40'000, 0, 10'000)};
+    const Paths b{square(1'000, 0, 9'000), square(40'000, 1'000, 9'000), square(41'000, 0, 9'000)};
+    const Paths all = differenceOf(a, b);
+    EXPECT_EQ(areaUm2(all), 21e6);
+    EXPECT_EQ(areaUm2(differenceWithoutSmallIslands(a, b, 0)), 21e6);
+    EXPECT_EQ(areaUm2(differenceWithoutSmallIslands(a, b, 1e6)), 21e6);
+    EXPECT_EQ(areaUm2(differenceWithoutSmallIslands(a, b, 1.5e6)), 19e6);
+    EXPECT_EQ(areaUm2(removeSmallIslands(all, 1.5e6)), 19e6);
+    EXPECT_TRUE(differenceWithoutSmallIslands(a, b, 20e6).empty());
+    EXPECT_TRUE(differenceWithoutSmallIslands({}, b, 1).empty());
+}
+
 }  // namespace
 }  // namespace mixengine
