@@ -245,6 +245,11 @@ double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_u
 
 void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& params, Point2& head,
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps) {
+    std::size_t expected = steps.size();  // a move per point, and a travel and a marker or two per path
+    for (const ExtrusionPath& path : paths)
+        expected += path.points.size() + 4;
+    if (expected > steps.capacity())
+        steps.reserve(std::max(expected, 2 * steps.capacity()));  // still geometric over the layer's calls
     std::vector<bool> done(paths.size(), false);
     const std::vector<bool> entry = entryPaths(paths);
     const bool keep_order = !paths.empty() && paths.front().keep_order;
