@@ -93,9 +93,14 @@ bool CombBoundary::inside(const Point2& p) const {
     if (edges_.empty() || p.Y < origin_.Y || p.Y >= origin_.Y + rows_ * cell_um_ || p.X < origin_.X ||
         p.X >= origin_.X + columns_ * cell_um_)
         return false;
-    const coord_um r = row(p.Y);
+    const coord_um r = row(p.Y), first = column(p.X);
+    // The ray runs to the nearer side of the grid, +X or −X: p is inside exactly when either one
+    // crosses the boundary an odd number of times (p itself lies on no edge: that returns first).
+    const bool rightwards = columns_ - first <= first + 1;
+    const coord_um step = rightwards ? 1 : -1, end = rightwards ? columns_ : -1;
+    const coord_um leftmost = rightwards ? first : 0, rightmost = rightwards ? columns_ - 1 : first;
     bool odd = false;
-    for (coord_um c = column(p.X); c < columns_; ++c) {
+    for (coord_um c = first; c != end; c += step) {
         const coord_um cell_left = origin_.X + c * cell_um_;
         const coord_um cell_right = cell_left + cell_um_;
         for (std::uint32_t e : cells_[cellIndex(c, r)]) {
@@ -105,13 +110,13 @@ bool CombBoundary::inside(const Point2& p) const {
             // Half-open rule on Y so a vertex on the ray counts once.
             if ((edge.a.Y > p.Y) == (edge.b.Y > p.Y))
                 continue;
-            if (crossingXComparedTo(edge.a, edge.b, p.Y, p.X) < 0)
-                continue;  // the edge meets the ray's line left of p
-            // Count the crossing only in the cell that holds it (edges span several cells).
-            const bool from_left =
-                c == column(p.X) || crossingXComparedTo(edge.a, edge.b, p.Y, cell_left) >= 0;
-            const bool to_right =
-                c == columns_ - 1 || crossingXComparedTo(edge.a, edge.b, p.Y, cell_right) < 0;
+            const int side = crossingXComparedTo(edge.a, edge.b, p.Y, p.X);
+            if (rightwards ? side < 0 : side > 0)
+                continue;  // the edge meets the ray's line on p's other side
+            // Count the crossing only in the cell that holds it (edges span several cells); the
+            // walk's end cells are open towards p and towards the grid's side.
+            const bool from_left = c == leftmost || crossingXComparedTo(edge.a, edge.b, p.Y, cell_left) >= 0;
+            const bool to_right = c == rightmost || crossingXComparedTo(edge.a, edge.b, p.Y, cell_right) < 0;
             if (from_left && to_right)
                 odd = !odd;
         }

@@ -38,6 +38,43 @@ TEST(CombBoundary, InsideOutsideAndHole) {
     EXPECT_FALSE(comb.inside({31'000, 5'000}));
 }
 
+/// Even-odd inside, boundary included, by ClipperLib (an independent point-in-polygon test).
+bool insideEvenOdd(const Paths& loops, const Point2& p) {
+    bool odd = false;
+    for (const Path& loop : loops) {
+        const int where = ClipperLib::PointInPolygon(p, loop);
+        if (where < 0)
+            return true;
+        odd = odd != (where == 1);
+    }
+    return odd;
+}
+
+TEST(CombBoundary, InsideAgreesWithPointInPolygonOnBothSidesOfTheGrid) {
+    // A 60-point star with 30 square holes in a row: many grid cells, both ray directions used.
+    Paths loops(1);
+    for (int k = 0; k < 60; ++k) {
+        const double angle = 2 * 3.14159265358979 * k / 60, radius = k % 2 ? 20'000.0 : 50'000.0;
+        loops[0].push_back({std::llround(radius * std::cos(angle)), std::llround(radius * std::sin(angle))});
+    }
+    for (int k = 0; k < 30; ++k)
+        loops.push_back(square(-15'000 + k * 1'000, -300, 600, false));
+    const CombBoundary comb(loops);
+    std::uint64_t state = 12345;
+    auto next = [&] { return (state = state * 6364136223846793005ULL + 1442695040888963407ULL) >> 33; };
+    int inside = 0;
+    for (int n = 0; n < 20'000; ++n) {
+        // Grid-aligned coordinates too (multiples of 100 µm), so points land on vertices and edges.
+        const Point2 p =
+            n % 2 ? Point2{coord_um(next() % 110'000) - 55'000, coord_um(next() % 110'000) - 55'000}
+                  : Point2{coord_um(next() % 1'100) * 100 - 55'000, coord_um(next() % 21) * 100 - 1'000};
+        ASSERT_EQ(comb.inside(p), insideEvenOdd(loops, p)) << p.X << ", " << p.Y;
+        inside += comb.inside(p);
+    }
+    EXPECT_GT(inside, 2'000);
+    EXPECT_LT(inside, 18'000);
+}
+
 TEST(CombBoundary, StraightTravel) {
     const CombBoundary comb(squareWithHole());
     EXPECT_TRUE(comb.straightInside({5'000, 5'000}, {25'000, 5'000}));
