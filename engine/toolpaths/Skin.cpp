@@ -31,7 +31,9 @@ Paths expandSkin(Paths skin, coord_um preshrink, coord_um expand, coord_um min_w
 /// every layer's walls before comparing: the skin loses that much along the covered area.
 std::vector<Paths> grownReferences(const std::vector<Paths>& reference, coord_um by, int threads) {
     std::vector<Paths> grown(reference.size());
-    parallelFor(reference.size(), threads, [&](std::size_t i) { grown[i] = offsetMiter(reference[i], by); });
+    // The references are united (WallResult): no union before the offset.
+    parallelFor(reference.size(), threads,
+                [&](std::size_t i) { grown[i] = offsetMiter(reference[i], by, Loops::United); });
     return grown;
 }
 

@@ -72,6 +72,7 @@ struct SkinAreas {
 };
 
 /// The regions each layer's skin is compared with (see above), index = layer.
+/// Each layer's regions as a Clipper union returns them (Loops::United; WallResult's references are).
 struct SkinReferenceRegions {
     const std::vector<Paths>* top = nullptr;
     const std::vector<Paths>* bottom = nullptr;

@@ -154,14 +154,18 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     WallResult result;
     if (params.wall_count <= 0) {
         result.inner_area = outlines;
-        result.top_reference = result.bottom_reference = outlines;
+        result.top_reference = result.bottom_reference = unionOf(outlines);
         if (params.roofing_reference >= 0)
-            result.roofing_reference = outlines;
+            result.roofing_reference = result.top_reference;
         return result;
     }
+    const std::vector<Paths> parts = splitIslands(outlines);
+    Paths united;  // the outlines, united: the parts one after the other
+    for (const Paths& part : parts)
+        united.insert(united.end(), part.begin(), part.end());
     std::vector<Paths> regions;    // centre region of each wall that exists somewhere
     std::vector<coord_um> depths;  // its distance inside the outer wall's centre line
-    for (const Paths& part : splitIslands(outlines)) {
+    for (const Paths& part : parts) {
         std::vector<Paths> own = partRegions(part, params);
         for (std::size_t k = 0; k < own.size(); ++k) {
             if (k == regions.size()) {
@@ -179,12 +183,12 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     if (params.perimeter_gaps)
         result.perimeter_gaps = gapsBetweenWalls(regions, params);
     result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half, kRegionLoops);
-    result.top_reference = referenceRegion(outlines, regions, depths, params.top_reference);
+    result.top_reference = referenceRegion(united, regions, depths, params.top_reference);
     result.bottom_reference = params.bottom_reference == params.top_reference
                                   ? result.top_reference
-                                  : referenceRegion(outlines, regions, depths, params.bottom_reference);
+                                  : referenceRegion(united, regions, depths, params.bottom_reference);
     if (params.roofing_reference >= 0)
-        result.roofing_reference = referenceRegion(outlines, regions, depths, params.roofing_reference);
+        result.roofing_reference = referenceRegion(united, regions, depths, params.roofing_reference);
     return result;
 }
 

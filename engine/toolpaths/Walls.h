@@ -57,6 +57,7 @@ struct WallResult {
     Paths inner_area;  ///< the area inside the innermost wall (its inner edge)
     /// The reference regions asked for in WallParams; a part with fewer walls than the reference
     /// uses its innermost wall's region (as CuraEngine 4.13 takes insets[min(k, count) − 1]).
+    /// Always as a Clipper union returns them (Loops::United), the outline (k = 0) included.
     Paths top_reference, bottom_reference;
     Paths roofing_reference;  ///< empty when WallParams::roofing_reference is −1
     /// As CuraEngine 4.13 finds them: wall k's centre region less half its width and 15 µm, less
