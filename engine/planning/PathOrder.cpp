@@ -230,6 +230,16 @@ bool lastMarkedBridge(const std::vector<PlanStep>& steps) {
     return false;
 }
 
+/// Room in `steps` for `paths`: a move per point, and a travel and a marker or two per path; still
+/// growing geometrically over a layer's calls.
+void reserveSteps(const std::vector<ExtrusionPath>& paths, std::vector<PlanStep>& steps) {
+    std::size_t expected = steps.size();
+    for (const ExtrusionPath& path : paths)
+        expected += path.points.size() + 4;
+    if (expected > steps.capacity())
+        steps.reserve(std::max(expected, 2 * steps.capacity()));
+}
+
 }  // namespace
 
 void appendTravelTo(const Point2& from, const Point2& to, const TravelParams& params,
@@ -245,11 +255,7 @@ double extrusionVolumeMm3(const Point2& from, const Point2& to, coord_um width_u
 
 void appendOrderedPaths(std::vector<ExtrusionPath> paths, const TravelParams& params, Point2& head,
                         std::optional<Feature>& feature, std::vector<PlanStep>& steps) {
-    std::size_t expected = steps.size();  // a move per point, and a travel and a marker or two per path
-    for (const ExtrusionPath& path : paths)
-        expected += path.points.size() + 4;
-    if (expected > steps.capacity())
-        steps.reserve(std::max(expected, 2 * steps.capacity()));  // still geometric over the layer's calls
+    reserveSteps(paths, steps);
     std::vector<bool> done(paths.size(), false);
     const std::vector<bool> entry = entryPaths(paths);
     const bool keep_order = !paths.empty() && paths.front().keep_order;
