@@ -13,6 +13,7 @@
 #include "planning/PathOrder.h"
 #include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
+#include "planning/TravelAreas.h"
 #include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
@@ -382,22 +383,25 @@ PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, boo
     return planned;
 }
 
-/// Where travel on a model layer may go: its comb area and (travel_avoid_other_parts) the space
-/// around its parts. They depend on the layer's toolpaths alone, so they are made ahead of planning.
-struct LayerBoundaries {
-    CombBoundary comb, free;
-};
-
-LayerBoundaries layerBoundaries(const GroupToolpaths& toolpaths, std::size_t i, coord_um avoid_distance_um) {
-    const std::size_t sliced_layer = toolpaths.first_sliced_layer + i;
-    const auto has_layer = [&](const MeshToolpaths& mesh) {
-        return mesh.sliced && sliced_layer < mesh.sliced->size() &&
-               !(*mesh.sliced)[sliced_layer].outlines.empty();
+/// About the steps model layer `i` takes: a move per point and a few per path of its meshes and
+/// support (PathOrder.h reserves as much per call), so the layer's steps are allocated once.
+std::size_t expectedSteps(const GroupToolpaths& toolpaths, std::size_t i) {
+    std::size_t steps = 64;  // markers, fan and temperature steps
+    auto add = [&](const std::vector<ExtrusionPath>& paths) {
+        for (const ExtrusionPath& path : paths)
+            steps += path.points.size() + 4;
     };
-    const bool one_mesh = std::count_if(toolpaths.meshes.begin(), toolpaths.meshes.end(), has_layer) <= 1;
-    return {CombBoundary(combArea(toolpaths, i)),
-            CombBoundary(freeSpace(partOutlines(toolpaths, i), avoid_distance_um,
-                                   one_mesh ? Loops::United : Loops::Any))};
+    for (const MeshToolpaths& mesh : toolpaths.meshes) {
+        const MeshLayerGroups& groups = mesh.layers[i];
+        add(groups.outer_walls);
+        add(groups.inner_walls);
+        add(groups.skin);
+        add(groups.infill);
+        add(groups.ironing);
+    }
+    if (i < toolpaths.support.size())
+        add(toolpaths.support[i]);
+    return steps;
 }
 
 /// Model layer `i`: what each extruder prints on it (planExtruderOnLayer), the active one first.
@@ -410,6 +414,7 @@ PlannedLayer planModelLayer(std::size_t i, const LayerBoundaries& boundaries, bo
     const CombBoundary& free = boundaries.free;
     const int layer_extruder = run.state.extruder;
     PlannedLayer planned = startLayer(static_cast<int>(i), height.print_z, height.print_z - height.bottom_z);
+    planned.steps.reserve(expectedSteps(toolpaths, i));
     for (int extruder : extruderOrder(toolpaths, i, run.state.extruder)) {
         useExtruder(extruder, planned, run);
         const LayerContext ctx{planned.index, planned.thickness,
@@ -489,46 +494,6 @@ std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t laye
         order.push_back(active);
     order.insert(order.end(), used.begin(), used.end());
     return order;
-}
-
-Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer) {
-    Paths area;
-    const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
-    for (const MeshToolpaths& mesh : toolpaths.meshes) {
-        if (mesh.sliced && sliced_layer < mesh.sliced->size()) {
-            const Paths& outlines = (*mesh.sliced)[sliced_layer].outlines;
-            area.insert(area.end(), outlines.begin(), outlines.end());
-        }
-    }
-    return area;
-}
-
-Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer) {
-    Paths area;
-    const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
-    for (const MeshToolpaths& mesh : toolpaths.meshes) {
-        const Paths* part = nullptr;
-        if (layer < mesh.layers.size() && mesh.layers[layer].comb_area)
-            part = &*mesh.layers[layer].comb_area;
-        else if (mesh.sliced && sliced_layer < mesh.sliced->size())
-            part = &(*mesh.sliced)[sliced_layer].outlines;
-        if (part)
-            area.insert(area.end(), part->begin(), part->end());
-    }
-    return area;
-}
-
-Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um, Loops loops) {
-    if (outlines.empty())
-        return {};
-    Paths free = offsetMiter(outlines, avoid_distance_um, loops);  // as 4.13's Comb: united, mitred
-    const ClipperLib::IntRect box = boundsOf(free);
-    constexpr coord_um kMarginUm = 5'000;
-    free.insert(free.begin(), Path{{box.left - kMarginUm, box.top - kMarginUm},
-                                   {box.right + kMarginUm, box.top - kMarginUm},
-                                   {box.right + kMarginUm, box.bottom + kMarginUm},
-                                   {box.left - kMarginUm, box.bottom + kMarginUm}});
-    return free;
 }
 
 PrintPlan planPrint(const GroupToolpaths& toolpaths, const Settings& global,

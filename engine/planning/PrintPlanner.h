@@ -9,9 +9,8 @@
 // the extruder left) a travel to the tower's middle — its support, then every mesh in order —
 // inner walls, outer walls, skin, infill — with travel, retraction and the fan.
 // The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).
-// Travel combs inside the layer's comb area (combArea: per mesh by its retraction_combing mode),
-// even-odd (planning/CombBoundary.h), and goes around the parts through the air with
-// travel_avoid_other_parts (freeSpace; planning/TravelRoute.h).
+// Travel combs inside the layer's comb area and goes around the parts through the air with
+// travel_avoid_other_parts (planning/TravelAreas.h).
 #include <functional>
 #include <set>
 #include <vector>
@@ -19,7 +18,6 @@
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
 #include "toolpaths/GroupToolpaths.h"
-#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 
@@ -48,20 +46,6 @@ using FinalLayer = std::function<void(const PrintPlan& plan, std::size_t layer)>
 void planPrint(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings& global,
                const std::vector<Settings>& extruders, PlannerState& state, int threads,
                const FinalLayer& on_final);
-
-/// The outlines of every mesh's sliced layer toolpaths.first_sliced_layer + layer, one after the
-/// other (microns).
-Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer);
-
-/// Where travel on `layer` of `toolpaths` may go without retraction: every mesh's comb area for its
-/// retraction_combing mode (MeshLayerGroups::comb_area), or its sliced outlines ("all").
-Paths combArea(const GroupToolpaths& toolpaths, std::size_t layer);
-
-/// The space through-air travel may use with travel_avoid_other_parts: a rectangle 5 mm around the
-/// parts, less the parts grown by `avoid_distance_um` (mitred, as CuraEngine 4.13's Comb grows its
-/// outside boundary), as even-odd loops (rectangle first). `loops`: Loops::United when the outlines
-/// are one mesh's (a union already), so they are not united again.
-Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um, Loops loops = Loops::Any);
 
 /// The extruders used on `layer`, in print order: `active` first if used, then ascending.
 std::vector<int> extruderOrder(const GroupToolpaths& toolpaths, std::size_t layer, int active);

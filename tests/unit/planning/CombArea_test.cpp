@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "planning/PrintPlanner.h"
+#include "planning/TravelAreas.h"
 
 namespace mixengine {
 namespace {
