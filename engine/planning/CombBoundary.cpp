@@ -89,6 +89,31 @@ coord_um CombBoundary::row(coord_um y) const {
     return std::clamp<coord_um>((y - origin_.Y) / cell_um_, 0, rows_ - 1);
 }
 
+template <typename Visit>
+bool CombBoundary::forCellsAlong(const Point2& a, const Point2& b, Visit visit) const {
+    const coord_um y_min = std::min(a.Y, b.Y), y_max = std::max(a.Y, b.Y);
+    const double slope = a.Y == b.Y ? 0.0 : double(b.X - a.X) / double(b.Y - a.Y);
+    auto xAt = [&](coord_um y) { return double(a.X) + double(y - a.Y) * slope; };
+    for (coord_um r = row(y_min); r <= row(y_max); ++r) {
+        const coord_um band_low = std::max(y_min, origin_.Y + r * cell_um_);
+        const coord_um band_high = std::min(y_max, origin_.Y + (r + 1) * cell_um_);
+        if (band_low > band_high)
+            continue;  // the segment passes beside the grid
+        double x_low = a.Y == b.Y ? double(std::min(a.X, b.X)) : xAt(band_low);
+        double x_high = a.Y == b.Y ? double(std::max(a.X, b.X)) : xAt(band_high);
+        if (x_low > x_high)
+            std::swap(x_low, x_high);
+        // A micron either side: the cells are a superset of those the segment meets.
+        const coord_um c_low = column(static_cast<coord_um>(std::floor(x_low)) - 1);
+        const coord_um c_high = column(static_cast<coord_um>(std::ceil(x_high)) + 1);
+        for (coord_um c = c_low; c <= c_high; ++c) {
+            if (!visit(cells_[cellIndex(c, r)]))
+                return false;
+        }
+    }
+    return true;
+}
+
 bool CombBoundary::inside(const Point2& p) const {
     if (edges_.empty() || p.Y < origin_.Y || p.Y >= origin_.Y + rows_ * cell_um_ || p.X < origin_.X ||
         p.X >= origin_.X + columns_ * cell_um_)
@@ -134,42 +159,34 @@ bool CombBoundary::straightBetweenInside(const Point2& a, const Point2& b) const
     const Point2 middle{a.X + (b.X - a.X) / 2, a.Y + (b.Y - a.Y) / 2};
     if (!inside(middle))
         return false;
-    const coord_um c0 = column(std::min(a.X, b.X)), c1 = column(std::max(a.X, b.X));
-    const coord_um r0 = row(std::min(a.Y, b.Y)), r1 = row(std::max(a.Y, b.Y));
-    for (coord_um r = r0; r <= r1; ++r) {
-        for (coord_um c = c0; c <= c1; ++c) {
-            for (std::uint32_t e : cells_[cellIndex(c, r)]) {
-                if (properlyCross(a, b, edges_[e].a, edges_[e].b))
-                    return false;
-            }
+    return forCellsAlong(a, b, [&](const std::vector<std::uint32_t>& cell) {
+        for (std::uint32_t e : cell) {
+            if (properlyCross(a, b, edges_[e].a, edges_[e].b))
+                return false;
         }
-    }
-    return true;
+        return true;
+    });
 }
 
 std::vector<CombBoundary::Crossing> CombBoundary::crossings(const Point2& a, const Point2& b) const {
     std::vector<Crossing> found;
-    const coord_um c0 = column(std::min(a.X, b.X)), c1 = column(std::max(a.X, b.X));
-    const coord_um r0 = row(std::min(a.Y, b.Y)), r1 = row(std::max(a.Y, b.Y));
     std::vector<std::uint32_t> seen;
-    for (coord_um r = r0; r <= r1; ++r) {
-        for (coord_um c = c0; c <= c1; ++c) {
-            for (std::uint32_t e : cells_[cellIndex(c, r)]) {
-                const Edge& edge = edges_[e];
-                if (!properlyCross(a, b, edge.a, edge.b) ||
-                    std::find(seen.begin(), seen.end(), e) != seen.end())
-                    continue;
-                seen.push_back(e);
-                const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
-                const double ex = double(edge.b.X - edge.a.X), ey = double(edge.b.Y - edge.a.Y);
-                const double denominator = dx * ey - dy * ex;
-                const double t = (double(edge.a.X - a.X) * ey - double(edge.a.Y - a.Y) * ex) / denominator;
-                const Point2 at{a.X + static_cast<coord_um>(std::llround(t * dx)),
-                                a.Y + static_cast<coord_um>(std::llround(t * dy))};
-                found.push_back({t, at, &edge});
-            }
+    forCellsAlong(a, b, [&](const std::vector<std::uint32_t>& cell) {
+        for (std::uint32_t e : cell) {
+            const Edge& edge = edges_[e];
+            if (!properlyCross(a, b, edge.a, edge.b) || std::find(seen.begin(), seen.end(), e) != seen.end())
+                continue;
+            seen.push_back(e);
+            const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+            const double ex = double(edge.b.X - edge.a.X), ey = double(edge.b.Y - edge.a.Y);
+            const double denominator = dx * ey - dy * ex;
+            const double t = (double(edge.a.X - a.X) * ey - double(edge.a.Y - a.Y) * ex) / denominator;
+            const Point2 at{a.X + static_cast<coord_um>(std::llround(t * dx)),
+                            a.Y + static_cast<coord_um>(std::llround(t * dy))};
+            found.push_back({t, at, &edge});
         }
-    }
+        return true;
+    });
     std::sort(found.begin(), found.end(), [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
     return found;
 }

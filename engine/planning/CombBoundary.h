@@ -56,6 +56,10 @@ class CombBoundary {
     Path shortened(const Point2& start, const Path& points) const;
     /// straightInside for end points already known to be inside.
     bool straightBetweenInside(const Point2& a, const Point2& b) const;
+    /// visit(cell's edge indices) for every cell the segment a–b meets (and a few beside it), row by
+    /// row, until visit returns false; returns false then, else true.
+    template <typename Visit>
+    bool forCellsAlong(const Point2& a, const Point2& b, Visit visit) const;
     std::size_t cellIndex(coord_um cx, coord_um cy) const {
         return static_cast<std::size_t>(cy) * static_cast<std::size_t>(columns_) +
                static_cast<std::size_t>(cx);

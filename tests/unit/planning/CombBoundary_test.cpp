@@ -75,6 +75,47 @@ TEST(CombBoundary, InsideAgreesWithPointInPolygonOnBothSidesOfTheGrid) {
     EXPECT_LT(inside, 18'000);
 }
 
+/// The segments p–q and a–b cross at a point inside both (doubles are exact at these sizes).
+bool crossProperly(const Point2& p, const Point2& q, const Point2& a, const Point2& b) {
+    auto side = [](const Point2& o, const Point2& d, const Point2& x) {
+        const double cross = double(d.X - o.X) * double(x.Y - o.Y) - double(d.Y - o.Y) * double(x.X - o.X);
+        return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+    };
+    return side(p, q, a) * side(p, q, b) < 0 && side(a, b, p) * side(a, b, q) < 0;
+}
+
+TEST(CombBoundary, StraightInsideAgreesWithTestingEveryEdge) {
+    // The star with holes again; segments of every length and direction, long diagonals included,
+    // so the cells along a segment (not its bounding box) must hold every edge it crosses.
+    Paths loops(1);
+    for (int k = 0; k < 60; ++k) {
+        const double angle = 2 * 3.14159265358979 * k / 60, radius = k % 2 ? 20'000.0 : 50'000.0;
+        loops[0].push_back({std::llround(radius * std::cos(angle)), std::llround(radius * std::sin(angle))});
+    }
+    for (int k = 0; k < 30; ++k)
+        loops.push_back(square(-15'000 + k * 1'000, -300, 600, false));
+    const CombBoundary comb(loops);
+    std::uint64_t state = 777;
+    auto next = [&] {
+        return coord_um((state = state * 6364136223846793005ULL + 1442695040888963407ULL) >> 33);
+    };
+    int straight = 0;
+    for (int n = 0; n < 20'000; ++n) {
+        const Point2 a{next() % 80'000 - 40'000, next() % 80'000 - 40'000};
+        const Point2 b{next() % 80'000 - 40'000, n % 3 ? next() % 80'000 - 40'000 : a.Y};
+        const Point2 middle{a.X + (b.X - a.X) / 2, a.Y + (b.Y - a.Y) / 2};
+        bool expected = insideEvenOdd(loops, a) && insideEvenOdd(loops, b) && insideEvenOdd(loops, middle);
+        for (const Path& loop : loops) {
+            for (std::size_t i = 0; expected && i < loop.size(); ++i)
+                expected = !crossProperly(a, b, loop[i], loop[(i + 1) % loop.size()]);
+        }
+        ASSERT_EQ(comb.straightInside(a, b), expected) << a.X << "," << a.Y << " " << b.X << "," << b.Y;
+        straight += expected;
+    }
+    EXPECT_GT(straight, 500);
+    EXPECT_LT(straight, 19'500);
+}
+
 TEST(CombBoundary, StraightTravel) {
     const CombBoundary comb(squareWithHole());
     EXPECT_TRUE(comb.straightInside({5'000, 5'000}, {25'000, 5'000}));
