@@ -7,7 +7,10 @@
 // x = shift + k·line_distance for every integer k, i.e. anchored to the build plate's origin, not
 // to the area, so the same setting gives the same lines on every layer and in every part.
 // The lines are returned as open two-point paths, sorted across the scan direction and alternating
-// in direction (zig-zag order).
+// in direction (zig-zag order). The pieces inside are found from where the lines cross the area's
+// edges, paired even-odd on each line (toolpaths/ScanCrossings.h; the area is a united one), each
+// end the crossing rounded to the micron — no Clipper pass, whose scan line would sweep every
+// infill line at once.
 #include <vector>
 
 #include "geometry/Point.h"
