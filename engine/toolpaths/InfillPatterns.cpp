@@ -131,8 +131,8 @@ bool lineBased(InfillPattern pattern) {
            pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv;
 }
 
-Paths offsetArea(const Paths& area, coord_um delta) {
-    return delta == 0 ? area : offsetMiter(area, delta);
+Paths offsetArea(const Paths& area, coord_um delta, Loops loops) {
+    return delta == 0 ? area : offsetMiter(area, delta, loops);
 }
 
 void appendPaths(const Paths& paths, bool closed, const InfillParams& p, std::vector<ExtrusionPath>& out) {
@@ -184,11 +184,12 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
                             (lineBased(params.pattern) || params.pattern == InfillPattern::Gyroid));
     const bool octree = params.pattern == InfillPattern::CubicSubdiv && params.subdiv_lines != nullptr;
     const coord_um inset = octree ? 0 : walls + (connected ? w / 2 : 0);
-    Drawn drawn = drawPattern(offsetArea(area, params.overlap_um - inset), params, connected);
+    Drawn drawn =
+        drawPattern(offsetArea(area, params.overlap_um - inset, params.area_loops), params, connected);
     if (params.multiplier > 1) {
         const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0);
         multiplyInfill(
-            drawn.lines, drawn.loops, offsetArea(area, -outline_inset),
+            drawn.lines, drawn.loops, offsetArea(area, -outline_inset, params.area_loops),
             {params.multiplier, w, params.connect_lines, params.pattern == InfillPattern::Concentric});
     }
     for (int wall = 0; wall < params.wall_count; ++wall) {

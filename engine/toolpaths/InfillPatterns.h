@@ -39,6 +39,7 @@
 
 #include "geometry/Point.h"
 #include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 
@@ -72,6 +73,7 @@ struct InfillParams {
     bool zigzag_end_pieces = false;       ///< zigzag: also print the area's ends (support_connect_zigzags)
     int zag_skip_count = 0;               ///< zigzag: leave out every n-th connection (toolpaths/ZigZag.h)
     Point2 origin_um{0, 0};               ///< every line set passes through it
+    Loops area_loops = Loops::Any;        ///< what is known of the area's loops (toolpaths/PolygonOps.h)
     coord_um shift_um = 0;                ///< extra shift of every line set across its lines
     coord_um overlap_um = 0;              ///< the lines reach this far beyond the area
     int wall_count = 0;                   ///< loops around the area (infill_wall_line_count)

@@ -79,6 +79,7 @@ void singleLayer(const LayerInfill& layer, const InfillParams& base, std::vector
         InfillParams p = densityParams(base, k, last);
         p.multiplier = base.connect_lines && last != 0 ? 1 : base.multiplier;
         p.wall_count = k < last ? 0 : base.wall_count;
+        p.area_loops = Loops::United;  // the islands of a union
         std::vector<ExtrusionPath> paths =
             generateInfill(removeSmallIslands(area, 4.0 * perimeterUm(area)), p);
         append(k < last ? keepInside(std::move(paths), offsetMiter(sparsest, -cut)) : std::move(paths), out);

@@ -197,13 +197,12 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
                             !(concentric && (s.flag("alternate_extra_perimeter") || wider_first));
     if (!inner_gaps || inner_area.empty())
         return between_walls;
-    // The inner area is an inset (united) unless there are no walls (then it is the outlines).
-    const Loops loops = countOf(s, "wall_line_count") > 0 ? Loops::United : Loops::Any;
     const double width = double(s.lengthMicrons("infill_line_width"));
     const bool filter = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
+    // The inner area is united (WallResult): no union before the offset.
     Paths gaps =
-        differenceWithoutSmallIslands(offsetMiter(inner_area, -15, loops), unionOf(areas.skin, areas.infill),
-                                      filter ? 2 * width * width : 0);
+        differenceWithoutSmallIslands(offsetMiter(inner_area, -15, Loops::United),
+                                      unionOf(areas.skin, areas.infill), filter ? 2 * width * width : 0);
     if (gaps.empty() || between_walls.empty())
         return gaps.empty() ? between_walls : gaps;  // each a Clipper result already
     return unionOf(between_walls, gaps);

@@ -20,8 +20,9 @@ Paths expandSkin(Paths skin, coord_um preshrink, coord_um expand, coord_um min_w
     const coord_um outset = expand + preshrink + half;
     if (skin.empty() || outset == 0)
         return skin;
+    // The skin is the inner area (united, WallResult) or a difference from it.
     Paths grown =
-        half > 0 ? offsetMiter(offsetMiter(skin, -half), outset, Loops::United) : offsetMiter(skin, outset);
+        offsetMiter(half > 0 ? offsetMiter(skin, -half, Loops::United) : skin, outset, Loops::United);
     if (half > 0 || outset < 0)
         grown = unionOf(grown, skin);
     return intersectAll(grown, inner);

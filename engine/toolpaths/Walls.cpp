@@ -153,8 +153,7 @@ Paths gapsBetweenWalls(const std::vector<Paths>& levels, const WallParams& p) {
 WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     WallResult result;
     if (params.wall_count <= 0) {
-        result.inner_area = outlines;
-        result.top_reference = result.bottom_reference = unionOf(outlines);
+        result.inner_area = result.top_reference = result.bottom_reference = unionOf(outlines);
         if (params.roofing_reference >= 0)
             result.roofing_reference = result.top_reference;
         return result;

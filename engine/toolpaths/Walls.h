@@ -54,7 +54,7 @@ struct WallResult {
     /// Outer walls first, then the inner ones, wall by wall (with group_by_outline the inner ones
     /// from the innermost wall out, unless outer_first).
     std::vector<ExtrusionPath> walls;
-    Paths inner_area;  ///< the area inside the innermost wall (its inner edge)
+    Paths inner_area;  ///< the area inside the innermost wall (its inner edge); united (Loops::United)
     /// The reference regions asked for in WallParams; a part with fewer walls than the reference
     /// uses its innermost wall's region (as CuraEngine 4.13 takes insets[min(k, count) − 1]).
     /// Always as a Clipper union returns them (Loops::United), the outline (k = 0) included.
