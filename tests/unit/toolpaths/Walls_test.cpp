@@ -65,13 +65,16 @@ TEST(Walls, OuterInsetMovesOnlyTheOuterWall) {
     EXPECT_EQ(sortedCorners(result.inner_area[0]), sortedCorners(square(1'400, 1'400, 17'200)));
 }
 
-TEST(Walls, NoWallsLeaveTheOutline) {
+TEST(Walls, NoWallsLeaveTheOutlineUnited) {
     WallParams p;
     p.wall_count = 0;
-    const Paths outline{square(0, 0, 5'000)};
+    // Two overlapping squares: the inner area and the references are their union (WallResult).
+    const Paths outline{square(0, 0, 5'000), square(3'000, 0, 5'000)};
     const WallResult result = generateWalls(outline, p);
     EXPECT_TRUE(result.walls.empty());
-    EXPECT_EQ(result.inner_area, outline);
+    ASSERT_EQ(result.inner_area.size(), 1U);
+    EXPECT_EQ(areaUm2(result.inner_area), 8'000.0 * 5'000.0);
+    EXPECT_EQ(result.top_reference, result.inner_area);
 }
 
 TEST(Walls, SquareWithHoleGetsLoopsAroundBoth) {
