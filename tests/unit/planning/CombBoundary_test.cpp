@@ -50,8 +50,8 @@ bool insideEvenOdd(const Paths& loops, const Point2& p) {
     return odd;
 }
 
-TEST(CombBoundary, InsideAgreesWithPointInPolygonOnBothSidesOfTheGrid) {
-    // A 60-point star with 30 square holes in a row: many grid cells, both ray directions used.
+/// A 60-point star (radii 20 and 50 mm) with 30 square holes of 0.6 mm in a row across its middle.
+Paths starWithHoles() {
     Paths loops(1);
     for (int k = 0; k < 60; ++k) {
         const double angle = 2 * 3.14159265358979 * k / 60, radius = k % 2 ? 20'000.0 : 50'000.0;
@@ -59,6 +59,12 @@ TEST(CombBoundary, InsideAgreesWithPointInPolygonOnBothSidesOfTheGrid) {
     }
     for (int k = 0; k < 30; ++k)
         loops.push_back(square(-15'000 + k * 1'000, -300, 600, false));
+    return loops;
+}
+
+TEST(CombBoundary, InsideAgreesWithPointInPolygonOnBothSidesOfTheGrid) {
+    // Many grid cells, both ray directions used.
+    const Paths loops = starWithHoles();
     const CombBoundary comb(loops);
     std::uint64_t state = 12345;
     auto next = [&] { return (state = state * 6364136223846793005ULL + 1442695040888963407ULL) >> 33; };
@@ -85,15 +91,9 @@ bool crossProperly(const Point2& p, const Point2& q, const Point2& a, const Poin
 }
 
 TEST(CombBoundary, StraightInsideAgreesWithTestingEveryEdge) {
-    // The star with holes again; segments of every length and direction, long diagonals included,
-    // so the cells along a segment (not its bounding box) must hold every edge it crosses.
-    Paths loops(1);
-    for (int k = 0; k < 60; ++k) {
-        const double angle = 2 * 3.14159265358979 * k / 60, radius = k % 2 ? 20'000.0 : 50'000.0;
-        loops[0].push_back({std::llround(radius * std::cos(angle)), std::llround(radius * std::sin(angle))});
-    }
-    for (int k = 0; k < 30; ++k)
-        loops.push_back(square(-15'000 + k * 1'000, -300, 600, false));
+    // Segments of every length and direction, long diagonals included, so the cells along a
+    // segment (not its bounding box) must hold every edge it crosses.
+    const Paths loops = starWithHoles();
     const CombBoundary comb(loops);
     std::uint64_t state = 777;
     auto next = [&] {
