@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "geometry/Point.h"
 #include "toolpaths/SideBySide.h"
@@ -12,15 +13,16 @@ namespace {
 constexpr double kArcToleranceUm = 10.0;
 constexpr coord_um kTouchingUm = 2;  // the reach of a boolean operation: loops that touch stay together
 
-/// op(a', b') for each side-by-side group a' of `a` and b' of `b` (SideBySide.h: loops farther
-/// apart than `reach_um` do not meet in op), the results one after the other, left to right;
-/// op(a, b) when they form one group.
-template <typename Op>
-Paths bySide(const Paths& a, const Paths& b, coord_um reach_um, Op op) {
+/// visit(a', b') for each side-by-side group a' of `a` and b' of `b` (SideBySide.h: loops farther
+/// apart than `reach_um` do not meet in an operation of that reach), left to right; visit(a, b)
+/// when they form one group.
+template <typename Visit>
+void forEachSide(const Paths& a, const Paths& b, coord_um reach_um, Visit visit) {
     const std::vector<std::vector<std::size_t>> groups = sideBySideGroups(a, b, reach_um);
-    if (groups.empty())
-        return op(a, b);
-    Paths out;
+    if (groups.empty()) {
+        visit(a, b);
+        return;
+    }
     for (const std::vector<std::size_t>& group : groups) {
         Paths group_a, group_b;
         for (std::size_t k : group) {
@@ -29,9 +31,21 @@ Paths bySide(const Paths& a, const Paths& b, coord_um reach_um, Op op) {
             else
                 group_b.push_back(b[k - a.size()]);
         }
-        for (Path& loop : op(group_a, group_b))
-            out.push_back(std::move(loop));
+        visit(group_a, group_b);
     }
+}
+
+/// op(a, b) run on each side-by-side group apart (forEachSide), the results one after the other.
+template <typename Op>
+Paths bySide(const Paths& a, const Paths& b, coord_um reach_um, Op op) {
+    Paths out;
+    forEachSide(a, b, reach_um, [&](const Paths& group_a, const Paths& group_b) {
+        Paths part = op(group_a, group_b);
+        if (out.empty())
+            out = std::move(part);
+        else
+            out.insert(out.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
+    });
     return out;
 }
 
@@ -185,19 +199,17 @@ double areaUm2(const Paths& polygons) {
 
 namespace {
 
-/// The islands of a op b, side-by-side groups apart (see bySide).
+/// The islands of a op b, side-by-side groups apart (forEachSide).
 std::vector<Paths> islandsOf(const Paths& a, const Paths& b, ClipperLib::ClipType operation) {
     std::vector<Paths> islands;
-    auto islandsOfGroup = [&](const Paths& group_a, const Paths& group_b) {
+    forEachSide(a, b, kTouchingUm, [&](const Paths& group_a, const Paths& group_b) {
         ClipperLib::Clipper clipper;
         clipper.AddPaths(group_a, ClipperLib::ptSubject, true);
         clipper.AddPaths(group_b, ClipperLib::ptClip, true);
         ClipperLib::PolyTree tree;
         clipper.Execute(operation, tree, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
         collectIslands(tree, islands);
-        return Paths{};
-    };
-    bySide(a, b, kTouchingUm, islandsOfGroup);
+    });
     return islands;
 }
 
