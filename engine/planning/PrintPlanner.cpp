@@ -315,9 +315,10 @@ struct PlanRun {
     coord_um avoid_distance_um = 0;  ///< travel_avoid_distance
 };
 
-/// Starts `planned` with its fan step.
-PlannedLayer startLayer(int index, coord_um z, coord_um thickness) {
+/// Starts `planned` with its fan step, in `steps` (empty; room made for the layer, if known).
+PlannedLayer startLayer(int index, coord_um z, coord_um thickness, std::vector<PlanStep> steps = {}) {
     PlannedLayer planned;
+    planned.steps = std::move(steps);
     planned.index = index;
     planned.z = z;
     planned.thickness = thickness;
@@ -404,17 +405,32 @@ std::size_t expectedSteps(const GroupToolpaths& toolpaths, std::size_t i) {
     return steps;
 }
 
+/// What helper threads make ahead of planning model layer `i`: where its travel may go, and the
+/// room for its steps, allocated and written once, so that the page faults of a layer's new
+/// memory fall on the helper rather than on the planner (the critical path).
+struct LayerAhead {
+    LayerBoundaries boundaries;
+    std::vector<PlanStep> steps;  ///< empty, with capacity for expectedSteps()
+};
+
+LayerAhead makeAhead(const GroupToolpaths& toolpaths, std::size_t i, coord_um avoid_distance_um) {
+    LayerAhead ahead{layerBoundaries(toolpaths, i, avoid_distance_um), {}};
+    ahead.steps.resize(expectedSteps(toolpaths, i));  // writes every page
+    ahead.steps.clear();                              // and keeps them
+    return ahead;
+}
+
 /// Model layer `i`: what each extruder prints on it (planExtruderOnLayer), the active one first.
-PlannedLayer planModelLayer(std::size_t i, const LayerBoundaries& boundaries, bool after_first,
-                            PlanRun& run) {
+PlannedLayer planModelLayer(std::size_t i, LayerAhead ahead, bool after_first, PlanRun& run) {
+    const LayerBoundaries& boundaries = ahead.boundaries;
     const GroupToolpaths& toolpaths = run.toolpaths;
     const LayerZ& height = toolpaths.heights[i];
     const Point2 layer_start = run.state.head;
     const CombBoundary& comb = boundaries.comb;
     const CombBoundary& free = boundaries.free;
     const int layer_extruder = run.state.extruder;
-    PlannedLayer planned = startLayer(static_cast<int>(i), height.print_z, height.print_z - height.bottom_z);
-    planned.steps.reserve(expectedSteps(toolpaths, i));
+    PlannedLayer planned = startLayer(static_cast<int>(i), height.print_z, height.print_z - height.bottom_z,
+                                      std::move(ahead.steps));
     for (int extruder : extruderOrder(toolpaths, i, run.state.extruder)) {
         useExtruder(extruder, planned, run);
         const LayerContext ctx{planned.index, planned.thickness,
@@ -541,11 +557,11 @@ void planPrint(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings&
         }
     }
     constexpr std::size_t kLayersAhead = 512;  // helpers run niced (ComputedAhead.h): let them run far ahead
-    computeAhead<LayerBoundaries>(
+    computeAhead<LayerAhead>(
         toolpaths.heights.size(), threads, kLayersAhead,
-        [&](std::size_t i) { return layerBoundaries(toolpaths, i, run.avoid_distance_um); },
-        [&](std::size_t i, LayerBoundaries boundaries) {
-            plan.layers.push_back(planModelLayer(i, boundaries, !plan.layers.empty(), run));
+        [&](std::size_t i) { return makeAhead(toolpaths, i, run.avoid_distance_um); },
+        [&](std::size_t i, LayerAhead ahead) {
+            plan.layers.push_back(planModelLayer(i, std::move(ahead), !plan.layers.empty(), run));
             final_layers.added();
         });
     if (final_layers.temperatures) {
