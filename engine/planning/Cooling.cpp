@@ -16,7 +16,7 @@ CoolingParams coolingParams(const Settings& s) {
     p.fan_max_layer_time_s = s.durationSeconds("cool_min_layer_time_fan_speed_max");
     p.min_speed_mm_s = s.velocityMmPerS("cool_min_speed");
     p.lift_head = s.flag("cool_lift_head");
-    if (s.has("machine_width") && !(s.flag("machine_center_is_zero")))
+    if (s.has("machine_width") && !s.flag("machine_center_is_zero"))
         p.bed_middle_um = {s.lengthMicrons("machine_width") / 2, s.lengthMicrons("machine_depth") / 2};
     if (s.has("speed_travel"))
         p.travel_speed_mm_s = s.velocityMmPerS("speed_travel");

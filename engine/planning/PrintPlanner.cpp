@@ -63,7 +63,7 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
     p.layer_thickness_um = thickness;
-    if (s.has("wall_0_wipe_dist") && !(s.flag("magic_spiralize")))
+    if (s.has("wall_0_wipe_dist") && !s.flag("magic_spiralize"))
         p.wall_0_wipe_um = s.lengthMicrons("wall_0_wipe_dist");
     if (s.has("infill_wipe_dist"))
         p.infill_wipe_um = s.lengthMicrons("infill_wipe_dist");
@@ -162,7 +162,7 @@ std::size_t trainOf(int extruder, const std::vector<Settings>& extruders) {
 /// retract_at_layer_change: the first travel of a layer retracts (not in spiralize mode).
 void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
     if (!extruder.has("retract_at_layer_change") || !extruder.boolean("retract_at_layer_change") ||
-        !extruder.boolean("retraction_enable") || (extruder.flag("magic_spiralize")))
+        !extruder.boolean("retraction_enable") || extruder.flag("magic_spiralize"))
         return;
     for (std::size_t i = 0; i < layer.steps.size(); ++i) {
         PlanStep& step = layer.steps[i];

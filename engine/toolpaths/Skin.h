@@ -12,9 +12,9 @@
 // stays skin); it is then grown by the expand distance (top/bottom_skin_expand_distance) plus the
 // removal width left over — only its parts at least min_skin_width_for_expansion wide when that is
 // set — and clipped to inner_area[i]. The union is the skin; pieces under 0.16 mm² are dropped.
-// The infill area is inner_area[i] minus the skin, less its parts narrower than infill_line_width
-// (pieces under 0.16 mm² and under min_infill_area
-// dropped). With roofing_layer_count > 0 (at most
+// With min_infill_area, covering pieces smaller than it do not count as covering (what they would
+// cover becomes skin). The infill area is inner_area[i] minus the skin, less its parts narrower
+// than infill_line_width (pieces under 0.16 mm² dropped). With roofing_layer_count > 0 (at most
 // top_layers), the part of the skin with air within roofing_layer_count layers above is roofing, as
 // CuraEngine 4.13 finds it: "no air above" is the roofing reference region (the centre region of
 // wall min(2, wall count)) of every layer up to roofing_layer_count above, plus where that region

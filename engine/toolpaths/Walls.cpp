@@ -70,12 +70,17 @@ std::vector<Paths> partRegions(const Paths& part, const WallParams& p) {
     return regions;
 }
 
-/// Wall k's centre region (k ≥ 1; 0 = the outline) where parts with fewer walls use their innermost
-/// one: regions[k-1], plus what of the outer region lies farther than k's depth from it.
-Paths referenceRegion(const Paths& outlines, const std::vector<Paths>& regions,
+/// Wall k's centre region (k ≥ 1; 0 = the outline: the parts one after the other, a union) where
+/// parts with fewer walls use their innermost one: regions[k-1], plus what of the outer region lies
+/// farther than k's depth from it.
+Paths referenceRegion(const std::vector<Paths>& parts, const std::vector<Paths>& regions,
                       const std::vector<coord_um>& depths, int k) {
-    if (k <= 0 || regions.empty())
-        return outlines;
+    if (k <= 0 || regions.empty()) {
+        Paths united;
+        for (const Paths& part : parts)
+            united.insert(united.end(), part.begin(), part.end());
+        return united;
+    }
     const std::size_t last = static_cast<std::size_t>(std::min<int>(k, static_cast<int>(regions.size()))) - 1;
     if (last == 0)
         return regions[0];
@@ -159,9 +164,6 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
         return result;
     }
     const std::vector<Paths> parts = splitIslands(outlines);
-    Paths united;  // the outlines, united: the parts one after the other
-    for (const Paths& part : parts)
-        united.insert(united.end(), part.begin(), part.end());
     std::vector<Paths> regions;    // centre region of each wall that exists somewhere
     std::vector<coord_um> depths;  // its distance inside the outer wall's centre line
     for (const Paths& part : parts) {
@@ -182,12 +184,12 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     if (params.perimeter_gaps)
         result.perimeter_gaps = gapsBetweenWalls(regions, params);
     result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half, kRegionLoops);
-    result.top_reference = referenceRegion(united, regions, depths, params.top_reference);
+    result.top_reference = referenceRegion(parts, regions, depths, params.top_reference);
     result.bottom_reference = params.bottom_reference == params.top_reference
                                   ? result.top_reference
-                                  : referenceRegion(united, regions, depths, params.bottom_reference);
+                                  : referenceRegion(parts, regions, depths, params.bottom_reference);
     if (params.roofing_reference >= 0)
-        result.roofing_reference = referenceRegion(united, regions, depths, params.roofing_reference);
+        result.roofing_reference = referenceRegion(parts, regions, depths, params.roofing_reference);
     return result;
 }
 

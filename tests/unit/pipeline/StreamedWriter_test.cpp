@@ -10,28 +10,15 @@
 namespace mixengine {
 namespace {
 
-struct Planned {
-    ResolvedMachine machine;
-    test::Stack stack;
-    GroupToolpaths toolpaths;
-};
-
 /// A cube on a raft, 20 model layers, the nozzle and bed temperatures changing after the first layer
 /// (temperature steps that look one layer ahead).
-Planned cubeOnRaft() {
-    Planned p;
-    p.machine = test::fdmMachine({{"adhesion_type", "raft"},
-                                  {"material_print_temperature", "200"},
-                                  {"material_print_temperature_layer_0", "215"},
-                                  {"material_bed_temperature", "50"},
-                                  {"material_bed_temperature_layer_0", "60"},
-                                  {"machine_heated_bed", "true"},
-                                  {"retraction_combing", "all"}});
-    p.stack = test::prismStack(20);
-    test::fill(p.stack, 0, 20, {test::square(100'000, 100'000, 10'000)});
-    p.toolpaths = test::oneMeshToolpaths(p.machine, p.stack, "cube");
-    return p;
-}
+const SettingValues kCubeOnRaft{{"adhesion_type", "raft"},
+                                {"material_print_temperature", "200"},
+                                {"material_print_temperature_layer_0", "215"},
+                                {"material_bed_temperature", "50"},
+                                {"material_bed_temperature_layer_0", "60"},
+                                {"machine_heated_bed", "true"},
+                                {"retraction_combing", "all"}};
 
 std::string joined(const WrittenLayers& written) {
     std::string text;
@@ -41,7 +28,7 @@ std::string joined(const WrittenLayers& written) {
 }
 
 TEST(StreamedWriter, WritesWritePlansTextWhileLaterLayersArePlanned) {
-    const Planned p = cubeOnRaft();
+    const test::CubePrint p(kCubeOnRaft);
     const PlanWriterParams params;
     PlannerState state;
     const PrintPlan whole = planPrint(p.toolpaths, p.machine.global, p.machine.extruders, state, 2);
@@ -73,7 +60,7 @@ TEST(StreamedWriter, WritesWritePlansTextWhileLaterLayersArePlanned) {
 }
 
 TEST(StreamedWriter, NumbersTheLayersOnFromFirstNumber) {
-    const Planned p = cubeOnRaft();
+    const test::CubePrint p(kCubeOnRaft);
     PrintPlan plan;
     GCodeExport gcode(ExportParams{});
     const PlanWriterParams params;

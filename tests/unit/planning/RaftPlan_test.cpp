@@ -13,31 +13,23 @@
 namespace mixengine {
 namespace {
 
-struct RaftPrint {
-    ResolvedMachine machine;
-    test::Stack stack;
-    GroupToolpaths toolpaths;
+/// A cube on a raft, planned.
+struct RaftPrint : test::CubePrint {
+    RaftPrint()
+        : CubePrint({{"adhesion_type", "raft"},
+                     {"raft_surface_layers", "2"},
+                     {"raft_base_fan_speed", "0"},
+                     {"raft_interface_fan_speed", "50"},
+                     {"raft_surface_fan_speed", "100"},
+                     {"raft_margin", "5"},
+                     {"cool_min_layer_time", "0"},
+                     {"cool_fan_full_layer", "3"},
+                     {"retraction_combing", "all"}}) {
+        PlannerState state;
+        plan = planPrint(toolpaths, machine.global, machine.extruders, state);
+    }
     PrintPlan plan;
 };
-
-RaftPrint raftPrint() {
-    RaftPrint r;
-    r.machine = test::fdmMachine({{"adhesion_type", "raft"},
-                                  {"raft_surface_layers", "2"},
-                                  {"raft_base_fan_speed", "0"},
-                                  {"raft_interface_fan_speed", "50"},
-                                  {"raft_surface_fan_speed", "100"},
-                                  {"raft_margin", "5"},
-                                  {"cool_min_layer_time", "0"},
-                                  {"cool_fan_full_layer", "3"},
-                                  {"retraction_combing", "all"}});
-    r.stack = test::prismStack(20);
-    test::fill(r.stack, 0, 20, {test::square(100'000, 100'000, 10'000)});
-    r.toolpaths = test::oneMeshToolpaths(r.machine, r.stack, "cube");
-    PlannerState state;
-    r.plan = planPrint(r.toolpaths, r.machine.global, r.machine.extruders, state);
-    return r;
-}
 
 std::vector<PlanStep> stepsOf(const PlannedLayer& layer, PlanStep::Kind kind) {
     std::vector<PlanStep> out;
@@ -49,7 +41,7 @@ std::vector<PlanStep> stepsOf(const PlannedLayer& layer, PlanStep::Kind kind) {
 }
 
 TEST(RaftPlan, RaftLayersFirstWithTheirNumbersThicknessAndFan) {
-    const RaftPrint r = raftPrint();
+    const RaftPrint r;
     ASSERT_EQ(r.toolpaths.raft.size(), 4U);  // no support: no filler layers printed
     ASSERT_EQ(r.plan.layers.size(), 4U + 20U);
     const RaftLayout layout = raftLayout(r.machine.global, &r.machine.extruders);
@@ -74,7 +66,7 @@ TEST(RaftPlan, RaftLayersFirstWithTheirNumbersThicknessAndFan) {
 }
 
 TEST(RaftPlan, BaseLoopBeforeItsLinesAndVolumesOfTheRaftsThickness) {
-    const RaftPrint r = raftPrint();
+    const RaftPrint r;
     const PlannedLayer& base = r.plan.layers[0];
     const std::vector<PlanStep> features = stepsOf(base, PlanStep::Kind::SetFeature);
     ASSERT_EQ(features.size(), 1U);

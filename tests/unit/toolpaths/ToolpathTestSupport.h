@@ -94,4 +94,21 @@ inline GroupToolpaths oneMeshToolpaths(const ResolvedMachine& machine, const Sta
     return generateGroupToolpaths(in, 2);
 }
 
+/// A 10 mm square prism ("cube") of `layers` layers at (100, 100) mm on fdmMachine(`user`), with
+/// its group toolpaths. Built in place and never copied or moved: the toolpaths point into the
+/// machine's settings and the stack.
+struct CubePrint {
+    explicit CubePrint(const SettingValues& user, int layers = 20)
+        : machine(fdmMachine(user)), stack(prismStack(layers)) {
+        fill(stack, 0, layers, {square(100'000, 100'000, 10'000)});
+        toolpaths = oneMeshToolpaths(machine, stack, "cube");
+    }
+    CubePrint(const CubePrint&) = delete;
+    CubePrint& operator=(const CubePrint&) = delete;
+
+    ResolvedMachine machine;
+    Stack stack;
+    GroupToolpaths toolpaths;
+};
+
 }  // namespace mixengine::test
