@@ -7,7 +7,7 @@ set -euo pipefail
 PACKAGES=(
   # build
   g++ cmake ninja-build pkg-config ccache clang-format make
-  libprotobuf-dev protobuf-compiler libarcus-dev
+  libprotobuf-dev protobuf-compiler
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libpolyclipping-dev nlohmann-json3-dev lib3mf-dev libzip-dev zlib1g-dev libpng-dev libfftw3-dev liblcms2-dev
   libmimalloc-dev

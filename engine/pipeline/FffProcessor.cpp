@@ -72,8 +72,11 @@ void reshapeOutlines(const SceneGroup& group, SlicedGroup& sliced) {
 
 /// Plans `group` into `plan` (empty at the call), handing each layer to `on_final` once it is final
 /// (planning/PrintPlanner.h).
+/// Before planning, `on_counted` hears how many model layers (CuraEngine's ;LAYER_COUNT:) the plan
+/// will have: one per toolpaths height (the raft's layers are numbered below 0).
 void planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& sliced, int threads,
-               PlannerState& state, Log& log, PrintPlan& plan, const FinalLayer& on_final) {
+               PlannerState& state, Log& log, PrintPlan& plan, const FinalLayer& on_final,
+               const std::function<void(int)>& on_counted) {
     ToolpathInput input;
     input.global = &group.settings;
     input.extruders = &scene.machine.extruders;
@@ -89,6 +92,7 @@ void planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& s
         log.warning(warning);
     for (const std::string& note : toolpaths.notes)
         log.info(note);
+    on_counted(static_cast<int>(toolpaths.heights.size()));
     planPrint(plan, toolpaths, group.settings, scene.machine.extruders, state, threads, on_final);
 }
 
@@ -176,14 +180,19 @@ bool anyLayerMesh(const std::vector<VolumeRole>& roles) {
     });
 }
 
-/// BFB: every line the engine wrote ends in \r\n; the user's G-code blocks keep their own line ends.
-void useBfbLineEnds(const Scene& scene, GCodeOutput& output) {
+/// BFB: the user's G-code blocks, which keep their own line ends (gcode/Bfb.h).
+std::vector<std::string> bfbVerbatim(const Scene& scene) {
     std::vector<std::string> verbatim = {scene.machine.global.text("machine_start_gcode"),
                                          scene.machine.global.text("machine_end_gcode")};
     for (const Settings& e : scene.machine.extruders)
         for (const char* key : {"machine_extruder_start_code", "machine_extruder_end_code"})
             if (e.has(key))
                 verbatim.push_back(e.text(key));
+    return verbatim;
+}
+
+/// BFB: every line the engine wrote ends in \r\n; the user's G-code blocks keep their own line ends.
+void useBfbLineEnds(const std::vector<std::string>& verbatim, GCodeOutput& output) {
     output.header = withBfbLineEnds(output.header, {});
     output.start = withBfbLineEnds(output.start, verbatim);
     for (std::string& chunk : output.layer_chunks)
@@ -199,6 +208,63 @@ coord_um stitchDistanceUm(const Settings& s) {
     constexpr coord_um kSurfaceModeGapUm = 100;
     const bool normal = !s.has("magic_mesh_surface_mode") || s.text("magic_mesh_surface_mode") == "normal";
     return normal ? kStitchUm : kSurfaceModeGapUm;
+}
+
+/// The index of the last mesh group that has meshes (its layer count completes ;LAYER_COUNT:).
+std::size_t lastGroupWithMeshes(const Scene& scene) {
+    std::size_t last = 0;
+    for (std::size_t g = 0; g < scene.groups.size(); ++g)
+        if (!scene.groups[g].meshes.empty())
+            last = g;
+    return last;
+}
+
+/// The start code: the machine's start G-code, the extrusion reset, BFB's automatic retraction, the
+/// first extruder's prime, then ;LAYER_COUNT: (the model's layers, not the raft's, as CuraEngine).
+std::string startText(const Scene& scene, const ExportParams& export_params, const std::string& prime,
+                      int model_layers) {
+    const Settings& global = scene.machine.global;
+    const Settings& first = scene.machine.extruders.front();
+    const bool relative = relativeExtrusion(global);
+    std::string start = startCode(global, first, relative);
+    if (!relative)
+        start += export_params.mach3_axes ? "G92 A0\n" : "G92 E0\n";
+    if (export_params.bfb)
+        start +=
+            bfbAutoRetraction(first.lengthMicrons("retraction_amount"), first.boolean("retraction_enable"));
+    start += prime;
+    start += ";LAYER_COUNT:" + std::to_string(model_layers) + "\n";
+    return start;
+}
+
+/// A finished plan's layers, written in order to `output`.
+WrittenLayers writeLayers(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode,
+                          LayerOutput& output) {
+    WrittenLayers written;
+    const PlanTables tables{plan.mesh_names, plan.mixes};
+    for (const PlannedLayer& layer : plan.layers) {
+        writeLayer(layer, layer.index, tables, params, gcode, written);
+        output.take(written.chunks, layer, layer.index);
+    }
+    return written;
+}
+
+/// The summary, the header and the end code once every layer is written.
+void finishOutput(const Scene& scene, const ExportParams& export_params, GCodeExport& gcode,
+                  GCodeOutput& output) {
+    const Settings& global = scene.machine.global;
+    output.summary.flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
+    output.summary.print_time_s = gcode.elapsedSeconds();
+    output.summary.time_by_feature_s = gcode.secondsByFeature();
+    output.summary.filament_per_extruder = gcode.filamentPerExtruder();
+    output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
+    describeExtruders(scene, export_params.volumetric, output.summary);
+    output.summary.layer_height_mm = global.millimetres("layer_height");
+    output.summary.engine_version = MIXENGINE_VERSION;
+    output.header = makeHeader(output.summary);
+    output.suffix = finishPrint(gcode, global, scene.machine.extruders, relativeExtrusion(global));
+    if (export_params.bfb)
+        useBfbLineEnds(bfbVerbatim(scene), output);
 }
 
 }  // namespace
@@ -281,7 +347,8 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     return sliced;
 }
 
-GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan) {
+GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan,
+                        const LayerStream& stream) {
     const Settings& global = scene.machine.global;
     const ExportParams export_params = exportParams(scene);
     GCodeExport gcode(export_params);
@@ -299,24 +366,37 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     GCodeOutput output;
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
     output.summary.max = {INT64_MIN, INT64_MIN, INT64_MIN};
+    const std::vector<std::string> verbatim =
+        export_params.bfb ? bfbVerbatim(scene) : std::vector<std::string>{};
+    LayerOutput layers(stream, export_params.bfb ? &verbatim : nullptr, output.layer_chunks);
+    const std::size_t last_group = lastGroupWithMeshes(scene);
     int next_index = 0;
     int model_layers = 0;
-    for (const SceneGroup& group : scene.groups) {
+    std::optional<int> announced;  // the ;LAYER_COUNT: handed to the stream
+    for (std::size_t g = 0; g < scene.groups.size(); ++g) {
+        const SceneGroup& group = scene.groups[g];
         if (group.meshes.empty())
             continue;
         log.progress(ProgressStage::Slicing, 0.0);
         SlicedGroup sliced = sliceGroup(group, threads, log);
         log.progress(ProgressStage::Toolpaths, 0.3);
-        const bool first_group = output.layer_chunks.empty();
+        const bool first_group = layers.taken() == 0;
+        const auto on_counted = [&](int count) {
+            if (g != last_group)
+                return;
+            announced = model_layers + count;
+            layers.start(startText(scene, export_params, prime, *announced));
+        };
         PrintPlan plan;  // outlives the streamed writer, which reads its layers
         std::optional<WrittenLayers> written;
+        layers.newGroup();
         if (threads > 1 && !mixesColours(group.settings)) {  // written while later layers are planned
             StreamedWriter streamed(writer, gcode,
-                                    first_group ? std::nullopt : std::optional<int>(next_index));
-            planGroup(scene, group, sliced, threads, state, log, plan, streamed.observer());
+                                    first_group ? std::nullopt : std::optional<int>(next_index), layers);
+            planGroup(scene, group, sliced, threads, state, log, plan, streamed.observer(), on_counted);
             written = streamed.finish();
         } else {
-            planGroup(scene, group, sliced, threads, state, log, plan, {});
+            planGroup(scene, group, sliced, threads, state, log, plan, {}, on_counted);
         }
         assignMixes(plan, mixingInput(scene, group), log);
         model_layers += modelLayers(plan);
@@ -325,38 +405,21 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
             on_plan(plan);
         log.progress(ProgressStage::GCode, 0.8);
         if (!written)
-            written = writePlan(plan, writer, gcode);
+            written = writeLayers(plan, writer, gcode, layers);
         extendBounds(output.summary, *written);
-        for (std::string& chunk : written->chunks)
-            output.layer_chunks.push_back(std::move(chunk));
     }
-    if (output.layer_chunks.empty()) {
+    if (announced.value_or(model_layers) != model_layers)
+        throw InternalError("the layer count announced to the stream (" + std::to_string(*announced) +
+                            ") is not the plan's (" + std::to_string(model_layers) + ")");
+    if (layers.taken() == 0) {
         output.summary.min = output.summary.max = {};
         log.warning("nothing to print: no part of " + meshNames(scene) +
                     " lies at a slice height above the build plate (0 layers)");
     }
-
-    const bool relative = relativeExtrusion(global);
-    output.summary.flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
-    output.summary.print_time_s = gcode.elapsedSeconds();
-    output.summary.time_by_feature_s = gcode.secondsByFeature();
-    output.summary.filament_per_extruder = gcode.filamentPerExtruder();
-    output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
-    describeExtruders(scene, export_params.volumetric, output.summary);
-    output.summary.layer_height_mm = global.millimetres("layer_height");
-    output.summary.engine_version = MIXENGINE_VERSION;
-    output.header = makeHeader(output.summary);
-    output.start = startCode(global, scene.machine.extruders.front(), relative);
-    if (!relative)
-        output.start += export_params.mach3_axes ? "G92 A0\n" : "G92 E0\n";
-    if (export_params.bfb)
-        output.start +=
-            bfbAutoRetraction(first.lengthMicrons("retraction_amount"), first.boolean("retraction_enable"));
-    output.start += prime;
-    output.start += ";LAYER_COUNT:" + std::to_string(model_layers) + "\n";  // as CuraEngine: not the raft's
-    output.suffix = finishPrint(gcode, global, scene.machine.extruders, relative);
-    if (export_params.bfb)
-        useBfbLineEnds(scene, output);
+    output.start = startText(scene, export_params, prime, model_layers);
+    if (!announced)
+        layers.start(output.start);
+    finishOutput(scene, export_params, gcode, output);
     log.progress(ProgressStage::Done, 1.0);
     return output;
 }

@@ -8,6 +8,7 @@
 
 #include "common/Log.h"
 #include "gcode/Header.h"
+#include "pipeline/LayerStream.h"
 #include "pipeline/Scene.h"
 #include "planning/LayerPlan.h"
 #include "slicing/MultiVolumes.h"
@@ -49,7 +50,9 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
 /// Sees each mesh group's plan after planning and mixing (e.g. the --preview picture).
 using PlanObserver = std::function<void(const PrintPlan&)>;
 
-/// The whole print.
-GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan = {});
+/// The whole print. With a `stream` (pipeline/LayerStream.h) the layers and the start code go to it
+/// as they are made and the result's layer_chunks stay empty; the rest of the result is the same.
+GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan = {},
+                        const LayerStream& stream = {});
 
 }  // namespace mixengine

@@ -3,8 +3,10 @@
 namespace mixengine {
 
 StreamedWriter::StreamedWriter(const PlanWriterParams& params, GCodeExport& gcode,
-                               std::optional<int> first_number)
-    : params_(params), gcode_(gcode), first_number_(first_number), thread_([this] { run(); }) {}
+                               std::optional<int> first_number, LayerOutput& output)
+    : params_(params), gcode_(gcode), first_number_(first_number), output_(output), thread_([this] {
+          run();
+      }) {}
 
 StreamedWriter::~StreamedWriter() {
     stop();
@@ -17,7 +19,9 @@ FinalLayer StreamedWriter::observer() {
 void StreamedWriter::hand(const PrintPlan& plan, std::size_t layer) {
     {
         std::lock_guard lock(mutex_);
-        if (layer == 0) {  // the tables are complete before the first layer is
+        if (error_)
+            std::rethrow_exception(error_);  // the writer or its output failed: stop planning
+        if (layer == 0) {                    // the tables are complete before the first layer is
             mesh_names_ = plan.mesh_names;
             mixes_ = plan.mixes;
         }
@@ -41,7 +45,9 @@ void StreamedWriter::run() {
         if (next == 0 && first_number_)
             offset = *first_number_ - layer->index;
         try {
-            writeLayer(*layer, layer->index + offset, tables, params_, gcode_, written_);
+            const int number = layer->index + offset;
+            writeLayer(*layer, number, tables, params_, gcode_, written_);
+            output_.take(written_.chunks, *layer, number);
         } catch (...) {
             std::lock_guard lock(mutex_);
             error_ = std::current_exception();

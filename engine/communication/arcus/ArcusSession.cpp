@@ -1,190 +1,229 @@
 #include "communication/arcus/ArcusSession.h"
 
-#include <future>
-#include <thread>
+#include <algorithm>
+#include <cstdio>
 
 #include "Cura.pb.h"
+#include "communication/arcus/WireFormat.h"
 
 namespace mixengine {
 namespace {
 
 using namespace std::chrono_literals;
 
-/// Every message type of Cura.proto that may appear as a top-level frame, both directions.
-void registerTypes(Arcus::Socket& socket) {
-    socket.registerMessageType(&cura::proto::Slice::default_instance());
-    socket.registerMessageType(&cura::proto::Layer::default_instance());
-    socket.registerMessageType(&cura::proto::LayerOptimized::default_instance());
-    socket.registerMessageType(&cura::proto::Progress::default_instance());
-    socket.registerMessageType(&cura::proto::GCodeLayer::default_instance());
-    socket.registerMessageType(&cura::proto::PrintTimeMaterialEstimates::default_instance());
-    socket.registerMessageType(&cura::proto::SettingList::default_instance());
-    socket.registerMessageType(&cura::proto::GCodePrefix::default_instance());
-    socket.registerMessageType(&cura::proto::SlicingFinished::default_instance());
-    socket.registerMessageType(&cura::proto::SettingExtruder::default_instance());
+constexpr auto kReadWait = 200ms;             ///< how often the reader looks whether to stop
+constexpr std::size_t kBodyChunk = 1u << 20;  ///< a body grows as it arrives, never ahead of it
+
+std::string hex(std::uint32_t value) {
+    char text[16];
+    std::snprintf(text, sizeof text, "0x%08x", value);
+    return text;
 }
 
-bool isEnded(Arcus::SocketState::SocketState state) {
-    return state == Arcus::SocketState::Closing || state == Arcus::SocketState::Closed ||
-           state == Arcus::SocketState::Error;
+/// The full name of a Cura.proto message type with this id, or "" when there is none.
+std::string curaTypeName(std::uint32_t type_id) {
+    const google::protobuf::FileDescriptor* file = cura::proto::Slice::descriptor()->file();
+    for (int i = 0; i < file->message_type_count(); ++i) {
+        const std::string& name = file->message_type(i)->full_name();
+        if (arcusTypeId(name) == type_id)
+            return name;
+    }
+    return "";
 }
 
-/// One printable line for an Arcus error (libArcus appends raw payload bytes to some messages).
-std::string describe(const Arcus::Error& error) {
-    switch (error.getErrorCode()) {
-        case Arcus::ErrorCode::UnknownMessageTypeError:
-            return "unknown message type (not in Cura.proto)";
-        case Arcus::ErrorCode::ParseFailedError:
-            return "a message failed to parse";
-        case Arcus::ErrorCode::ConnectionResetError:
-            return "the frontend reset the connection";
-        default:
-            break;
-    }
-    std::string text = error.getErrorMessage();
-    for (char& c : text) {
-        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f)
-            c = '?';
-    }
-    return text.empty() ? "socket error" : text;
+std::string asText(const std::array<unsigned char, 4>& word) {
+    return {reinterpret_cast<const char*>(word.data()), word.size()};
 }
 
 }  // namespace
 
-void ArcusSession::Listener::stateChanged(Arcus::SocketState::SocketState state) {
-    std::lock_guard lock(shared_->mutex);
-    shared_->state = state;
-    shared_->changed.notify_all();
-}
-
-void ArcusSession::Listener::messageReceived() {
-    std::lock_guard lock(shared_->mutex);
-    ++shared_->pending_messages;
-    shared_->changed.notify_all();
-}
-
-void ArcusSession::Listener::error(const Arcus::Error& error) {
-    std::lock_guard lock(shared_->mutex);
-    if (error.getErrorCode() == Arcus::ErrorCode::Debug) {
-        if (shared_->log)
-            shared_->log->debug("socket: " + error.getErrorMessage());
-        return;
-    }
-    if (shared_->failure.empty())
-        shared_->failure = describe(error);
-    shared_->changed.notify_all();
-}
-
-ArcusSession::ArcusSession(Log& log) : log_(log) {
-    shared_->log = &log;
-    registerTypes(*socket_);
-    socket_->addListener(new Listener(shared_));  // libArcus deletes its listeners with the socket
-}
+ArcusSession::ArcusSession(Log& log) : log_(log) {}
 
 ArcusSession::~ArcusSession() {
-    close(2s);
-    if (socket_)
-        joinSocketThread(2s);
-    std::lock_guard lock(shared_->mutex);
-    shared_->log = nullptr;
-}
-
-void ArcusSession::joinSocketThread(std::chrono::milliseconds timeout) {
-    std::unique_lock lock(shared_->mutex);
-    const bool settled = shared_->changed.wait_for(lock, timeout, [this] {
-        return (!thread_started_ && shared_->state == Arcus::SocketState::Initial) ||
-               shared_->state == Arcus::SocketState::Closed || shared_->state == Arcus::SocketState::Error;
-    });
-    lock.unlock();
-    if (!settled) {
-        static_cast<void>(socket_.release());  // abandoned on purpose: its thread is still running
-        return;
-    }
-    // The listener hears of a state after libArcus has stored it, so the socket agrees here.
-    const auto state = socket_->getState();
-    if (state == Arcus::SocketState::Closed || state == Arcus::SocketState::Error)
-        socket_->reset();
-}
-
-void ArcusSession::throwIfFailed() const {
-    if (!shared_->failure.empty())
-        throw ProtocolError("Cura socket: " + shared_->failure);
+    stopping_ = true;
+    stream_.shutdownBoth();
+    if (reader_.joinable())
+        reader_.join();
 }
 
 void ArcusSession::connect(const std::string& host, int port, std::chrono::milliseconds timeout) {
     log_.info("connecting to " + host + ":" + std::to_string(port));
-    socket_->connect(host, port);
-    thread_started_ = true;
-    std::unique_lock lock(shared_->mutex);
-    const bool settled = shared_->changed.wait_for(lock, timeout, [this] {
-        return shared_->state != Arcus::SocketState::Initial &&
-               shared_->state != Arcus::SocketState::Connecting;
-    });
-    // Connected, or already closing because the frontend asked at once: both were connections.
-    const bool connected = shared_->state == Arcus::SocketState::Connected ||
-                           shared_->state == Arcus::SocketState::Closing ||
-                           shared_->state == Arcus::SocketState::Closed;
-    if (!shared_->failure.empty() || !connected) {
-        const std::string why = !shared_->failure.empty() ? shared_->failure
-                                : settled                 ? "socket error"
-                                                          : "timed out";
+    const std::string why = TcpStream::connectTo(host, port, timeout, stream_);
+    if (!why.empty())
         throw ProtocolError("cannot connect to Cura at " + host + ":" + std::to_string(port) + ": " + why);
+    reader_ = std::thread([this] { readLoop(); });
+}
+
+void ArcusSession::readLoop() {
+    while (readNext()) {
     }
 }
 
-std::shared_ptr<cura::proto::Slice> ArcusSession::waitForSlice() {
-    for (;;) {
-        {
-            std::unique_lock lock(shared_->mutex);
-            shared_->changed.wait(lock, [this] {
-                return shared_->pending_messages > 0 || isEnded(shared_->state) || !shared_->failure.empty();
-            });
-            throwIfFailed();
-            if (shared_->pending_messages == 0)
-                return nullptr;  // the frontend closed the connection
-            --shared_->pending_messages;
+bool ArcusSession::readExact(char* buffer, std::size_t size) {
+    std::size_t done = 0;
+    while (done < size) {
+        std::size_t got = 0;
+        const IoResult result = stream_.readSome(buffer + done, size - done, kReadWait, got);
+        if (stopping_)
+            return false;
+        if (result == IoResult::Closed) {
+            markEnded(false);
+            return false;
         }
-        const Arcus::MessagePtr message = socket_->takeNextMessage();
-        if (!message)
-            continue;
-        if (auto slice = std::dynamic_pointer_cast<cura::proto::Slice>(message))
-            return slice;
-        log_.warning("Cura socket: ignoring a " + message->GetTypeName() + " message (waiting for a Slice)");
+        done += got;
     }
+    return true;
 }
 
-void ArcusSession::send(const Arcus::MessagePtr& message) {
-    {
-        std::lock_guard lock(shared_->mutex);
-        throwIfFailed();
-        if (isEnded(shared_->state))
-            throw ProtocolError("Cura socket: the frontend closed the connection");
+bool ArcusSession::readNext() {
+    unsigned char bytes[4];
+    if (!readExact(reinterpret_cast<char*>(bytes), sizeof bytes))
+        return false;
+    const std::uint32_t word = arcusReadWord(bytes);
+    switch (classifyArcusWord(word)) {
+        case ArcusWordKind::KeepAlive:
+            return true;
+        case ArcusWordKind::Close:
+            markEnded(true);
+            answerCloseRequest();
+            return false;
+        case ArcusWordKind::Header:
+            return readFrame();
+        case ArcusWordKind::WrongVersion:
+            fail("protocol version mismatch (header " + hex(word) + ", expected " + hex(kArcusHeader) + ")");
+            return false;
+        case ArcusWordKind::Garbage:
+            break;
     }
-    socket_->sendMessage(message);
+    fail("Header mismatch (" + hex(word) + " is not a frame header)");
+    return false;
+}
+
+bool ArcusSession::readFrame() {
+    unsigned char words[8];
+    if (!readExact(reinterpret_cast<char*>(words), sizeof words))
+        return false;
+    const std::uint32_t size = arcusReadWord(words);
+    const std::uint32_t type_id = arcusReadWord(words + 4);
+    if (size > kArcusMaxBodyBytes) {
+        fail("a message of " + std::to_string(size) + " bytes is over libArcus's limit of " +
+             std::to_string(kArcusMaxBodyBytes) + " bytes");
+        return false;
+    }
+    std::string body;
+    while (body.size() < size) {
+        const std::size_t at = body.size();
+        body.resize(at + std::min<std::size_t>(kBodyChunk, size - at));
+        if (!readExact(body.data() + at, body.size() - at))
+            return false;
+    }
+    dispatch(type_id, body);
+    std::lock_guard lock(inbox_.mutex);
+    return inbox_.failure.empty();
+}
+
+void ArcusSession::dispatch(std::uint32_t type_id, const std::string& body) {
+    const std::string name = curaTypeName(type_id);
+    if (name.empty())
+        return fail("Unknown message type id " + hex(type_id) + " (not in Cura.proto)");
+    if (name != cura::proto::Slice::descriptor()->full_name()) {
+        log_.warning("Cura socket: ignoring a " + name + " message");
+        return;
+    }
+    auto slice = std::make_unique<cura::proto::Slice>();
+    if (!slice->ParseFromString(body))
+        return fail("a Slice message of " + std::to_string(body.size()) + " bytes failed to parse");
+    std::lock_guard lock(inbox_.mutex);
+    inbox_.slices.push_back(std::move(slice));
+    inbox_.changed.notify_all();
+}
+
+void ArcusSession::fail(const std::string& why) {
+    std::lock_guard lock(inbox_.mutex);
+    if (inbox_.failure.empty())
+        inbox_.failure = why;
+    inbox_.changed.notify_all();
+}
+
+void ArcusSession::markEnded(bool close_requested) {
+    std::lock_guard lock(inbox_.mutex);
+    inbox_.ended = true;
+    inbox_.close_requested = inbox_.close_requested || close_requested;
+    inbox_.changed.notify_all();
+}
+
+void ArcusSession::answerCloseRequest() {
+    std::lock_guard lock(write_mutex_);
+    if (close_sent_)
+        return;
+    close_sent_ = true;
+    stream_.writeUnit(asText(arcusWord(kArcusClose)));  // as libArcus: answer, then stop writing
+    stream_.shutdownWrite();
+}
+
+void ArcusSession::throwIfEnded() {
+    if (!inbox_.failure.empty())
+        throw ProtocolError("Cura socket: " + inbox_.failure);
+    if (inbox_.ended)
+        throw CuraEnded(inbox_.close_requested ? "Cura asked to close the connection"
+                                               : "Cura closed the connection");
+}
+
+std::unique_ptr<cura::proto::Slice> ArcusSession::waitForSlice() {
+    std::unique_lock lock(inbox_.mutex);
+    inbox_.changed.wait(lock,
+                        [this] { return !inbox_.slices.empty() || inbox_.ended || !inbox_.failure.empty(); });
+    if (!inbox_.failure.empty())
+        throw ProtocolError("Cura socket: " + inbox_.failure);
+    if (inbox_.slices.empty())
+        return nullptr;
+    std::unique_ptr<cura::proto::Slice> slice = std::move(inbox_.slices.front());
+    inbox_.slices.pop_front();
+    return slice;
+}
+
+void ArcusSession::send(const google::protobuf::Message& message) {
+    {
+        std::lock_guard lock(inbox_.mutex);
+        throwIfEnded();
+    }
+    const std::string body = message.SerializeAsString();
+    const auto head =
+        arcusFrameHeader(static_cast<std::uint32_t>(body.size()), arcusTypeId(message.GetTypeName()));
+    std::lock_guard lock(write_mutex_);
+    const bool written =
+        !close_sent_ &&
+        stream_.writeUnit({reinterpret_cast<const char*>(head.data()), head.size()}, body) == IoResult::Ok;
+    if (!written) {
+        markEnded(false);
+        std::lock_guard inbox_lock(inbox_.mutex);
+        throwIfEnded();
+    }
 }
 
 void ArcusSession::close(std::chrono::milliseconds timeout) {
-    if (!socket_)
-        return;
     {
-        std::lock_guard lock(shared_->mutex);
-        if (shared_->state != Arcus::SocketState::Connected)
+        std::lock_guard lock(inbox_.mutex);
+        if (inbox_.ended || !inbox_.failure.empty())
             return;
     }
-    auto closed = std::make_shared<std::promise<void>>();
-    std::future<void> done = closed->get_future();
-    std::thread closer([socket = socket_.get(), closed] {
-        socket->close();
-        closed->set_value();
-    });
-    if (done.wait_for(timeout) == std::future_status::ready) {
-        closer.join();
-        return;
+    {
+        std::lock_guard lock(write_mutex_);
+        if (!close_sent_) {
+            close_sent_ = true;
+            stream_.writeUnit(asText(arcusWord(kArcusClose)));
+            stream_.shutdownWrite();
+        }
     }
-    log_.warning("Cura did not answer the close request within " + std::to_string(timeout.count()) +
-                 " ms; leaving the connection");
-    closer.detach();
-    static_cast<void>(socket_.release());  // abandoned on purpose: in use by the detached closer
+    std::unique_lock lock(inbox_.mutex);
+    if (!inbox_.changed.wait_for(lock, timeout, [this] { return inbox_.ended || !inbox_.failure.empty(); }))
+        log_.warning("Cura did not answer the close request within " + std::to_string(timeout.count()) +
+                     " ms; closing anyway");
+}
+
+void ArcusSession::end() {
+    markEnded(false);
+    stream_.shutdownBoth();
 }
 
 }  // namespace mixengine

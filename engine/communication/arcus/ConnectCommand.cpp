@@ -4,6 +4,7 @@
 
 #include "Cura.pb.h"
 #include "common/ParallelFor.h"
+#include "common/SignalWatch.h"
 #include "communication/Commands.h"
 #include "communication/HelpText.h"
 #include "communication/arcus/ArcusSession.h"
@@ -43,7 +44,7 @@ class ProgressReporter {
         if (amount - sent_ < 0.001 && !(amount == 1.0 && sent_ < 1.0))
             return;
         sent_ = amount;
-        session_.send(progressMessage(amount));  // throws when Cura has gone: the slice stops
+        session_.send(*progressMessage(amount));  // throws CuraEnded when Cura has gone: the slice stops
     }
 
   private:
@@ -51,31 +52,76 @@ class ProgressReporter {
     double sent_ = -1.0;
 };
 
+/// Sends each layer as it is written: its G-code, then its preview. Layers made before the start
+/// code is known (a print of several mesh groups) wait for it, then go in order.
+class LayerSender {
+  public:
+    explicit LayerSender(ArcusSession& session) : session_(session) {}
+
+    void start(const std::string& start_code) {
+        session_.send(*gcodeLayerMessage(start_code));
+        started_ = true;
+        for (const auto& [gcode, preview] : held_) {
+            session_.send(*gcode);
+            session_.send(*preview);
+        }
+        held_.clear();
+    }
+
+    void layer(StreamedLayer&& layer) {
+        if (layer.first_of_group)
+            cursor_.previous_z = 0;
+        MessagePtr preview = previewLayer(*layer.layer, layer.number, cursor_);
+        MessagePtr gcode = gcodeLayerMessage(layer.gcode);
+        if (!started_) {
+            held_.emplace_back(std::move(gcode), std::move(preview));
+            return;
+        }
+        session_.send(*gcode);
+        session_.send(*preview);
+        ++sent_;
+    }
+
+    int layersSent() const { return sent_ + static_cast<int>(held_.size()); }
+
+  private:
+    ArcusSession& session_;
+    PreviewCursor cursor_;
+    bool started_ = false;
+    std::vector<std::pair<MessagePtr, MessagePtr>> held_;
+    int sent_ = 0;
+};
+
+/// Cura's progress bar hears of the pipeline for as long as this lives.
+class ProgressLink {
+  public:
+    ProgressLink(Log& log, ArcusSession& session) : log_(log) {
+        log_.setProgressSink(ProgressReporter(session));
+    }
+    ~ProgressLink() { log_.setProgressSink({}); }
+    ProgressLink(const ProgressLink&) = delete;
+    ProgressLink& operator=(const ProgressLink&) = delete;
+
+  private:
+    Log& log_;
+};
+
 void sliceAndReply(const cura::proto::Slice& slice, int threads, ArcusSession& session, Log& log) {
     SliceRequest request = requestFromSlice(slice);
-    log.setProgressSink(ProgressReporter(session));
+    const ProgressLink progress(log, session);
     const Scene scene = prepareScene(request, log);
 
-    std::vector<std::shared_ptr<cura::proto::LayerOptimized>> preview;
-    Point2 head{0, 0};
-    int extruder = 0;
-    const PlanObserver observe = [&](const PrintPlan& plan) {
-        auto layers = previewLayers(plan, 0, head, extruder);  // the plan's indexes run on across groups
-        preview.insert(preview.end(), layers.begin(), layers.end());
-    };
-    const GCodeOutput gcode = runPipeline(scene, effectiveThreads(threads), log, observe);
+    LayerSender sender(session);
+    LayerStream stream;
+    stream.start = [&sender](const std::string& start_code) { sender.start(start_code); };
+    stream.layer = [&sender](StreamedLayer&& layer) { sender.layer(std::move(layer)); };
+    const GCodeOutput gcode = runPipeline(scene, effectiveThreads(threads), log, {}, stream);
 
-    session.send(gcodeLayerMessage(gcode.start));
-    for (const std::string& chunk : gcode.layer_chunks)
-        session.send(gcodeLayerMessage(chunk));
-    for (const auto& layer : preview)
-        session.send(layer);
-    session.send(gcodePrefixMessage(gcode.header));
-    session.send(gcodeLayerMessage(gcode.suffix));
-    session.send(estimatesMessage(gcode.summary));
-    session.send(slicingFinishedMessage());
-    log.setProgressSink({});
-    log.info("sliced " + std::to_string(gcode.layer_chunks.size()) + " layers for Cura");
+    session.send(*gcodePrefixMessage(gcode.header));
+    session.send(*gcodeLayerMessage(gcode.suffix));
+    session.send(*estimatesMessage(gcode.summary));
+    session.send(*slicingFinishedMessage());
+    log.info("sliced " + std::to_string(sender.layersSent()) + " layers for Cura");
 }
 
 }  // namespace
@@ -90,14 +136,24 @@ int runConnectCommand(const Words& words, std::ostream& out, std::ostream& err) 
     for (const std::string& word : args.ignored)
         log.warning("connect: ignoring unknown option '" + word + "'");
     ArcusSession session(log);
+    // Cura ends its engine with SIGTERM (CuraEngineBackend._terminate): the talk ends and the slice
+    // stops at its next message, every thread joined, exit 0.
+    const SignalWatch signals([&session, &log](int signal_number) {
+        log.info("signal " + std::to_string(signal_number) + ": ending the talk with Cura");
+        session.end();
+    });
     session.connect(args.host, args.port, 10s);
-    const std::shared_ptr<cura::proto::Slice> slice = session.waitForSlice();
-    if (!slice) {
-        log.info("Cura closed the connection before sending a slice");
-        return 0;
+    try {
+        const std::unique_ptr<cura::proto::Slice> slice = session.waitForSlice();
+        if (!slice) {
+            log.info("Cura ended the talk before sending a slice");
+            return 0;
+        }
+        sliceAndReply(*slice, args.threads, session, log);
+        session.close(10s);
+    } catch (const CuraEnded& ended) {
+        log.info(std::string(ended.what()) + " before the slice was sent; stopped");
     }
-    sliceAndReply(*slice, args.threads, session, log);
-    session.close(10s);
     return 0;
 }
 

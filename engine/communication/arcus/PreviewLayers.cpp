@@ -127,21 +127,28 @@ int curaLineType(Feature feature) {
     }
 }
 
+std::shared_ptr<cura::proto::LayerOptimized> previewLayer(const PlannedLayer& planned, int id,
+                                                          PreviewCursor& cursor) {
+    auto layer = std::make_shared<cura::proto::LayerOptimized>();
+    const coord_um thickness_um = planned.thickness > 0 ? planned.thickness : planned.z - cursor.previous_z;
+    cursor.previous_z = planned.z;
+    layer->set_id(id);
+    layer->set_height(static_cast<float>(planned.z));
+    layer->set_thickness(static_cast<float>(thickness_um));
+    addLayerSegments(planned, static_cast<double>(thickness_um) / 1000.0, *layer, cursor.head,
+                     cursor.extruder);
+    return layer;
+}
+
 std::vector<std::shared_ptr<cura::proto::LayerOptimized>> previewLayers(const PrintPlan& plan,
                                                                         int index_offset, Point2& start,
                                                                         int& start_extruder) {
     std::vector<std::shared_ptr<cura::proto::LayerOptimized>> layers;
-    coord_um previous_z = 0;
-    for (const PlannedLayer& planned : plan.layers) {
-        auto layer = std::make_shared<cura::proto::LayerOptimized>();
-        const coord_um thickness_um = planned.thickness > 0 ? planned.thickness : planned.z - previous_z;
-        previous_z = planned.z;
-        layer->set_id(planned.index + index_offset);
-        layer->set_height(static_cast<float>(planned.z));
-        layer->set_thickness(static_cast<float>(thickness_um));
-        addLayerSegments(planned, static_cast<double>(thickness_um) / 1000.0, *layer, start, start_extruder);
-        layers.push_back(std::move(layer));
-    }
+    PreviewCursor cursor{start, start_extruder, 0};
+    for (const PlannedLayer& planned : plan.layers)
+        layers.push_back(previewLayer(planned, planned.index + index_offset, cursor));
+    start = cursor.head;
+    start_extruder = cursor.extruder;
     return layers;
 }
 

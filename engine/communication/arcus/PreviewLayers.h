@@ -29,4 +29,17 @@ std::vector<std::shared_ptr<cura::proto::LayerOptimized>> previewLayers(const Pr
                                                                         int index_offset, Point2& start,
                                                                         int& start_extruder);
 
+/// Where the preview of a stream of layers stands: the head, its extruder, and the height of the
+/// layer before (0 at the start of a mesh group).
+struct PreviewCursor {
+    Point2 head{0, 0};
+    int extruder = 0;
+    coord_um previous_z = 0;
+};
+
+/// One layer's message, as previewLayers() makes it for that layer, with the id `id`; advances
+/// `cursor`.
+std::shared_ptr<cura::proto::LayerOptimized> previewLayer(const PlannedLayer& planned, int id,
+                                                          PreviewCursor& cursor);
+
 }  // namespace mixengine

@@ -25,29 +25,29 @@ void setFeatureTimes(const FeatureSeconds& s, cura::proto::PrintTimeMaterialEsti
 
 }  // namespace
 
-Arcus::MessagePtr progressMessage(double amount) {
+MessagePtr progressMessage(double amount) {
     auto message = std::make_shared<cura::proto::Progress>();
     message->set_amount(static_cast<float>(amount));
     return message;
 }
 
-Arcus::MessagePtr gcodeLayerMessage(const std::string& gcode) {
+MessagePtr gcodeLayerMessage(const std::string& gcode) {
     auto message = std::make_shared<cura::proto::GCodeLayer>();
     message->set_data(gcode);
     return message;
 }
 
-Arcus::MessagePtr gcodePrefixMessage(const std::string& header) {
+MessagePtr gcodePrefixMessage(const std::string& header) {
     auto message = std::make_shared<cura::proto::GCodePrefix>();
     message->set_data(header);
     return message;
 }
 
-Arcus::MessagePtr slicingFinishedMessage() {
+MessagePtr slicingFinishedMessage() {
     return std::make_shared<cura::proto::SlicingFinished>();
 }
 
-Arcus::MessagePtr estimatesMessage(const PrintSummary& summary) {
+MessagePtr estimatesMessage(const PrintSummary& summary) {
     auto message = std::make_shared<cura::proto::PrintTimeMaterialEstimates>();
     setFeatureTimes(summary.time_by_feature_s, *message);
     for (std::size_t i = 0; i < summary.extruders.size(); ++i) {

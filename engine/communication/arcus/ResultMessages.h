@@ -6,20 +6,22 @@
 #include <string>
 #include <vector>
 
-#include <Arcus/Types.h>
+#include <google/protobuf/message.h>
 
 #include "gcode/Header.h"
 
 namespace mixengine {
 
-Arcus::MessagePtr progressMessage(double amount);
-Arcus::MessagePtr gcodeLayerMessage(const std::string& gcode);
-Arcus::MessagePtr gcodePrefixMessage(const std::string& header);
-Arcus::MessagePtr slicingFinishedMessage();
+using MessagePtr = std::shared_ptr<google::protobuf::Message>;
+
+MessagePtr progressMessage(double amount);
+MessagePtr gcodeLayerMessage(const std::string& gcode);
+MessagePtr gcodePrefixMessage(const std::string& header);
+MessagePtr slicingFinishedMessage();
 
 /// One material estimate per extruder train: summary.extruders[i].volume_used_mm3 (filled by the
 /// pipeline for every train, used or not). The print time goes into the 12 time_* fields by feature,
 /// as CuraEngine books it (summary.time_by_feature_s); Cura shows their sum as the total.
-Arcus::MessagePtr estimatesMessage(const PrintSummary& summary);
+MessagePtr estimatesMessage(const PrintSummary& summary);
 
 }  // namespace mixengine

@@ -20,11 +20,15 @@ const SettingValues kCubeOnRaft{{"adhesion_type", "raft"},
                                 {"machine_heated_bed", "true"},
                                 {"retraction_combing", "all"}};
 
-std::string joined(const WrittenLayers& written) {
+std::string joined(const std::vector<std::string>& chunks) {
     std::string text;
-    for (const std::string& chunk : written.chunks)
+    for (const std::string& chunk : chunks)
         text += chunk;
     return text;
+}
+
+std::string joined(const WrittenLayers& written) {
+    return joined(written.chunks);
 }
 
 TEST(StreamedWriter, WritesWritePlansTextWhileLaterLayersArePlanned) {
@@ -39,7 +43,9 @@ TEST(StreamedWriter, WritesWritePlansTextWhileLaterLayersArePlanned) {
 
     PrintPlan plan;
     GCodeExport during(ExportParams{});
-    StreamedWriter writer(params, during, std::nullopt);
+    std::vector<std::string> kept;
+    LayerOutput output({}, nullptr, kept);
+    StreamedWriter writer(params, during, std::nullopt, output);
     const FinalLayer to_writer = writer.observer();
     std::vector<std::size_t> handed, planned_then;
     PlannerState streamed_state;
@@ -50,7 +56,8 @@ TEST(StreamedWriter, WritesWritePlansTextWhileLaterLayersArePlanned) {
                   to_writer(growing, layer);
               });
     const WrittenLayers written = writer.finish();
-    EXPECT_EQ(joined(written), expected);
+    EXPECT_TRUE(written.chunks.empty());  // they went to the output
+    EXPECT_EQ(joined(kept), expected);
     ASSERT_EQ(handed.size(), whole.layers.size());
     for (std::size_t i = 0; i < handed.size(); ++i)
         EXPECT_EQ(handed[i], i);
@@ -64,15 +71,54 @@ TEST(StreamedWriter, NumbersTheLayersOnFromFirstNumber) {
     PrintPlan plan;
     GCodeExport gcode(ExportParams{});
     const PlanWriterParams params;
-    StreamedWriter writer(params, gcode, 100);
+    std::vector<StreamedLayer> streamed;
+    LayerStream stream;
+    stream.layer = [&streamed](StreamedLayer&& layer) { streamed.push_back(std::move(layer)); };
+    std::vector<std::string> kept;
+    LayerOutput output(stream, nullptr, kept);
+    StreamedWriter writer(params, gcode, 100, output);
     PlannerState state;
     planPrint(plan, p.toolpaths, p.machine.global, p.machine.extruders, state, 2, writer.observer());
-    const WrittenLayers written = writer.finish();
-    ASSERT_EQ(written.chunks.size(), plan.layers.size());
+    writer.finish();
+    EXPECT_TRUE(kept.empty());  // a stream keeps nothing
+    ASSERT_EQ(streamed.size(), plan.layers.size());
     EXPECT_LT(plan.layers.front().index, 0);  // raft layers are numbered below 0 in the plan
-    EXPECT_EQ(written.chunks.front().rfind(";LAYER:100\n", 0), 0u);
+    EXPECT_EQ(streamed.front().gcode.rfind(";LAYER:100\n", 0), 0u);
     const int last = plan.layers.back().index + 100 - plan.layers.front().index;  // as the pipeline renumbers
-    EXPECT_EQ(written.chunks.back().rfind(";LAYER:" + std::to_string(last) + "\n", 0), 0u);
+    EXPECT_EQ(streamed.back().gcode.rfind(";LAYER:" + std::to_string(last) + "\n", 0), 0u);
+    for (std::size_t i = 0; i < streamed.size(); ++i) {
+        EXPECT_EQ(streamed[i].number, plan.layers[i].index + 100 - plan.layers.front().index);
+        EXPECT_EQ(streamed[i].layer, &plan.layers[i]);
+        EXPECT_EQ(streamed[i].first_of_group, i == 0);
+    }
+}
+
+TEST(StreamedWriter, AStreamThatFailsEndsThePlanOrItsFinish) {
+    const test::CubePrint p(kCubeOnRaft);
+    PrintPlan plan;
+    GCodeExport gcode(ExportParams{});
+    const PlanWriterParams params;
+    LayerStream stream;
+    std::vector<int> numbers;
+    stream.layer = [&numbers](StreamedLayer&& layer) {
+        numbers.push_back(layer.number);
+        if (layer.number == 3)
+            throw std::runtime_error("the peer went away");
+    };
+    std::vector<std::string> kept;
+    LayerOutput output(stream, nullptr, kept);
+    StreamedWriter writer(params, gcode, std::nullopt, output);
+    PlannerState state;
+    // The next hand-over after the failure throws it (planning stops there), or finish() does when
+    // planning was already done: either way the caller hears of it and no layer follows it.
+    EXPECT_THROW(
+        {
+            planPrint(plan, p.toolpaths, p.machine.global, p.machine.extruders, state, 2, writer.observer());
+            writer.finish();
+        },
+        std::runtime_error);
+    ASSERT_FALSE(numbers.empty());
+    EXPECT_EQ(numbers.back(), 3);
 }
 
 }  // namespace
