@@ -17,9 +17,11 @@ void Log::progress(ProgressStage stage, double fraction) {
     std::lock_guard lock(mutex_);
     if (sink_)
         sink_(stage, fraction);
-    if (progress_)
-        out_ << "Progress: " << progressStageName(stage) << ' '
-             << static_cast<int>(std::lround(fraction * 100.0)) << "%\n";
+    const int percent = static_cast<int>(std::lround(fraction * 100.0));
+    if (progress_ && (stage != printed_stage_ || percent != printed_percent_))  // once per percent
+        out_ << "Progress: " << progressStageName(stage) << ' ' << percent << "%\n";
+    printed_stage_ = stage;
+    printed_percent_ = percent;
 }
 
 }  // namespace mixengine

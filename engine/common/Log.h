@@ -24,8 +24,8 @@ class Log {
         if (verbosity_ >= 2)
             write("[debug] ", message);
     }
-    /// Progress of a stage, 0..1; printed ("Progress: slicing 42%") only when progress reporting
-    /// is on (-p).
+    /// Progress of a stage, 0..1; printed ("Progress: slicing 42%", once per stage and percent)
+    /// only when progress reporting is on (-p).
     void progress(ProgressStage stage, double fraction);
 
     /// Also hands every progress report to `sink` (e.g. Cura's socket), whether or not -p is on.
@@ -45,6 +45,8 @@ class Log {
     bool progress_ = false;
     ProgressSink sink_;
     int warnings_ = 0;
+    ProgressStage printed_stage_ = ProgressStage::Done;
+    int printed_percent_ = -1;
     std::mutex mutex_;
 };
 

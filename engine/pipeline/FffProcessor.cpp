@@ -81,6 +81,7 @@ void planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& s
     input.global = &group.settings;
     input.extruders = &scene.machine.extruders;
     input.heights = sliced.heights;
+    input.on_progress = [&log](double share_done) { log.progress(ProgressStage::Toolpaths, share_done); };
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
         const AABB3 box = group.meshes[m].mesh.bounds();
         const Point2 middle{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
@@ -379,7 +380,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
             continue;
         log.progress(ProgressStage::Slicing, 0.0);
         SlicedGroup sliced = sliceGroup(group, threads, log);
-        log.progress(ProgressStage::Toolpaths, 0.3);
+        log.progress(ProgressStage::Toolpaths, 0.0);
         const bool first_group = layers.taken() == 0;
         const auto on_counted = [&](int count) {
             if (g != last_group)

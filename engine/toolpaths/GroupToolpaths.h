@@ -18,6 +18,7 @@
 // first layer's support moves to the raft's filler layers (toolpaths/Support.h) and the model's
 // heights are lifted (toolpaths/RaftLayout.h). `threads` is used inside every step; the result
 // does not depend on it.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,9 @@ struct ToolpathInput {
     const std::vector<Settings>* extruders = nullptr;  ///< resolved extruder trains, index = extruder_nr
     std::vector<LayerZ> heights;
     std::vector<ToolpathMeshInput> meshes;
+    /// Hears the share of the meshes' walls, skin and infill done, 0..1, from any thread; may throw
+    /// to stop the stage (the exception leaves generateGroupToolpaths). Empty: nothing hears.
+    std::function<void(double share_done)> on_progress;
 };
 
 struct MeshToolpaths {

@@ -56,6 +56,10 @@ std::vector<MeshToolpaths> generateModelToolpaths(const ToolpathInput& input, in
     std::vector<std::optional<MeshAreas>> areas(n);
     std::vector<std::vector<SlicedLayer>> clipped(n);
     const std::vector<std::size_t> order = meshOrder(input);
+    std::size_t layer_steps = 0;  // walls and areas, then paths, per layer of every mesh
+    for (const ToolpathMeshInput& mesh : input.meshes)
+        layer_steps += printsNothingHere(mesh.role) ? 0 : 2 * mesh.layers->size();
+    const WorkProgress progress(input.on_progress, layer_steps);
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t m = order[k];
         const ToolpathMeshInput& mesh = input.meshes[m];
@@ -76,15 +80,15 @@ std::vector<MeshToolpaths> generateModelToolpaths(const ToolpathInput& input, in
         if (surfaceOnlyMesh(*mesh.settings))
             result[m].layers = generateMeshToolpaths(layers, *mesh.settings, threads, mesh.middle_um);
         else
-            areas[m] = generateMeshAreas(layers, *mesh.settings, threads);
+            areas[m] = generateMeshAreas(layers, *mesh.settings, threads, progress);
     }
     for (std::size_t m = 0; m < n; ++m) {
         if (!areas[m])
             continue;
         const ToolpathMeshInput& mesh = input.meshes[m];
         const std::vector<SlicedLayer>& layers = mesh.role.infill_mesh ? clipped[m] : *mesh.layers;
-        result[m].layers =
-            generateMeshPaths(std::move(*areas[m]), layers, *mesh.settings, threads, mesh.middle_um);
+        result[m].layers = generateMeshPaths(std::move(*areas[m]), layers, *mesh.settings, threads,
+                                             mesh.middle_um, progress);
     }
     return result;
 }

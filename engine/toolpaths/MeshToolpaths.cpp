@@ -304,7 +304,8 @@ bool outerWallFirst(const Settings& s, int layer) {
            (layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim");
 }
 
-MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settings& settings, int threads) {
+MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settings& settings, int threads,
+                            const WorkProgress& progress) {
     MeshAreas out;
     out.walls.resize(layers.size());
     out.inner_areas.resize(layers.size());
@@ -343,6 +344,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
         bottom_reference[i] = std::move(walls.bottom_reference);
         roofing_reference[i] = std::move(walls.roofing_reference);
         out.wall_gaps[i] = std::move(walls.perimeter_gaps);
+        progress.itemDone();
     });
     out.skin = computeSkinAreas(
         {&top_reference, &bottom_reference, refs.roofing_wall >= 0 ? &roofing_reference : nullptr},
@@ -355,7 +357,8 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
 
 std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vector<SlicedLayer>& layers,
                                                const Settings& settings, int threads,
-                                               const std::optional<Point2>& mesh_middle_um) {
+                                               const std::optional<Point2>& mesh_middle_um,
+                                               const WorkProgress& progress) {
     std::vector<MeshLayerGroups> result = std::move(areas.walls);
     result.resize(layers.size());
     const std::vector<LayerInfill> infill =
@@ -400,6 +403,7 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
             settings.boolean("infill_randomize_start_location"))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);
         result[i].ironing = ironing(layers, settings, i);
+        progress.itemDone();
     });
     if (!areas.spiral_loops.empty())
         addSpirals(areas.spiral_loops, settings, meshCentre(layers), result);
@@ -415,8 +419,9 @@ std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer
                                                    const std::optional<Point2>& mesh_middle_um) {
     if (surfaceOnly(settings))
         return surfaceToolpaths(layers, settings, seamParamsFrom(settings, meshCentre(layers)), threads);
-    return generateMeshPaths(generateMeshAreas(layers, settings, threads), layers, settings, threads,
-                             mesh_middle_um);
+    const WorkProgress silent;
+    return generateMeshPaths(generateMeshAreas(layers, settings, threads, silent), layers, settings, threads,
+                             mesh_middle_um, silent);
 }
 
 }  // namespace mixengine

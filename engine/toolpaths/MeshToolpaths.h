@@ -23,6 +23,8 @@
 #include <optional>
 #include <vector>
 
+#include "common/WorkProgress.h"
+
 #include "settings/Settings.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/ExtrusionPath.h"
@@ -64,13 +66,16 @@ struct MeshAreas {
 };
 
 /// Step 1: walls and areas (not for magic_mesh_surface_mode "surface": see surfaceOnlyMesh).
-MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settings& settings, int threads);
+/// `progress` hears of every layer done (and may throw to stop the work).
+MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settings& settings, int threads,
+                            const WorkProgress& progress);
 
 /// Step 2: the skin, infill (in `own_infill`) and ironing lines added to the walls. Perimeter gaps
 /// and combing see the skin areas' infill, not `own_infill`, as CuraEngine's.
 std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vector<SlicedLayer>& layers,
                                                const Settings& settings, int threads,
-                                               const std::optional<Point2>& mesh_middle_um);
+                                               const std::optional<Point2>& mesh_middle_um,
+                                               const WorkProgress& progress);
 
 /// magic_mesh_surface_mode "surface": generateMeshToolpaths prints the outlines alone.
 bool surfaceOnlyMesh(const Settings& settings);

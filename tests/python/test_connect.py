@@ -111,6 +111,14 @@ def test_layer_preview_heights_are_microns_and_lines_are_typed(ender3_slice):
     assert 5 in {t for seg in layers[0]["segments"] for t in seg["types"]}  # skirt on layer 0
 
 
+# libArcus reports its own state changes through the error callback with ErrorCode::Debug; these are not errors.
+LIBARCUS_DEBUG_MESSAGES = {"Closing socket because other side requested close.", "We got a request to close the socket."}
+
+
+def libarcus_errors(result):
+    return [e for e in result["errors"] if e not in LIBARCUS_DEBUG_MESSAGES]
+
+
 def without_volatile_lines(text):
     """Date/time lines are the only allowed difference between the two paths."""
     return [line for line in text.splitlines() if not re.match(r";\s*(Date|Time|TIME_ELAPSED_AT)\b", line)]
@@ -244,3 +252,23 @@ def test_raft_layers_reach_the_preview_numbered_below_zero(engine, cube, tmp_pat
     assert layers[4]["height"] > layers[3]["height"] + float(extruders["0"]["raft_airgap"]) * 1000 - 1
     raft_types = {t for layer in layers[:4] for seg in layer["segments"] for t in seg["types"]}
     assert {7, 10} <= raft_types and not raft_types & {1, 2, 3, 5, 6}  # support / interface lines only
+
+
+def test_several_mesh_groups_arrive_whole_and_in_order(engine, cube, tmp_path):
+    """Issue 29: layers stream as they are written; with several mesh groups (Cura's one-at-a-time sends one
+    object list per object) the start code carries the whole print's ;LAYER_COUNT:, so the first group's
+    layers wait for it — the G-code is still the command line's, byte for byte."""
+    cli_out = tmp_path / "cli.gcode"
+    proc = helpers.mixengine("slice", "-j", "creality_ender3", "-l", cube, "-s", "mesh_position_x=-30",
+                             "--next", "-l", cube, "-s", "mesh_position_x=30", "-o", cli_out)
+    assert proc.returncode == 0, proc.stderr
+    global_settings, extruders = resolved_settings("creality_ender3")
+    groups = [one_object(cube, mesh_position_x=-30), one_object(cube, mesh_position_x=30)]
+    r = slice_over_socket(engine, tmp_path, global_settings, extruders, groups)
+    assert r["exit_code"] == 0, r["stderr"]
+    assert libarcus_errors(r) == []
+    text = "".join(r["gcode_list"])
+    assert without_volatile_lines(text) == without_volatile_lines(cli_out.read_text())
+    ids = [layer["id"] for layer in r["layers"]]
+    assert ids == list(range(len(ids)))  # each group's layers, numbered on, as the G-code's ;LAYER:
+    assert [chunk.split("\n", 1)[0] for chunk in r["gcode_list"][2:-1]] == [f";LAYER:{i}" for i in ids]

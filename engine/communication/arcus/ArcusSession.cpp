@@ -182,6 +182,11 @@ std::unique_ptr<cura::proto::Slice> ArcusSession::waitForSlice() {
     return slice;
 }
 
+void ArcusSession::checkOpen() {
+    std::lock_guard lock(inbox_.mutex);
+    throwIfEnded();
+}
+
 void ArcusSession::send(const google::protobuf::Message& message) {
     {
         std::lock_guard lock(inbox_.mutex);

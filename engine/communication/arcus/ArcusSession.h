@@ -63,6 +63,9 @@ class ArcusSession {
     /// is not reading). Throws CuraEnded or ProtocolError. Callable from any thread.
     void send(const google::protobuf::Message& message);
 
+    /// Throws CuraEnded or ProtocolError when the talk has ended (a cheap check for long work).
+    void checkOpen();
+
     /// After the last message: the close request, then waits at most `timeout` for Cura's answer.
     void close(std::chrono::milliseconds timeout);
 

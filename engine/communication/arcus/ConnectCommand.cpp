@@ -20,14 +20,14 @@ namespace {
 using namespace std::chrono_literals;
 
 /// The pipeline's stage reports → one monotonic 0..1 amount for Cura's progress bar. As CuraEngine's
-/// stages fill it: Slicing is its slicing, Toolpaths its parts, inset/skin and support, GCode its
-/// export, Done its finish.
+/// stages fill it: Slicing (0–0.3) is its slicing, Toolpaths (0.3–0.8, by the meshes' layers done)
+/// its parts, inset/skin and support, GCode its export, Done its finish.
 double overallProgress(ProgressStage stage, double fraction) {
     switch (stage) {
         case ProgressStage::Slicing:
             return 0.3 * fraction;
         case ProgressStage::Toolpaths:
-            return 0.3;
+            return 0.3 + 0.5 * fraction;
         case ProgressStage::GCode:
             return 0.8;
         case ProgressStage::Done:
@@ -40,6 +40,7 @@ class ProgressReporter {
   public:
     explicit ProgressReporter(ArcusSession& session) : session_(session) {}
     void operator()(ProgressStage stage, double fraction) {
+        session_.checkOpen();  // every report is a point where the slice stops once Cura has gone
         const double amount = std::max(sent_, overallProgress(stage, fraction));
         if (amount - sent_ < 0.001 && !(amount == 1.0 && sent_ < 1.0))
             return;

@@ -45,7 +45,7 @@ std::unique_ptr<Dual> dual() {
     d->b = test::prismStack(10);
     test::fill(d->a, 0, 10, {test::square(50'000, 50'000, 10'000)});
     test::fill(d->b, 0, 10, {test::square(70'000, 50'000, 10'000)});
-    ToolpathInput in{&d->machine.global, &d->machine.extruders, d->a.heights, {}};
+    ToolpathInput in{&d->machine.global, &d->machine.extruders, d->a.heights, {}, {}};
     in.meshes.push_back({&d->meshes[0], "a", &d->a.layers, std::nullopt, {}});
     in.meshes.push_back({&d->meshes[1], "b", &d->b.layers, std::nullopt, {}});
     d->toolpaths = generateGroupToolpaths(in, 2);

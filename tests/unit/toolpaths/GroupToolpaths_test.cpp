@@ -35,7 +35,7 @@ Group twoMeshes(const SettingValues& user) {
     g.b = test::prismStack(30);
     test::fill(g.a, 0, 30, {square(50'000, 50'000, 10'000)});
     test::fill(g.b, 0, 30, {square(70'000, 50'000, 10'000)});
-    ToolpathInput in{&g.machine.global, &g.machine.extruders, g.a.heights, {}};
+    ToolpathInput in{&g.machine.global, &g.machine.extruders, g.a.heights, {}, {}};
     in.meshes.push_back({&g.meshes[0], "a", &g.a.layers, std::nullopt, {}});
     in.meshes.push_back({&g.meshes[1], "b", &g.b.layers, std::nullopt, {}});
     g.paths = generateGroupToolpaths(in, 2);

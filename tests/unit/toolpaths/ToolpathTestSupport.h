@@ -90,7 +90,8 @@ inline GroupToolpaths oneMeshToolpaths(const ResolvedMachine& machine, const Sta
     ToolpathInput in{&machine.global,
                      &machine.extruders,
                      stack.heights,
-                     {{&machine.global, name, &stack.layers, std::nullopt, {}}}};
+                     {{&machine.global, name, &stack.layers, std::nullopt, {}}},
+                     {}};
     return generateGroupToolpaths(in, 2);
 }
 
