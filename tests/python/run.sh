@@ -15,4 +15,5 @@ export MIXENGINE_CORPUS=${MIXENGINE_CORPUS:-$HOME/.cache/mixengine-corpus}
 "$HERE/../corpus/fetch.sh" "$MIXENGINE_CORPUS"
 export MIXENGINE_BIN=$BUILD/mixengine
 cd "$REPO"
-exec "$PY" -m pytest -q -p no:cacheprovider tests/python "$@"
+# MIXENGINE_PYTESTS: which tests (default: all of tests/python), e.g. tests/sanitize/run.sh runs the socket ones.
+exec "$PY" -m pytest -q -p no:cacheprovider ${MIXENGINE_PYTESTS:-tests/python} "$@"

@@ -66,8 +66,9 @@ bool ArcusSession::readExact(char* buffer, std::size_t size) {
         const IoResult result = stream_.readSome(buffer + done, size - done, kReadWait, got);
         if (stopping_)
             return false;
-        if (result == IoResult::Closed) {
+        if (result == IoResult::Closed) {  // closed or reset without a close request: the talk is over
             markEnded(false);
+            stream_.shutdownBoth();  // a writer waiting for room wakes up
             return false;
         }
         done += got;

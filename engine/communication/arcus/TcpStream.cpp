@@ -22,6 +22,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// tcp_info::tcpi_state values (Linux's include/net/tcp_states.h; <linux/tcp.h> does not name them).
+constexpr unsigned kTcpEstablished = 1;
+constexpr unsigned kTcpCloseWait = 8;
+
 int remainingMs(Clock::time_point deadline) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     return left > 0 ? static_cast<int>(left) : 0;
@@ -82,6 +86,8 @@ bool atFrameBoundary(int fd) {
     socklen_t length = sizeof info;
     const bool has_window = ::getsockopt(fd, IPPROTO_TCP, TCP_INFO, &info, &length) == 0 &&
                             length >= offsetof(tcp_info, tcpi_snd_wnd) + sizeof info.tcpi_snd_wnd;
+    if (has_window && info.tcpi_state != kTcpEstablished && info.tcpi_state != kTcpCloseWait)
+        return true;  // the connection is going or gone: the write tells the caller
     if (!has_window)
         return queued == 0;
     const long long room = static_cast<long long>(info.tcpi_snd_wnd) - queued;
