@@ -16,13 +16,14 @@ configure() { # DIR SANITIZERS [extra cmake args]
   local dir=$1 sanitizers=$2
   shift 2
   cmake -S "$REPO" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMIXENGINE_SANITIZE="$sanitizers" "$@" \
-    >"$dir.cmake.log" 2>&1 || { cat "$dir.cmake.log" >&2; exit 1; }
+    >"$dir/configure.log" 2>&1 || { cat "$dir/configure.log" >&2; exit 1; }
 }
 
 echo "sanitize: ThreadSanitizer build of the socket tests"
 mkdir -p "$ROOT/build-tsan"
 configure "$ROOT/build-tsan" thread
-cmake --build "$ROOT/build-tsan" -j "$JOBS" --target mixengine_socket_tests >/dev/null
+cmake --build "$ROOT/build-tsan" -j "$JOBS" --target mixengine_socket_tests >"$ROOT/build-tsan/build.log" 2>&1 ||
+  { grep -E "error" -A3 "$ROOT/build-tsan/build.log" | head -40 >&2; exit 1; }
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" \
   "$ROOT/build-tsan/tests/mixengine_socket_tests" --gtest_repeat=20 --gtest_brief=1 \
   >"$ROOT/build-tsan/socket_tests.log" 2>&1 || { tail -60 "$ROOT/build-tsan/socket_tests.log" >&2; exit 1; }
@@ -30,8 +31,11 @@ echo "sanitize: ThreadSanitizer: socket tests passed 20 runs in a row, no report
 
 echo "sanitize: AddressSanitizer + UndefinedBehaviorSanitizer build of the engine"
 mkdir -p "$ROOT/build-asan"
-configure "$ROOT/build-asan" address,undefined -DMIXENGINE_TESTS=OFF
-cmake --build "$ROOT/build-asan" -j "$JOBS" --target mixengine >/dev/null
+# gcc 12 warns falsely inside libstdc++ (std::regex, maybe-uninitialized) under ASan: warnings stay
+# warnings here; the main build keeps -Werror.
+configure "$ROOT/build-asan" address,undefined -DMIXENGINE_TESTS=OFF -DMIXENGINE_WERROR=OFF
+cmake --build "$ROOT/build-asan" -j "$JOBS" --target mixengine >"$ROOT/build-asan/build.log" 2>&1 ||
+  { grep -E "error" -A3 "$ROOT/build-asan/build.log" | head -40 >&2; exit 1; }
 export ASAN_OPTIONS="detect_leaks=1:exitcode=86:abort_on_error=0"
 export LSAN_OPTIONS="suppressions=$REPO/tests/fuzz/lsan.supp"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
