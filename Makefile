@@ -1,13 +1,14 @@
 # MixEngine — the two set-up commands of the README, plus helpers.
 #   make demo   install, build, slice a generated 20 mm cube -> out/demo.gcode
 #   make test   install, build, run every test
+#   make soak   build, then the socket soak (tests/bench/soak.py)
 BUILD ?= build
 JOBS ?= 2
 
 FUZZ_SECONDS ?= 30
 FUZZ_TEST_SECONDS ?= 10
 
-.PHONY: install build demo test unit pytests format bench clean fuzz memory plugin plugin-install
+.PHONY: install build demo test unit pytests format bench soak clean fuzz memory plugin plugin-install
 
 install:
 	./install.sh
@@ -26,9 +27,12 @@ unit: build
 pytests: build
 	tests/python/run.sh $(BUILD)
 
-# the short fuzz run (tests/fuzz, ~1 min on a fresh clone with 2 cores) is part of the test flow
+# the short fuzz run (tests/fuzz, ~1 min on a fresh clone with 2 cores) and the sanitizer builds of the socket code
+# (tests/sanitize/run.sh: ThreadSanitizer socket unit tests, an ASan+UBSan engine under the socket pytests) are part
+# of the test flow
 test: unit pytests
 	tests/fuzz/run.sh $(FUZZ_TEST_SECONDS)
+	tests/sanitize/run.sh
 
 format:
 	find engine tests -name '*.cpp' -o -name '*.h' | xargs clang-format -i
@@ -36,6 +40,11 @@ format:
 bench: build
 	tests/bench/run.sh $(BUILD)
 	tests/bench/quality.sh $(BUILD)
+
+# the socket soak of issue 29 (tests/bench/soak.py): 520 slices through the real libArcus, byte for byte against
+# the command line, and 120 early closes (SOAK_ARGS, e.g. --quick or --slices 2000 --seed 7)
+soak: build
+	tests/bench/soak.sh $(BUILD) $(SOAK_ARGS)
 
 # libFuzzer targets (clang, ASan + UBSan, own build dir build-fuzz), FUZZ_SECONDS per target
 fuzz: install
@@ -53,4 +62,4 @@ plugin-install: plugin
 	python3 plugin/install.py $$(ls -t $(BUILD)/MixEngine-*.curapackage | head -1)
 
 clean:
-	rm -rf $(BUILD) out
+	rm -rf $(BUILD) out build-asan build-tsan
