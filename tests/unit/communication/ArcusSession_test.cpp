@@ -9,14 +9,13 @@
 #include <string>
 #include <thread>
 
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
-#include <unistd.h>
 
 #include "Cura.pb.h"
 #include "communication/arcus/ArcusSession.h"
 #include "communication/arcus/WireFormat.h"
+#include "unit/communication/LoopbackPeer.h"
 
 namespace mixengine {
 namespace {
@@ -24,31 +23,9 @@ namespace {
 using namespace std::chrono_literals;
 
 /// Cura's side: listens on a free port, accepts the engine, reads and writes raw Arcus bytes.
-class Peer {
+class Peer : public unit::LoopbackPeer {
   public:
-    Peer() {
-        listener_ = ::socket(AF_INET, SOCK_STREAM, 0);
-        sockaddr_in address{};
-        address.sin_family = AF_INET;
-        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        ::bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address);
-        ::listen(listener_, 1);
-        socklen_t length = sizeof address;
-        ::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
-        port_ = ntohs(address.sin_port);
-    }
-    ~Peer() {
-        closeConnection();
-        ::close(listener_);
-    }
-    int port() const { return port_; }
-    void accept() { connection_ = ::accept(listener_, nullptr, nullptr); }
-    void closeConnection() {
-        if (connection_ >= 0)
-            ::close(connection_);
-        connection_ = -1;
-    }
-    void write(const std::string& bytes) { ::send(connection_, bytes.data(), bytes.size(), MSG_NOSIGNAL); }
+    void write(const std::string& bytes) { ::send(connection(), bytes.data(), bytes.size(), MSG_NOSIGNAL); }
     void writeWord(std::uint32_t word) {
         const auto bytes = arcusWord(word);
         write({reinterpret_cast<const char*>(bytes.data()), bytes.size()});
@@ -64,10 +41,10 @@ class Peer {
         std::string bytes(size, '\0');
         std::size_t done = 0;
         while (done < size) {
-            pollfd p{connection_, POLLIN, 0};
+            pollfd p{connection(), POLLIN, 0};
             if (::poll(&p, 1, 10'000) != 1)
                 break;
-            const ssize_t got = ::recv(connection_, bytes.data() + done, size - done, 0);
+            const ssize_t got = ::recv(connection(), bytes.data() + done, size - done, 0);
             if (got <= 0)
                 break;
             done += static_cast<std::size_t>(got);
@@ -80,11 +57,6 @@ class Peer {
         return bytes.size() == 4 ? arcusReadWord(reinterpret_cast<const unsigned char*>(bytes.data()))
                                  : 0xFFFFFFFFu;
     }
-
-  private:
-    int listener_ = -1;
-    int connection_ = -1;
-    int port_ = 0;
 };
 
 struct Connected {

@@ -15,13 +15,12 @@
 #include <thread>
 #include <vector>
 
-#include <netinet/in.h>
 #include <poll.h>
 #include <sys/socket.h>
-#include <unistd.h>
 
 #include "communication/arcus/TcpStream.h"
 #include "communication/arcus/WireFormat.h"
+#include "unit/communication/LoopbackPeer.h"
 
 namespace mixengine {
 namespace {
@@ -51,29 +50,10 @@ TEST(WireFormat, WordsAreClassifiedAsLibArcusReadsThem) {
     EXPECT_EQ(classifyArcusWord(0xDEADBEEFu), ArcusWordKind::Garbage);
 }
 
-/// A listening socket on 127.0.0.1 with a small receive buffer (inherited by the accepted socket).
-class SlowPeer {
+/// A reader as slow as Cura's can be: a 4 KiB receive buffer, reading as libArcus reads.
+class SlowPeer : public unit::LoopbackPeer {
   public:
-    SlowPeer() {
-        listener_ = ::socket(AF_INET, SOCK_STREAM, 0);
-        const int small = 4096;
-        ::setsockopt(listener_, SOL_SOCKET, SO_RCVBUF, &small, sizeof small);
-        sockaddr_in address{};
-        address.sin_family = AF_INET;
-        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        ::bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof address);
-        ::listen(listener_, 1);
-        socklen_t length = sizeof address;
-        ::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
-        port_ = ntohs(address.sin_port);
-    }
-    ~SlowPeer() {
-        if (connection_ >= 0)
-            ::close(connection_);
-        ::close(listener_);
-    }
-    int port() const { return port_; }
-    void accept() { connection_ = ::accept(listener_, nullptr, nullptr); }
+    SlowPeer() : LoopbackPeer(4096) {}
 
     /// Reads `frames` frames as libArcus does; returns how many header words came short.
     int readLikeLibArcus(int frames, std::vector<std::string>& bodies, std::mt19937& random) {
@@ -104,16 +84,19 @@ class SlowPeer {
 
   private:
     ssize_t recvWhenReadable(void* buffer, std::size_t size) {
-        pollfd p{connection_, POLLIN, 0};
+        pollfd p{connection(), POLLIN, 0};
         if (::poll(&p, 1, 10'000) != 1)
             return -1;
-        return ::recv(connection_, buffer, size, 0);  // one call, as libArcus
+        return ::recv(connection(), buffer, size, 0);  // one call, as libArcus
     }
-
-    int listener_ = -1;
-    int connection_ = -1;
-    int port_ = 0;
 };
+
+/// `stream` connected to `peer`.
+void connectTo(SlowPeer& peer, TcpStream& stream) {
+    std::thread acceptor([&] { peer.accept(); });
+    ASSERT_EQ(TcpStream::connectTo("127.0.0.1", peer.port(), std::chrono::seconds(5), stream), "");
+    acceptor.join();
+}
 
 std::string frameBody(int n, std::mt19937& random) {
     std::string body(random() % 9000, '\0');
@@ -124,10 +107,8 @@ std::string frameBody(int n, std::mt19937& random) {
 
 TEST(TcpStream, EveryHeaderWordReachesASlowLibArcusReaderWhole) {
     SlowPeer peer;
-    std::thread acceptor([&] { peer.accept(); });
     TcpStream stream;
-    ASSERT_EQ(TcpStream::connectTo("127.0.0.1", peer.port(), std::chrono::seconds(5), stream), "");
-    acceptor.join();
+    connectTo(peer, stream);
 
     constexpr int kFrames = 600;
     std::mt19937 write_random(29), read_random(2926);
@@ -162,10 +143,8 @@ TEST(TcpStream, ConnectingWhereNobodyListensSaysWhy) {
 
 TEST(TcpStream, ShutdownWakesAWriterBlockedOnAPeerThatDoesNotRead) {
     SlowPeer peer;
-    std::thread acceptor([&] { peer.accept(); });
     TcpStream stream;
-    ASSERT_EQ(TcpStream::connectTo("127.0.0.1", peer.port(), std::chrono::seconds(5), stream), "");
-    acceptor.join();
+    connectTo(peer, stream);
     std::atomic<bool> blocked_writer_returned{false};
     IoResult last = IoResult::Ok;
     std::thread writer([&] {
