@@ -89,6 +89,13 @@ TEST(FormulaBounds, StringSearchAndIndexingStayLinear) {
               "['a', '\xc3\xa9', 'b']");
 }
 
+TEST(FormulaBounds, AProblemQuotingAHugeValueIsShortened) {
+    const std::string problem = problemOf("int('1' * 100000)");
+    EXPECT_EQ(problem.size(), 300U);
+    EXPECT_EQ(problem.rfind("integer overflow in int(): 111", 0), 0U) << problem;
+    EXPECT_EQ(problem.substr(297), "...");
+}
+
 TEST(FormulaBounds, ParsingNestedComprehensionsIsLinear) {
     // Each level was parsed twice (once to find the element's end): 2^60 parses of the innermost.
     std::string formula = "0";
