@@ -1,4 +1,4 @@
-// The bounds of one formula evaluation (settings/formula/Budget.h): at most 2,000,000 elements (list
+// The bounds of one formula evaluation (settings/formula/Budget.h): at most 1,000,000 elements (list
 // items and string characters, copies included) and 1,000,000 steps; sizes are checked before the
 // memory is allocated. Whatever the formula, it ends quickly with a value or a FormulaError.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 namespace mixengine::formula::test {
 namespace {
 
-const std::string kTooLarge = "too large (more than 2000000 elements: list items and string characters)";
+const std::string kTooLarge = "too large (more than 1000000 elements: list items and string characters)";
 const std::string kTooMuchWork = "too much work (more than 1000000 evaluation steps)";
 
 // The problem of the FormulaError that evaluating `formula` throws; fails the test on no error or on
@@ -30,24 +30,24 @@ std::string problemOf(const std::string& formula, const Environment& env = MapEn
 }
 
 TEST(FormulaBounds, RepetitionCountsNestedItemsBeforeAllocating) {
-    // 1000 copies of a 1000-item list and of the outer item: 1,001,000 elements, allowed.
-    EXPECT_EQ(repr("len([[0] * 1000] * 1000)"), "1000");
-    EXPECT_EQ(repr("sum(map(len, [[0] * 500] * 1000))"), "500000");
-    // 2000 copies: 2,002,000 elements (each copy of the inner list is a copy of its 1000 items).
-    EXPECT_EQ(problemOf("[[0] * 1000] * 2000"), kTooLarge);
-    EXPECT_EQ(problemOf("[0] * 2000001"), kTooLarge);
-    EXPECT_EQ(problemOf("'ab' * 1000001"), kTooLarge);
+    // 1000 copies of a 500-item list and of the outer item: 501,000 elements, allowed.
+    EXPECT_EQ(repr("len([[0] * 500] * 1000)"), "1000");
+    EXPECT_EQ(repr("sum(map(len, [[0] * 250] * 1000))"), "250000");
+    // 2000 copies: 1,002,000 elements (each copy of the inner list is a copy of its 500 items).
+    EXPECT_EQ(problemOf("[[0] * 500] * 2000"), kTooLarge);
+    EXPECT_EQ(problemOf("[0] * 1000001"), kTooLarge);
+    EXPECT_EQ(problemOf("'ab' * 500001"), kTooLarge);
     EXPECT_EQ(problemOf("[0] * 10 ** 18"), kTooLarge);  // no overflow of size * count
-    EXPECT_EQ(problemOf("[[0] * 10 ** 6] * 10 ** 18"), kTooLarge);
-    EXPECT_EQ(repr("len('ab' * 500000)"), "1000000");
+    EXPECT_EQ(problemOf("[[0] * 10 ** 5] * 10 ** 18"), kTooLarge);
+    EXPECT_EQ(repr("len('ab' * 250000)"), "500000");
     EXPECT_EQ(repr("[0] * -5"), "[]");
     EXPECT_EQ(repr("[] * 10 ** 18"), "[]");
 }
 
 TEST(FormulaBounds, ElementsAddUpOverTheWholeEvaluation) {
     // Each part is allowed alone; together they go over.
-    EXPECT_EQ(repr("len([0] * 1500000)"), "1500000");
-    EXPECT_EQ(problemOf("len([0] * 1500000) + len([0] * 1500000)"), kTooLarge);
+    EXPECT_EQ(repr("len([0] * 750000)"), "750000");
+    EXPECT_EQ(problemOf("len([0] * 750000) + len([0] * 750000)"), kTooLarge);
     // Copies count: a variable holding 10,000 items, copied 300 times.
     EXPECT_EQ(problemOf("[xs for xs in [[0] * 10000] for i in 'x' * 300]"), kTooLarge);
     // Concatenation: sum() of lists copies the growing total each time (quadratic).
@@ -57,8 +57,8 @@ TEST(FormulaBounds, ElementsAddUpOverTheWholeEvaluation) {
 }
 
 TEST(FormulaBounds, StepsBoundNestedComprehensionsThatBuildNothing) {
-    EXPECT_EQ(problemOf("[0 for a in 'x' * 2000 for b in 'x' * 2000 if 0]"), kTooMuchWork);
-    EXPECT_EQ(problemOf("any(1 for a in [0] * 100 for b in [0] * 100 for c in [0] * 100 if a)"),
+    EXPECT_EQ(problemOf("[0 for a in [0] * 2000 for b in [0] * 2000 if a + b + a + b]"), kTooMuchWork);
+    EXPECT_EQ(problemOf("any(1 for a in [0] * 100 for b in [0] * 100 for c in [0] * 100 if a + b + c)"),
               kTooMuchWork);
     EXPECT_EQ(problemOf("sorted([1] * 100000)"), kTooMuchWork);  // n log n comparisons
     EXPECT_EQ(repr("len([0 for a in 'x' * 300 for b in 'x' * 300 if 0])"), "0");
@@ -67,16 +67,16 @@ TEST(FormulaBounds, StepsBoundNestedComprehensionsThatBuildNothing) {
 
 TEST(FormulaBounds, EnvironmentValuesCountWhenCopied) {
     MapEnvironment env;
-    env.settings["big"] = Value(List(100000, Value(std::int64_t{1})));
+    env.settings["big"] = Value(List(50000, Value(std::int64_t{1})));
     EXPECT_EQ(toPythonRepr(eval("len([len(big) for i in 'x' * 10])", env)), "10");
     EXPECT_EQ(problemOf("[big for i in 'x' * 30]", env), kTooLarge);
 }
 
 TEST(FormulaBounds, StringSearchAndIndexingStayLinear) {
-    // std::string::find would compare ~10^11 characters here; the search is linear.
-    const std::string needle = "'a' * 300000 + 'b'";
-    EXPECT_EQ(repr("(" + needle + ") in 'a' * 600000"), "False");
-    EXPECT_EQ(repr("(" + needle + ") in 'a' * 600000 + 'b'"), "True");
+    // std::string::find would compare ~2 * 10^10 characters here; the search is linear.
+    const std::string needle = "'a' * 150000 + 'b'";
+    EXPECT_EQ(repr("(" + needle + ") in 'a' * 300000"), "False");
+    EXPECT_EQ(repr("(" + needle + ") in 'a' * 300000 + 'b'"), "True");
     EXPECT_EQ(repr("'abcabcabd' + 'x' * 20 in 'abcabcabcabd' + 'x' * 20 + 'y'"), "True");
     EXPECT_EQ(repr("'abababababababababac' in 'ab' * 50 + 'ac'"), "True");
     EXPECT_EQ(repr("'abababababababababac' in 'ab' * 50 + 'ad'"), "False");
