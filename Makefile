@@ -5,7 +5,7 @@
 BUILD ?= build
 JOBS ?= 2
 
-FUZZ_SECONDS ?= 30
+FUZZ_SECONDS ?= 600
 FUZZ_TEST_SECONDS ?= 10
 
 .PHONY: install build demo test unit pytests format bench soak clean fuzz memory plugin plugin-install
@@ -46,7 +46,8 @@ bench: build
 soak: build
 	tests/bench/soak.sh $(BUILD) $(SOAK_ARGS)
 
-# libFuzzer targets (clang, ASan + UBSan, own build dir build-fuzz), FUZZ_SECONDS per target
+# libFuzzer targets (clang, ASan + UBSan, own build dir build-fuzz), FUZZ_SECONDS per target (10 min each,
+# two at a time: about 30 min for the five targets on 2 cores)
 fuzz: install
 	tests/fuzz/run.sh $(FUZZ_SECONDS)
 

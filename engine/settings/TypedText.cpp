@@ -20,12 +20,21 @@ class NoNames : public formula::Environment {
     }
 };
 
+// A list value such as "[[0, 0], [1, 0], [0, 1]]", read as the Python expression Cura writes.
+// Expressions (`[[0, 0]] * 3`) are evaluated too, within the formula evaluator's bounds; their
+// errors (too large, too much work, ...) name the setting and the problem.
 formula::Value literal(std::string_view key, std::string_view text) {
+    std::optional<formula::Expression> expression;
     try {
-        return formula::evaluate(formula::parse(text), NoNames());
+        expression = formula::parse(text);
     } catch (const InputError&) {
         throw InputError("setting '" + std::string(key) + "': value '" + std::string(text) +
                          "' is not a Python literal");
+    }
+    try {
+        return formula::evaluate(*expression, NoNames());
+    } catch (const formula::FormulaError& e) {
+        throw InputError("setting '" + std::string(key) + "': " + e.what());
     }
 }
 

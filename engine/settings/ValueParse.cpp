@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <string>
 
 #include "common/Error.h"
 
@@ -31,8 +32,12 @@ bool tryReal(std::string_view text, double& out) {
     return ec == std::errc() && end == text.data() + text.size() && std::isfinite(out);
 }
 
+// Reads nested lists of numbers. The nesting is bounded (settings need 3 levels at most), so that
+// no input can exhaust the stack; the rest is linear in the text's length.
 class TreeParser {
   public:
+    static constexpr int kMaxDepth = 32;
+
     TreeParser(std::string_view key, std::string_view text) : key_(key), text_(text) {}
 
     NumberTree parseAll() {
@@ -50,8 +55,13 @@ class TreeParser {
     }
     NumberTree parseNode() {
         skipSpace();
-        if (pos_ < text_.size() && (text_[pos_] == '[' || text_[pos_] == '('))
-            return parseList();
+        if (pos_ < text_.size() && (text_[pos_] == '[' || text_[pos_] == '(')) {
+            if (++depth_ > kMaxDepth)
+                fail(key_, text_, "a list of numbers nested at most " + std::to_string(kMaxDepth) + " deep");
+            NumberTree list = parseList();
+            --depth_;
+            return list;
+        }
         std::size_t start = pos_;
         while (pos_ < text_.size() && text_[pos_] != ',' && text_[pos_] != ']' && text_[pos_] != ')')
             ++pos_;
@@ -93,6 +103,7 @@ class TreeParser {
     std::string_view key_;
     std::string_view text_;
     std::size_t pos_ = 0;
+    int depth_ = 0;
 };
 
 Path pathFromTree(std::string_view key, std::string_view text, const NumberTree& polygon) {

@@ -5,7 +5,8 @@
 
 Standard library only (runs with the system python3). Targets: stl, obj, threemf, settings, formula.
 The formula seeds are the value / minimum_value / maximum_value / enabled formulas of Cura's
-fdmprinter.def.json when it is installed (Debian package cura), plus a few hand-written ones.
+fdmprinter.def.json when it is installed (Debian package cura), plus a few hand-written ones. The
+settings and formula targets also get REGRESSIONS, the inputs that once took unbounded memory or time.
 """
 import io
 import json
@@ -101,6 +102,16 @@ def threemf_seeds():
     return {"cube.3mf": three_mf(plain), "components.3mf": three_mf(components)}
 
 
+# Inputs that once took unbounded memory or time (issue 29 item 4; tests/fuzz/README.md), kept as seeds so
+# that every run starts from them. Formula values are deep copies: a repeated list repeats its items' items.
+REPEATED_LIST = "[[0,0,[0,0,0,]]*120*1*1,0,[0,0,0,]]*120*1555"  # -s machine_disallowed_areas=...: 18 GB
+NESTED_REPETITION = "[[-20, 10]*999999, [10, 10], [0, -5]]*999999"  # settings_fuzz: out of memory
+STRING_COMPREHENSIONS = "[0 for a in infill_pattern * 5000 for b in infill_pattern * 5000 if a + b == '']"
+NESTED_COMPREHENSIONS = "[" * 60 + "0" + "".join(f" for a{i} in [1]]" for i in range(60))  # 2^60 parses
+LONG_SEARCH = "('a' * 300000 + 'b') in 'a' * 600000"  # std::string::find: ~10^11 comparisons
+REGRESSIONS = [REPEATED_LIST, NESTED_REPETITION, STRING_COMPREHENSIONS, NESTED_COMPREHENSIONS, LONG_SEARCH]
+
+
 def settings_seeds():
     texts = {0: ["True", "false", "yes", "0"], 1: ["0.2", "-1e3", "+5"], 2: ["3", "3.0", "-7"],
              3: ["0.4", "1e9"], 4: ["50", "12.5"], 5: ["[1, 2.5, -3]", "[]"], 6: ["[[-20, 10], [10, 10], [0, -5]]"],
@@ -111,6 +122,9 @@ def settings_seeds():
         for i, text in enumerate(values):
             for extra in ((0, 10, 20, 50, 70, 90) if selector == 9 else (0,)):
                 seeds[f"s{selector + extra}_{i}"] = bytes([selector + extra]) + text.encode()
+    for i, text in enumerate(REGRESSIONS):  # as "polygon" (selector 59) and "polygons" (69) values
+        for selector in (59, 69):
+            seeds[f"regression{i}_s{selector}"] = bytes([selector]) + text.replace("infill_pattern", "'grid'").encode()
     return seeds
 
 
@@ -134,7 +148,9 @@ def formula_seeds():
             walk(child.get("children", {}))
     walk(definitions.get("settings", {}))
     unique = list(dict.fromkeys(formulas + found))
-    return {f"f{i:04d}": text.encode() for i, text in enumerate(unique)}
+    seeds = {f"f{i:04d}": text.encode() for i, text in enumerate(unique)}
+    seeds.update({f"regression{i}": text.encode() for i, text in enumerate(REGRESSIONS)})
+    return seeds
 
 
 def main():

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -16,6 +17,7 @@ namespace mixengine::formula {
 
 namespace {
 
+using detail::Budget;
 using detail::EvalProblem;
 
 constexpr int kVariadic = -1;
@@ -27,7 +29,7 @@ struct BuiltinInfo {
     std::string_view name;
     int minArgs;
     int maxArgs;
-    Value (*call)(const Args& args);  ///< nullptr for the math.* functions: callMathBuiltin
+    Value (*call)(const Args& args, Budget& budget);  ///< nullptr for math.*: callMathBuiltin
 };
 
 void checkArgCount(const BuiltinInfo& b, std::size_t given) {
@@ -80,37 +82,41 @@ Value toInt(const Value& v) {
 
 Value length(const Value& v) {
     if (v.is<std::string>())
-        return utf8Characters(v.as<std::string>()).size();
+        return characterCount(v.as<std::string>());
     if (v.is<List>())
         return v.as<List>().size();
     throw EvalProblem("object of type '" + std::string(typeName(v)) + "' has no len()");
 }
 
-Value mapValues(const std::vector<Value>& args) {
+Value mapValues(const std::vector<Value>& args, Budget& budget) {
     if (!args[0].is<FunctionRef>()) {
         throw EvalProblem("map(): '" + std::string(typeName(args[0])) + "' object is not callable");
     }
     std::vector<List> iterables;
     std::size_t shortest = SIZE_MAX;
     for (std::size_t i = 1; i < args.size(); ++i) {
-        iterables.push_back(iterate(args[i], "map()"));
+        iterables.push_back(iterate(args[i], "map()", budget));
         shortest = std::min(shortest, iterables.back().size());
     }
     List out;
     for (std::size_t k = 0; k < shortest; ++k) {
+        budget.step();
         std::vector<Value> callArgs;
         for (const List& it : iterables)
             callArgs.push_back(it[k]);
-        out.push_back(callBuiltin(args[0].as<FunctionRef>().id, callArgs));
+        out.push_back(callBuiltin(args[0].as<FunctionRef>().id, callArgs, budget));
+        budget.take(1);
     }
     return out;
 }
 
-Value extreme(const std::vector<Value>& args, bool wantMax) {
+Value extreme(const std::vector<Value>& args, bool wantMax, Budget& budget) {
     const char* name = wantMax ? "max" : "min";
-    const List items = args.size() == 1 ? iterate(args[0], std::string(name) + "()") : List(args);
+    const List iterated = args.size() == 1 ? iterate(args[0], std::string(name) + "()", budget) : List();
+    const List& items = args.size() == 1 ? iterated : args;
     if (items.empty())
         throw EvalProblem(std::string(name) + "() arg is an empty sequence");
+    budget.step(items.size());
     const Value* best = &items[0];
     for (std::size_t i = 1; i < items.size(); ++i) {
         const auto order = pythonOrder(items[i], *best, wantMax ? ">" : "<");
@@ -136,49 +142,68 @@ Value roundValue(const std::vector<Value>& args) {
     return roundIntDigits(asInt(x), ndigits);
 }
 
-Value sortedValues(const Value& iterable) {
-    List items = iterate(iterable, "sorted()");
+Value sortedValues(const Value& iterable, Budget& budget) {
+    List items = iterate(iterable, "sorted()", budget);
+    budget.step(items.size() * static_cast<std::size_t>(std::bit_width(items.size())));  // n log n
     std::stable_sort(items.begin(), items.end(),
                      [](const Value& a, const Value& b) { return pythonOrder(a, b, "<") < 0; });
     return items;
 }
 
-Value sumValues(const std::vector<Value>& args) {
+Value sumValues(const std::vector<Value>& args, Budget& budget) {
     Value total = args.size() > 1 ? args[1] : Value(0);
     if (total.is<std::string>())
         throw EvalProblem("sum() can't sum strings [use ''.join(seq) instead]");
-    for (const Value& item : iterate(args[0], "sum()"))
-        total = binaryOp(detail::BinaryOp::Add, total, item);
+    budget.takeCopy(total);
+    for (const Value& item : iterate(args[0], "sum()", budget)) {
+        budget.step();
+        total = binaryOp(detail::BinaryOp::Add, total, item, budget);
+    }
     return total;
 }
 
-bool anyAll(const Value& iterable, bool wantAll) {
-    for (const Value& item : iterate(iterable, wantAll ? "all()" : "any()")) {
+bool anyAll(const Value& iterable, bool wantAll, Budget& budget) {
+    for (const Value& item : iterate(iterable, wantAll ? "all()" : "any()", budget)) {
+        budget.step();
         if (truthy(item) != wantAll)
             return !wantAll;
     }
     return wantAll;
 }
 
+// str(x): the text is counted once made (its length follows from x, which was counted).
+Value strValue(const Args& args, Budget& budget) {
+    if (args.empty())
+        return Value("");
+    std::string text = toPythonStr(args[0]);
+    budget.take(text.size());
+    return Value(std::move(text));
+}
+
 /// Every built-in in enum order: its name, argument count and implementation.
 constexpr std::array<BuiltinInfo, 36> kBuiltins = {{
-    {Builtin::Abs, "abs", 1, 1, [](const Args& a) -> Value { return absValue(a[0]); }},
-    {Builtin::All, "all", 1, 1, [](const Args& a) -> Value { return anyAll(a[0], true); }},
-    {Builtin::Any, "any", 1, 1, [](const Args& a) -> Value { return anyAll(a[0], false); }},
-    {Builtin::Bool, "bool", 0, 1, [](const Args& a) -> Value { return !a.empty() && truthy(a[0]); }},
+    {Builtin::Abs, "abs", 1, 1, [](const Args& a, Budget&) -> Value { return absValue(a[0]); }},
+    {Builtin::All, "all", 1, 1, [](const Args& a, Budget& b) -> Value { return anyAll(a[0], true, b); }},
+    {Builtin::Any, "any", 1, 1, [](const Args& a, Budget& b) -> Value { return anyAll(a[0], false, b); }},
+    {Builtin::Bool, "bool", 0, 1, [](const Args& a, Budget&) -> Value { return !a.empty() && truthy(a[0]); }},
     {Builtin::Float, "float", 0, 1,
-     [](const Args& a) -> Value { return a.empty() ? Value(0.0) : toFloat(a[0]); }},
-    {Builtin::Int, "int", 0, 1, [](const Args& a) -> Value { return a.empty() ? Value(0) : toInt(a[0]); }},
-    {Builtin::Len, "len", 1, 1, [](const Args& a) -> Value { return length(a[0]); }},
+     [](const Args& a, Budget&) -> Value { return a.empty() ? Value(0.0) : toFloat(a[0]); }},
+    {Builtin::Int, "int", 0, 1,
+     [](const Args& a, Budget&) -> Value { return a.empty() ? Value(0) : toInt(a[0]); }},
+    {Builtin::Len, "len", 1, 1, [](const Args& a, Budget&) -> Value { return length(a[0]); }},
     {Builtin::List, "list", 0, 1,
-     [](const Args& a) -> Value { return a.empty() ? Value(List{}) : Value(iterate(a[0], "list()")); }},
+     [](const Args& a, Budget& b) -> Value {
+         return a.empty() ? Value(List{}) : Value(iterate(a[0], "list()", b));
+     }},
     {Builtin::Map, "map", 2, kVariadic, mapValues},
-    {Builtin::Max, "max", 1, kVariadic, [](const Args& a) -> Value { return extreme(a, true); }},
-    {Builtin::Min, "min", 1, kVariadic, [](const Args& a) -> Value { return extreme(a, false); }},
-    {Builtin::Round, "round", 1, 2, roundValue},
-    {Builtin::Sorted, "sorted", 1, 1, [](const Args& a) -> Value { return sortedValues(a[0]); }},
-    {Builtin::Str, "str", 0, 1,
-     [](const Args& a) -> Value { return a.empty() ? Value("") : Value(toPythonStr(a[0])); }},
+    {Builtin::Max, "max", 1, kVariadic,
+     [](const Args& a, Budget& b) -> Value { return extreme(a, true, b); }},
+    {Builtin::Min, "min", 1, kVariadic,
+     [](const Args& a, Budget& b) -> Value { return extreme(a, false, b); }},
+    {Builtin::Round, "round", 1, 2, [](const Args& a, Budget&) -> Value { return roundValue(a); }},
+    {Builtin::Sorted, "sorted", 1, 1,
+     [](const Args& a, Budget& b) -> Value { return sortedValues(a[0], b); }},
+    {Builtin::Str, "str", 0, 1, strValue},
     {Builtin::Sum, "sum", 1, 2, sumValues},
     {Builtin::MathSqrt, "math.sqrt", 1, 1, nullptr},
     {Builtin::MathCeil, "math.ceil", 1, 1, nullptr},
@@ -247,10 +272,10 @@ std::optional<Value> findMathMember(std::string_view name) {
     return std::nullopt;
 }
 
-Value callBuiltin(Builtin id, const std::vector<Value>& args) {
+Value callBuiltin(Builtin id, const std::vector<Value>& args, Budget& budget) {
     const BuiltinInfo& builtin = info(id);
     checkArgCount(builtin, args.size());
-    return builtin.call ? builtin.call(args) : callMathBuiltin(id, args);
+    return builtin.call ? builtin.call(args, budget) : callMathBuiltin(id, args);
 }
 
 }  // namespace mixengine::formula

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "settings/formula/Budget.h"
 #include "settings/formula/Value.h"
 
 namespace mixengine::formula {
@@ -21,8 +22,9 @@ std::optional<Builtin> findBuiltin(std::string_view name);
 /// The member `math.<name>`: a FunctionRef for functions, a float for constants.
 std::optional<Value> findMathMember(std::string_view name);
 
-/// Calls a built-in. Checks the argument count and types.
-Value callBuiltin(Builtin id, const std::vector<Value>& args);
+/// Calls a built-in. Checks the argument count and types. `budget` counts the steps of the ones
+/// that walk a list or str (sum, min, max, any, all, map, sorted) and the elements they create.
+Value callBuiltin(Builtin id, const std::vector<Value>& args, detail::Budget& budget);
 
 /// Calls a math.* built-in; precondition: id is one of the Math* ids and the argument count was checked.
 Value callMathBuiltin(Builtin id, const std::vector<Value>& args);

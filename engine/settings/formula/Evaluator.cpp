@@ -1,4 +1,6 @@
-// Walks a parsed formula's node pool (Expression.h) and computes its Python value.
+// Walks a parsed formula's node pool (Expression.h) and computes its Python value, within the
+// bounds of one Budget (Budget.h): each node evaluated is a step, each value copied (a constant, a
+// setting's or a comprehension variable's value, a subscript's item) counts its elements.
 #include <algorithm>
 
 #include "settings/formula/Builtins.h"
@@ -20,18 +22,19 @@ class Evaluator {
         : d_(data), env_(env), locals_(data.localCount) {}
 
     Value eval(std::uint32_t index) {
+        budget_.step();
         const Node& n = d_.nodes[index];
         switch (n.kind) {
             case NodeKind::Constant:
-                return d_.constants[n.a];
+                return counted(d_.constants[n.a]);
             case NodeKind::Setting:
-                return lookup(d_.names[n.a]);
+                return counted(lookup(d_.names[n.a]));
             case NodeKind::Local:
-                return locals_[n.a];
+                return counted(locals_[n.a]);
             case NodeKind::Unary:
                 return unaryOp(static_cast<detail::UnaryOp>(n.op), eval(n.a));
             case NodeKind::Binary:
-                return binaryOp(static_cast<detail::BinaryOp>(n.op), eval(n.a), eval(n.b));
+                return binaryOp(static_cast<detail::BinaryOp>(n.op), eval(n.a), eval(n.b), budget_);
             case NodeKind::And:
                 return boolChain(n, false);
             case NodeKind::Or:
@@ -41,15 +44,16 @@ class Evaluator {
             case NodeKind::IfElse:
                 return truthy(eval(n.a)) ? eval(n.b) : eval(n.c);
             case NodeKind::ListDisplay:
+                budget_.take(n.count);
                 return arguments(n);
             case NodeKind::CallBuiltin:
-                return callBuiltin(static_cast<Builtin>(n.op), arguments(n));
+                return callBuiltin(static_cast<Builtin>(n.op), arguments(n), budget_);
             case NodeKind::CallExternal:
-                return callExternal(d_.names[n.a], arguments(n));
+                return counted(callExternal(d_.names[n.a], arguments(n)));
             case NodeKind::CallValue:
                 return callValue(eval(n.a), arguments(n));
             case NodeKind::Subscript:
-                return subscript(eval(n.a), eval(n.b));
+                return counted(subscript(eval(n.a), eval(n.b)));
             case NodeKind::Comprehension: {
                 List out;
                 runClauses(n, 0, out);
@@ -60,6 +64,14 @@ class Evaluator {
     }
 
   private:
+    // A copy of a value made elsewhere (the Environment's, a constant, a variable): its elements
+    // count. (A copy is made before it is counted; its original was counted, or is the
+    // Environment's, so it is not larger than what the budget allowed so far.)
+    Value counted(Value value) {
+        budget_.takeCopy(value);
+        return value;
+    }
+
     Value lookup(const std::string& name) const {
         std::optional<Value> v = env_.lookup(name);
         if (!v)
@@ -74,10 +86,10 @@ class Evaluator {
         return std::move(*v);
     }
 
-    static Value callValue(const Value& callee, const std::vector<Value>& args) {
+    Value callValue(const Value& callee, const std::vector<Value>& args) {
         if (!callee.is<FunctionRef>())
             throw EvalProblem("'" + std::string(typeName(callee)) + "' object is not callable");
-        return callBuiltin(callee.as<FunctionRef>().id, args);
+        return callBuiltin(callee.as<FunctionRef>().id, args, budget_);
     }
 
     std::vector<Value> arguments(const Node& n) {
@@ -113,6 +125,7 @@ class Evaluator {
 
     void runClauses(const Node& n, std::uint32_t clause, List& out) {
         if (clause * 3 >= n.count) {
+            budget_.take(1);
             out.push_back(eval(n.a));
             return;
         }
@@ -122,7 +135,8 @@ class Evaluator {
                 runClauses(n, clause + 1, out);
             return;
         }
-        for (Value& item : iterate(eval(c[2]), "comprehension")) {
+        for (Value& item : iterate(eval(c[2]), "comprehension", budget_)) {
+            budget_.step();
             locals_[c[1]] = std::move(item);
             runClauses(n, clause + 1, out);
         }
@@ -131,6 +145,7 @@ class Evaluator {
     const detail::ExpressionData& d_;
     const Environment& env_;
     std::vector<Value> locals_;
+    detail::Budget budget_;
 };
 
 }  // namespace

@@ -4,8 +4,8 @@
 //   FormulaError — a setting formula (a Python expression from a Cura definition or profile) could not
 //                  be parsed or evaluated: syntax error, unknown name, wrong type, division by zero,
 //                  math domain error, ... It is an InputError: the user's input is at fault.
-//                  what() is one line: `formula '<text>': <problem>`, with the formula's newlines
-//                  escaped and very long formulas shortened.
+//                  what() is one line: `formula '<text>': <problem>`, with newlines escaped and very
+//                  long formulas (120 characters) and problems (300, e.g. quoting a huge value) shortened.
 //
 //   detail::EvalProblem — internal to the formula code: thrown by operators and built-ins, which do
 //                  not know the formula text; evaluate() turns it into a FormulaError.

@@ -1,5 +1,7 @@
 #include "settings/formula/Operators.h"
 
+#include <string_view>
+
 #include "settings/formula/FormulaError.h"
 #include "settings/formula/Numeric.h"
 
@@ -11,9 +13,6 @@ using detail::BinaryOp;
 using detail::CompareOp;
 using detail::EvalProblem;
 using detail::UnaryOp;
-
-// Repetition (`'ab' * n`, `[0] * n`) beyond this many elements or bytes is refused.
-constexpr std::int64_t kMaxRepeatedSize = std::int64_t{1} << 24;
 
 const char* symbolOf(BinaryOp op) {
     switch (op) {
@@ -84,26 +83,28 @@ Value floatArithmetic(BinaryOp op, double a, double b) {
     return Value();
 }
 
+// `seq * times`; its size (with the elements of nested lists: each copy is a deep copy) is taken
+// from the budget before anything is allocated.
 template <typename Sequence>
-Sequence repeat(const Sequence& s, std::int64_t times) {
+Sequence repeat(const Value& seq, std::int64_t times, detail::Budget& budget) {
+    const Sequence& s = seq.as<Sequence>();
     Sequence out;
     if (times <= 0 || s.empty())
         return out;
-    if (times > kMaxRepeatedSize / static_cast<std::int64_t>(s.size())) {
-        throw EvalProblem("repetition result too large (over " + std::to_string(kMaxRepeatedSize) +
-                          " items)");
-    }
+    budget.takeRepeated(static_cast<std::uint64_t>(times), detail::Budget::elementCount(seq));
     out.reserve(s.size() * static_cast<std::size_t>(times));
     for (std::int64_t i = 0; i < times; ++i)
         out.insert(out.end(), s.begin(), s.end());
     return out;
 }
 
-Value sequenceArithmetic(BinaryOp op, const Value& a, const Value& b) {
+Value sequenceArithmetic(BinaryOp op, const Value& a, const Value& b, detail::Budget& budget) {
     if (op == BinaryOp::Add && a.is<std::string>() && b.is<std::string>()) {
+        budget.take(a.as<std::string>().size() + b.as<std::string>().size());
         return a.as<std::string>() + b.as<std::string>();
     }
     if (op == BinaryOp::Add && a.is<List>() && b.is<List>()) {
+        budget.take(detail::Budget::elementCount(a) + detail::Budget::elementCount(b));
         List joined = a.as<List>();
         joined.insert(joined.end(), b.as<List>().begin(), b.as<List>().end());
         return joined;
@@ -112,14 +113,37 @@ Value sequenceArithmetic(BinaryOp op, const Value& a, const Value& b) {
         const Value& seq = isIntLike(b) ? a : b;
         const Value& count = isIntLike(b) ? b : a;
         if (isIntLike(count) && seq.is<std::string>())
-            return repeat(seq.as<std::string>(), asInt(count));
+            return repeat<std::string>(seq, asInt(count), budget);
         if (isIntLike(count) && seq.is<List>())
-            return repeat(seq.as<List>(), asInt(count));
+            return repeat<List>(seq, asInt(count), budget);
     }
     if (op == BinaryOp::Mod && a.is<std::string>()) {
         throw EvalProblem("printf-style string formatting with % is not supported");
     }
     unsupported(op, a, b);
+}
+
+// Whether `pattern` occurs in `text`, in time linear in both lengths (std::string::find can take
+// their product: 'a' * 10**6 + 'b' in 'a' * 2 * 10**6). Knuth-Morris-Pratt for long patterns.
+bool containsText(std::string_view text, std::string_view pattern) {
+    constexpr std::size_t kShortPattern = 16;
+    if (pattern.size() <= kShortPattern)
+        return text.find(pattern) != std::string_view::npos;
+    std::vector<std::size_t> border(pattern.size(), 0);  // longest proper prefix that is a suffix
+    for (std::size_t i = 1, k = 0; i < pattern.size(); ++i) {
+        while (k > 0 && pattern[i] != pattern[k])
+            k = border[k - 1];
+        k += pattern[i] == pattern[k] ? 1 : 0;
+        border[i] = k;
+    }
+    for (std::size_t i = 0, k = 0; i < text.size(); ++i) {
+        while (k > 0 && text[i] != pattern[k])
+            k = border[k - 1];
+        k += text[i] == pattern[k] ? 1 : 0;
+        if (k == pattern.size())
+            return true;
+    }
+    return false;
 }
 
 bool contains(const Value& container, const Value& item) {
@@ -128,7 +152,7 @@ bool contains(const Value& container, const Value& item) {
             throw EvalProblem("'in <string>' requires string as left operand, not " +
                               std::string(typeName(item)));
         }
-        return container.as<std::string>().find(item.as<std::string>()) != std::string::npos;
+        return containsText(container.as<std::string>(), item.as<std::string>());
     }
     if (container.is<List>()) {
         for (const Value& element : container.as<List>()) {
@@ -146,6 +170,14 @@ std::partial_ordering fromStrong(std::strong_ordering o) {
     if (o > 0)
         return std::partial_ordering::greater;
     return std::partial_ordering::equivalent;
+}
+
+// The length in bytes of the character (a byte and the UTF-8 continuation bytes after it) at `at`.
+std::size_t characterLength(std::string_view text, std::size_t at) {
+    std::size_t length = 1;
+    while (at + length < text.size() && (static_cast<unsigned char>(text[at + length]) & 0xC0) == 0x80)
+        ++length;
+    return length;
 }
 
 std::size_t normalizeIndex(const Value& index, std::size_t size, const char* what) {
@@ -175,13 +207,13 @@ Value unaryOp(UnaryOp op, const Value& v) {
                       ": '" + std::string(typeName(v)) + "'");
 }
 
-Value binaryOp(BinaryOp op, const Value& a, const Value& b) {
+Value binaryOp(BinaryOp op, const Value& a, const Value& b, detail::Budget& budget) {
     if (a.isNumber() && b.isNumber()) {
         if (a.is<double>() || b.is<double>())
             return floatArithmetic(op, asDouble(a), asDouble(b));
         return intArithmetic(op, asInt(a), asInt(b));
     }
-    return sequenceArithmetic(op, a, b);
+    return sequenceArithmetic(op, a, b, budget);
 }
 
 std::partial_ordering pythonOrder(const Value& a, const Value& b, const char* symbol) {
@@ -239,35 +271,38 @@ Value subscript(const Value& container, const Value& index) {
         return list[normalizeIndex(index, list.size(), "list")];
     }
     if (container.is<std::string>()) {
-        const std::vector<std::string> chars = utf8Characters(container.as<std::string>());
-        return chars[normalizeIndex(index, chars.size(), "string")];
+        const std::string& text = container.as<std::string>();
+        std::size_t wanted = normalizeIndex(index, characterCount(text), "string");
+        std::size_t begin = 0;
+        while (wanted-- > 0)
+            begin += characterLength(text, begin);
+        return text.substr(begin, characterLength(text, begin));
     }
     throw EvalProblem("'" + std::string(typeName(container)) + "' object is not subscriptable");
 }
 
-List iterate(const Value& iterable, std::string_view context) {
-    if (iterable.is<List>())
+List iterate(const Value& iterable, std::string_view context, detail::Budget& budget) {
+    if (iterable.is<List>()) {
+        budget.takeCopy(iterable);
         return iterable.as<List>();
+    }
     if (iterable.is<std::string>()) {
+        const std::string& text = iterable.as<std::string>();
+        budget.take(characterCount(text) + text.size());  // the list's items and their characters
         List out;
-        for (std::string& c : utf8Characters(iterable.as<std::string>()))
-            out.emplace_back(std::move(c));
+        for (std::size_t i = 0; i < text.size(); i += characterLength(text, i))
+            out.emplace_back(text.substr(i, characterLength(text, i)));
         return out;
     }
     throw EvalProblem(std::string(context) + ": '" + std::string(typeName(iterable)) +
                       "' object is not iterable");
 }
 
-std::vector<std::string> utf8Characters(const std::string& text) {
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < text.size();) {
-        std::size_t len = 1;
-        while (i + len < text.size() && (static_cast<unsigned char>(text[i + len]) & 0xC0) == 0x80)
-            ++len;
-        out.push_back(text.substr(i, len));
-        i += len;
-    }
-    return out;
+std::size_t characterCount(std::string_view text) {
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < text.size(); i += characterLength(text, i))
+        ++count;
+    return count;
 }
 
 }  // namespace mixengine::formula

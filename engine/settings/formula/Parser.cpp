@@ -1,8 +1,9 @@
 // Recursive-descent parser for the Python expression grammar of setting formulas (see Formula.h).
 // Names are resolved while parsing: comprehension variables to slots, built-ins and math members
 // to constants, everything else to setting keys. A comprehension's element is written before its
-// `for` clauses, so it is parsed once to find its end, dropped, and parsed again once the clause
-// variables are bound (the node pool is append-only, so dropping is truncating).
+// `for` clauses, so a bracket's tokens are first scanned for a `for` at its own level; when there is
+// one, the clauses are parsed first (binding their variables) and then the element, once. (Parsing
+// the element twice, once to find its end, took time exponential in the nesting of comprehensions.)
 #include <algorithm>
 #include <array>
 
@@ -207,17 +208,13 @@ class Parser : public ParserState {
             }
             if (isOp("*") || isOp("**"))
                 fail(peek(), "argument unpacking is not supported");
-            const std::size_t start = pos_;
-            const Mark mark = markPool();
-            std::uint32_t arg = parseTest();
-            if (isName("for")) {
+            if (const auto forAt = comprehensionFor()) {
                 if (!args.empty())
-                    fail(peek(), "a generator argument must be the only argument");
-                arg = parseComprehension(start, mark);
-                args.push_back(arg);
+                    fail(tokens_[*forAt], "a generator argument must be the only argument");
+                args.push_back(parseComprehension(*forAt));
                 break;
             }
-            args.push_back(arg);
+            args.push_back(parseTest());
             if (!isOp(","))
                 break;
             ++pos_;
@@ -226,9 +223,11 @@ class Parser : public ParserState {
         return makeCall(callee, args);
     }
 
-    // The clauses after a comprehension element, then the element again with its variables bound.
-    std::uint32_t parseComprehension(std::size_t elementStart, const Mark& mark) {
-        rollback(mark);
+    // A comprehension whose element starts here and whose first `for` is at `forAt`: the clauses,
+    // then the element with their variables bound.
+    std::uint32_t parseComprehension(std::size_t forAt) {
+        const std::size_t elementStart = pos_;
+        pos_ = forAt;
         const std::size_t outerScopes = scopes_.size();
         std::vector<std::uint32_t> clauses;
         std::vector<std::uint32_t> operands;
@@ -255,6 +254,8 @@ class Parser : public ParserState {
         const std::size_t end = pos_;
         pos_ = elementStart;
         const std::uint32_t element = parseTest();
+        if (pos_ != forAt)
+            unexpected();
         pos_ = end;
         scopes_.resize(outerScopes);
         operands.push_back(element);
@@ -281,14 +282,14 @@ class Parser : public ParserState {
             ++pos_;
             return addWithChildren(Node{NodeKind::ListDisplay}, {}, {});
         }
-        const std::size_t start = pos_;
-        const Mark mark = markPool();
-        std::uint32_t node = parseTest();
-        if (isName("for")) {
-            node = parseComprehension(start, mark);
-        } else if (isOp(",") || closer == "]") {
-            node = parseTupleTail(node, closer);
+        if (const auto forAt = comprehensionFor()) {
+            const std::uint32_t comprehension = parseComprehension(*forAt);
+            expectOp(closer);
+            return comprehension;
         }
+        std::uint32_t node = parseTest();
+        if (isOp(",") || closer == "]")
+            node = parseTupleTail(node, closer);
         expectOp(closer);
         return node;
     }

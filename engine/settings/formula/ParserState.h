@@ -19,7 +19,8 @@ namespace mixengine::formula {
 
 class ParserState {
   public:
-    ParserState(std::string_view source, std::vector<Token> tokens) : tokens_(std::move(tokens)) {
+    ParserState(std::string_view source, std::vector<Token> tokens)
+        : tokens_(std::move(tokens)), closers_(matchBrackets(tokens_)) {
         data_.source = std::string(source);
     }
 
@@ -40,10 +41,6 @@ class ParserState {
 
       private:
         ParserState& p_;
-    };
-
-    struct Mark {
-        std::size_t nodes, children, constants, names;
     };
 
     const Token& peek() const { return tokens_[pos_]; }
@@ -133,16 +130,24 @@ class ParserState {
         return callee;
     }
 
-    Mark markPool() const {
-        return {data_.nodes.size(), data_.children.size(), data_.constants.size(), data_.names.size()};
-    }
-
-    void rollback(const Mark& m) {
-        data_.nodes.resize(m.nodes);
-        depths_.resize(m.nodes);
-        data_.children.resize(m.children);
-        data_.constants.resize(m.constants);
-        data_.names.resize(m.names);
+    /// Where the element starting here is followed by a comprehension's first `for` (as in
+    /// `[p for p in xs]` or `all(p for p in xs)`): the first `for` at this bracket level before
+    /// its `,` or closing bracket. Looks at the tokens of this level only (it jumps over brackets),
+    /// nothing is parsed.
+    std::optional<std::size_t> comprehensionFor() const {
+        for (std::size_t i = pos_; tokens_[i].kind != TokenKind::End; ++i) {
+            const Token& t = tokens_[i];
+            if (t.kind == TokenKind::Name && t.text == "for")
+                return i;
+            if (isOpening(t)) {
+                i = closers_[i];  // then past it
+                if (tokens_[i].kind == TokenKind::End)
+                    return std::nullopt;
+            } else if (isClosing(t) || (t.kind == TokenKind::Operator && t.text == ",")) {
+                return std::nullopt;
+            }
+        }
+        return std::nullopt;
     }
 
     std::uint32_t bindLocal(std::string name) {
@@ -165,6 +170,7 @@ class ParserState {
     }
 
     std::vector<Token> tokens_;
+    std::vector<std::size_t> closers_;  // matchBrackets(tokens_)
     std::size_t pos_ = 0;
     std::vector<std::pair<std::string, std::uint32_t>> scopes_;  // comprehension variables, innermost last
 
@@ -183,6 +189,29 @@ class ParserState {
         data_.nodes.push_back(node);
         depths_.push_back(depth);
         return static_cast<std::uint32_t>(data_.nodes.size() - 1);
+    }
+
+    static bool isOpening(const Token& t) {
+        return t.kind == TokenKind::Operator && (t.text == "(" || t.text == "[" || t.text == "{");
+    }
+    static bool isClosing(const Token& t) {
+        return t.kind == TokenKind::Operator && (t.text == ")" || t.text == "]" || t.text == "}");
+    }
+
+    /// For each opening bracket, the index of the closing bracket that ends it, or of the End token
+    /// when it is not closed (brackets of another kind are the parser's error to report).
+    static std::vector<std::size_t> matchBrackets(const std::vector<Token>& tokens) {
+        std::vector<std::size_t> closers(tokens.size(), tokens.size() - 1);
+        std::vector<std::size_t> open;
+        for (std::size_t i = 0; i < tokens.size(); ++i) {
+            if (isOpening(tokens[i])) {
+                open.push_back(i);
+            } else if (isClosing(tokens[i]) && !open.empty()) {
+                closers[open.back()] = i;
+                open.pop_back();
+            }
+        }
+        return closers;
     }
 
     static std::vector<std::uint32_t> withCallee(std::uint32_t callee,

@@ -45,5 +45,63 @@ TEST(FormulaFuzzRegressions, HugeExponentLiteralsAreInfinityOrZeroAsInPython) {
     EXPECT_EQ(repr("float('7e9223372036854775808')"), "inf");
 }
 
+// Issue 29 item 4: values and formulas whose evaluation took unbounded memory or time. Each must end with
+// the typed error (InputError / FormulaError) naming the key or formula and the limit, and nothing else.
+
+// settings_fuzz (45 bytes: selector ';' = valueFromText as "polygon", then the text): list repetition
+// nested in a repetition. Formula values are deep copies, so the outer `* 999999` copied the 2-million-item
+// inner list 999999 times (2e12 items; out of memory). The per-repetition cap (2^24 items) counted only the
+// outer list's 3 items.
+TEST(FormulaFuzzRegressions, NestedRepetitionInAPolygonValueIsTooLarge) {
+    const std::string value = "[[-20, 10]*999999, [10, 10], [0, -5]]*999999";
+    try {
+        valueFromText("fuzzed_setting", "polygon", value);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(),
+                     "setting 'fuzzed_setting': formula '[[-20, 10]*999999, [10, 10], [0, -5]]*999999': too "
+                     "large (more than 1000000 elements: list items and string characters)");
+    } catch (...) {
+        ADD_FAILURE() << "an exception other than InputError";
+    }
+}
+
+// Command line (issue 29 item 4 b): `-s machine_disallowed_areas=...` with this value took the engine to
+// 18 GB in 60 s (67 million items: 186,600 deep copies of a 360-item list). Python shares the inner list.
+TEST(FormulaFuzzRegressions, RepeatedListSettingValueIsTooLarge) {
+    const std::string value = "[[0,0,[0,0,0,]]*120*1*1,0,[0,0,0,]]*120*1555";
+    try {
+        valueFromText("machine_disallowed_areas", "polygons", value);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(
+            e.what(),
+            "setting 'machine_disallowed_areas': formula '[[0,0,[0,0,0,]]*120*1*1,0,[0,0,0,]]*120*1555': "
+            "too large (more than 1000000 elements: list items and string characters)");
+    } catch (...) {
+        ADD_FAILURE() << "an exception other than InputError";
+    }
+}
+
+// formula_fuzz: nested comprehensions over a long string (4e8 iterations; more than 10 s per input). Each
+// iteration copies its two 1-character strings, so the elements run out (at ~7 of the 20,000 outer
+// iterations) before the steps.
+TEST(FormulaFuzzRegressions, NestedComprehensionsOverALongStringAreBounded) {
+    MapEnvironment env;
+    env.settings["infill_pattern"] = Value("grid");
+    const std::string formula =
+        "[0 for a in infill_pattern * 5000 for b in infill_pattern * 5000 if a + b == '']";
+    try {
+        evaluate(parse(formula), env);
+        ADD_FAILURE() << "no error";
+    } catch (const FormulaError& e) {
+        EXPECT_STREQ(e.what(),
+                     "formula '[0 for a in infill_pattern * 5000 for b in infill_pattern * 5000 if a + b == "
+                     "'']': too large (more than 1000000 elements: list items and string characters)");
+    } catch (...) {
+        ADD_FAILURE() << "an exception other than FormulaError";
+    }
+}
+
 }  // namespace
 }  // namespace mixengine::formula::test

@@ -137,6 +137,15 @@ TEST(ValueParse, NestedListsWithSpacesTrailingCommasAndTuples) {
     }
 }
 
+// The nesting is bounded (settings use 3 levels), so a long run of brackets cannot overflow the stack.
+TEST(ValueParse, NestingDeeperThan32IsRejected) {
+    const auto nested = [](int depth) { return std::string(depth, '[') + "1" + std::string(depth, ']'); };
+    EXPECT_NO_THROW(parseNumberTree("k", nested(32)));
+    EXPECT_TRUE(contains(inputErrorOf([&] { parseNumberTree("k", nested(33)); }), "nested at most 32 deep"));
+    const std::string message = inputErrorOf([&] { parsePolygonsMicrons("areas", nested(1000000)); });
+    EXPECT_TRUE(contains(message, "setting 'areas'")) << message.substr(0, 200);
+}
+
 TEST(Settings, TypedGettersCarryTheirUnit) {
     const Settings s("global settings", {{"speed", "25"},
                                          {"wall_thickness", "0.8"},
