@@ -86,7 +86,7 @@ bool ArcusSession::readNext() {
             return true;
         case ArcusWordKind::Close:
             markEnded(true);
-            answerCloseRequest();
+            sendCloseWord();  // the answer to Cura's request is the same word
             return false;
         case ArcusWordKind::Header:
             return readFrame();
@@ -153,12 +153,12 @@ void ArcusSession::markEnded(bool close_requested) {
     inbox_.changed.notify_all();
 }
 
-void ArcusSession::answerCloseRequest() {
+void ArcusSession::sendCloseWord() {
     std::lock_guard lock(write_mutex_);
     if (close_sent_)
         return;
     close_sent_ = true;
-    stream_.writeUnit(asText(arcusWord(kArcusClose)));  // as libArcus: answer, then stop writing
+    stream_.writeUnit(asText(arcusWord(kArcusClose)));  // as libArcus: the word, then stop writing
     stream_.shutdownWrite();
 }
 
@@ -213,14 +213,7 @@ void ArcusSession::close(std::chrono::milliseconds timeout) {
         if (inbox_.ended || !inbox_.failure.empty())
             return;
     }
-    {
-        std::lock_guard lock(write_mutex_);
-        if (!close_sent_) {
-            close_sent_ = true;
-            stream_.writeUnit(asText(arcusWord(kArcusClose)));
-            stream_.shutdownWrite();
-        }
-    }
+    sendCloseWord();
     std::unique_lock lock(inbox_.mutex);
     if (!inbox_.changed.wait_for(lock, timeout, [this] { return inbox_.ended || !inbox_.failure.empty(); }))
         log_.warning("Cura did not answer the close request within " + std::to_string(timeout.count()) +

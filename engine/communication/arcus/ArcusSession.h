@@ -91,7 +91,8 @@ class ArcusSession {
     void dispatch(std::uint32_t type_id, const std::string& body);
     void fail(const std::string& why);
     void markEnded(bool close_requested);
-    void answerCloseRequest();
+    /// The close word (a request or the answer to Cura's), once; then no more writing.
+    void sendCloseWord();
     void throwIfEnded();  // caller holds inbox_.mutex
 
     Log& log_;
