@@ -210,9 +210,10 @@ def seed_share_b(color_a, color_b, percent):
     return (percent - color_a) / (color_b - color_a)
 
 
-def box_stl(path, size_x, size_y, size_z):
-    """An ASCII STL box with its bottom at z = 0, centred on x = y = 0."""
-    x0, x1, y0, y1, z0, z1 = -size_x / 2, size_x / 2, -size_y / 2, size_y / 2, 0.0, size_z
+def box_stl(path, size_x, size_y, size_z, centre_x=0.0):
+    """An ASCII STL box with its bottom at z = 0, centred on x = centre_x, y = 0."""
+    x0, x1 = centre_x - size_x / 2, centre_x + size_x / 2
+    y0, y1, z0, z1 = -size_y / 2, size_y / 2, 0.0, size_z
     corners = [(x, y, z) for z in (z0, z1) for y in (y0, y1) for x in (x0, x1)]
     quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
     out = ["solid box"]

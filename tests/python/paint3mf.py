@@ -1,6 +1,6 @@
 """Painted 3MF boxes for the colour-mode tests, written with zipfile (no slicer involved): a box
-20 × 20 × 10 mm centred on x = y = 0 whose triangles are split at x = 0, the left half (x < 0) painted
-one way and the right half another, as
+20 × 20 × 10 mm (or size × size × height) centred on x = y = 0 whose triangles are split at x = 0, the left
+half (x < 0) painted one way and the right half another, as
 
   colorgroup      core 3MF material extension: m:colorgroup, triangles with pid/p1
   basematerials   core 3MF: basematerials displaycolor, triangles with pid/p1
@@ -49,8 +49,8 @@ def box_halves(size=20.0, height=10.0):
     return vertices, faces
 
 
-def write_painted_box(path, style, left="#FFFF00", right="#0000FF"):
-    vertices, faces = box_halves()
+def write_painted_box(path, style, left="#FFFF00", right="#0000FF", size=20.0, height=10.0):
+    vertices, faces = box_halves(size, height)
     resources, attrs, default = "", None, ""
     ns = ""
     if style == "colorgroup":

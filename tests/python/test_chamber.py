@@ -1,0 +1,240 @@
+"""Issue 26: a change of mix inside a layer is planned and purged so that what leaves the nozzle is the asked
+mix where it shows. Checked from the G-code alone: mixing_gcode.py reads the MakerPi's E and B words back,
+chamber_replay.py replays the chamber (mixing_chamber_volume 40 mm³ in mixing_chamber_stages 3 stirred tanks,
+its own RK4 integration, checked here against the analytic step response), and the asked mix comes from the
+geometry of each test's models, never from the engine's commands.
+
+  - the replay: the step response e^-τ (1 + τ + τ²/2) of three tanks, the average over a push, the mean
+    residence volume of a ramp, the net-new accounting of retractions, the 71 mm³ of a full change;
+  - a 20 mm cube painted yellow left / blue right (3MF colorgroup, mixing_mode=color) and two 15 mm cubes side
+    by side (dual mode, per-mesh mixing_ratio 1:0 and 0:1): ≥ 95 % of the outer-wall length leaves the nozzle
+    within mixing_transition_tolerance (0.1) of its half's or cube's mix; the purge tower (;TYPE:PRIME-TOWER)
+    holds at most 1.25 × the physical minimum (one full change per layer whose outer walls hold both mixes);
+    the model itself is not over-extruded (its net melt within 2 % of the same slice with an ideal chamber);
+  - a Z gradient keeps ≥ 98 % of the outer-wall length within 0.1 of the share at its height;
+  - side views of the outer walls coloured by the replayed outlet (left) and the asked mix (right) are written
+    next to each test's output (the report names them).
+"""
+import json
+import math
+
+import pytest
+
+import helpers
+from chamber_replay import (Chamber, full_change_volume, model_volume, net_amounts, outer_wall_fraction,
+                            purge_volume, render_side_view, replay, share_distance)
+from mixing_gcode import Move, box_stl, png_pixels, read_mixing_gcode, seed_share_b
+from paint3mf import write_painted_box
+
+PROFILE = helpers.REPO / "settings" / "definitions" / "mixengine_makerpi_m2030x.def.json"
+EXTRUDER = helpers.REPO / "settings" / "extruders" / "mixengine_makerpi_m2030x_extruder_0.def.json"
+DIAMETER_MM = json.loads(EXTRUDER.read_text())["overrides"]["material_diameter"]["default_value"]
+VOLUME_MM3, STAGES, TOLERANCE = 40.0, 3, 0.1
+CHAMBER = (f"mixing_chamber_volume={VOLUME_MM3:g}", f"mixing_chamber_stages={STAGES}")
+YELLOW_BLUE = "#ffff00,#0000ff"
+A, B = [1.0, 0.0], [0.0, 1.0]
+GRADIENT = (20, 80)  # mixing_gradient_start / _end, percent of the cube's 20 mm
+
+
+def step_response(t):
+    """Share of the new mix leaving three tanks in series after t tank volumes: 1 - e^-t (1 + t + t²/2)."""
+    return 1.0 - math.exp(-t) * (1.0 + t + t * t / 2.0)
+
+
+def step_response_integral(t):
+    """∫0^t step_response: t - 3 + e^-t (3 + 2t + t²/2)."""
+    return t - 3.0 + math.exp(-t) * (3.0 + 2.0 * t + t * t / 2.0)
+
+
+def analytic_full_change(volume_mm3, tolerance):
+    """Bisection on the analytic step response (three stages): the volume after which B is within tolerance."""
+    lo, hi = 0.0, 50.0
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if step_response(mid) < 1.0 - tolerance else (lo, mid)
+    return (lo + hi) / 2 * volume_mm3 / 3
+
+
+def test_replay_follows_the_analytic_step_response(report):
+    chamber = Chamber(VOLUME_MM3, 3, A)
+    tank = VOLUME_MM3 / 3
+    pushed, worst_outlet, worst_average = 0.0, 0.0, 0.0
+    for i in range(400):  # pushes of uneven sizes, from a tiny move to several tank volumes
+        volume = (0.003, 0.04, 0.7, 2.5, 19.0)[i % 5]
+        before = pushed / tank
+        average = chamber.push(B, volume)
+        pushed += volume
+        t = pushed / tank
+        worst_outlet = max(worst_outlet, abs(chamber.outlet()[1] - step_response(t)),
+                           abs(chamber.outlet()[0] - (1.0 - step_response(t))))
+        expected = (step_response_integral(t) - step_response_integral(before)) / (t - before)
+        worst_average = max(worst_average, abs(average[1] - expected))
+    assert worst_outlet < 1e-6 and worst_average < 1e-6, (worst_outlet, worst_average)
+    full = full_change_volume(VOLUME_MM3, 3, TOLERANCE)
+    exact = analytic_full_change(VOLUME_MM3, TOLERANCE)
+    report(f"chamber replay (RK4) vs e^-t(1+t+t^2/2), 40 mm3 in 3 stages: outlet within {worst_outlet:.1e}, "
+           f"push average within {worst_average:.1e}; full change to 0.1: {full:.3f} mm3 (analytic {exact:.3f})")
+    assert abs(full - exact) < 1e-3
+    assert abs(full - 70.97) < 0.02  # the issue's figure
+
+
+@pytest.mark.parametrize("stages", [1, 3, 8])
+def test_replay_delays_a_ramp_by_the_chamber_volume(stages):
+    """Tanks in series hold the mean residence volume V: a slow ramp leaves the nozzle exactly V later."""
+    chamber, slope, dv = Chamber(VOLUME_MM3, stages, A), 1.0 / 1000.0, 0.5  # share of B per mm³
+    for i in range(1200):
+        v = i * dv
+        share = min(1.0, slope * (v + dv / 2))
+        chamber.push([1 - share, share], dv)
+    outlet = chamber.outlet()[1]  # after 600 mm³ the outlet is the ramp 40 mm³ ago
+    assert outlet == pytest.approx(slope * (1200 * dv - VOLUME_MM3), abs=2e-4)
+    assert Chamber(0.0, stages, A).push(B, 1.0) == B  # an ideal chamber gives out what comes in
+
+
+def test_replay_moves_only_net_new_filament():
+    def move(a, b, xy=True):
+        return Move(1, 0.3, xy, [a, b], "WALL-OUTER", (0.0, 0.0), (1.0, 0.0))
+
+    moves = [move(1.0, 0.0), move(-6.5, 0.0, xy=False), move(6.5, 0.0, xy=False), move(0.0, 1.0),
+             move(0.0, -2.0, xy=False), move(0.5, 2.5), move(0.0, 0.0)]
+    assert net_amounts(moves) == [[1.0, 0.0], [0.0, 0.0], [0.0, 0.0], [0.0, 1.0], [0.0, 0.0], [0.5, 0.5],
+                                  [0.0, 0.0]]
+    area = math.pi * 1.75 ** 2 / 4
+    replayed = replay(moves, 1.75, VOLUME_MM3, 3)
+    assert [r.net_mm3 for r in replayed] == pytest.approx([area, 0, 0, area, 0, area, 0])
+    assert replayed[0].outlet == pytest.approx(A)  # the chamber starts full of the first net extrusion
+    assert replayed[2].outlet == replayed[1].outlet == replayed[0].outlet  # the unretraction moved no melt
+    chamber = Chamber(VOLUME_MM3, 3, A)
+    chamber.push(A, area)
+    assert replayed[3].outlet == pytest.approx(chamber.push(B, area))
+    assert purge_volume(replayed) == 0 and model_volume(replayed) == pytest.approx(3 * area)
+
+
+# --- the prints ---
+
+def slice_makerpi(out, settings, models):
+    """`mixengine slice -j <MakerPi> -s ... (-l MODEL -s ...)...`; `models` is [(path, [per-mesh settings])]."""
+    args = ["slice", "-j", PROFILE]
+    for s in settings:
+        args += ["-s", s]
+    for path, per_mesh in models:
+        args += ["-l", path]
+        for s in per_mesh:
+            args += ["-s", s]
+    proc = helpers.mixengine(*args, "-o", out)
+    assert proc.returncode == 0, proc.stderr
+    return out
+
+
+def halves_asked(replayed):
+    """Left of the middle of the outer walls: filament A (yellow); right of it: B (blue)."""
+    walls = [r.move for r in replayed if r.extruding and r.move.feature == "WALL-OUTER"]
+    xs = [x for m in walls for x in (m.start[0], m.end[0])]
+    centre = (min(xs) + max(xs)) / 2
+
+    def asked(move):
+        return A if (move.start[0] + move.end[0]) / 2 < centre else B
+    return asked
+
+
+def gradient_asked(cube_mm):
+    def asked(move):  # the layer's top in percent of the cube's height (MixSchedule.h)
+        share = seed_share_b(*GRADIENT, 100.0 * move.z / cube_mm)
+        return [1.0 - share, share]
+    return asked
+
+
+class Print:
+    def __init__(self, gcode, asked_of):
+        self.gcode = gcode
+        self.replayed = replay(read_mixing_gcode(gcode, "eb_axes").moves, DIAMETER_MM, VOLUME_MM3, STAGES)
+        self.asked = asked_of(self.replayed)
+
+    def layers_with_both_mixes(self):
+        mixes = {}
+        for r in self.replayed:
+            if r.extruding and r.move.feature == "WALL-OUTER":
+                mixes.setdefault(r.move.layer, set()).add(tuple(self.asked(r.move)))
+        return sum(len(m) > 1 for m in mixes.values())
+
+
+@pytest.fixture(scope="module")
+def models(tmp_path_factory):
+    d = tmp_path_factory.mktemp("chamber_models")
+    return {"painted": write_painted_box(d / "painted.3mf", "colorgroup", size=20.0, height=20.0),
+            "left": box_stl(d / "left.stl", 15, 15, 15, centre_x=-10.0),
+            "right": box_stl(d / "right.stl", 15, 15, 15, centre_x=10.0),
+            "cube": box_stl(d / "cube.stl", 20, 20, 20)}
+
+
+def print_settings(name, models, chamber=CHAMBER):
+    """(settings, [(model, per-mesh settings)], asked) of a print of this test."""
+    if name == "painted":
+        return ([*chamber, "mixing_mode=color", f"mixing_channel_colors={YELLOW_BLUE}", "mixing_paint_depth=30"],
+                [(models["painted"], [])], halves_asked)
+    if name == "two_cubes":
+        return ([*chamber, "mixing_mode=dual", f"mixing_channel_colors={YELLOW_BLUE}"],
+                [(models["left"], ["mixing_ratio=1:0"]), (models["right"], ["mixing_ratio=0:1"])], halves_asked)
+    return ([*chamber, "mixing_mode=gradient", f"mixing_gradient_start={GRADIENT[0]}",
+             f"mixing_gradient_end={GRADIENT[1]}"], [(models["cube"], [])], lambda replayed: gradient_asked(20.0))
+
+
+@pytest.fixture(scope="module")
+def sliced(engine, models, tmp_path_factory):
+    """sliced(name, chamber) -> Print (cached): the G-code of that print and its replay in the 40/3 chamber."""
+    out_dir, cache = tmp_path_factory.mktemp("chamber_gcode"), {}
+
+    def get(name, chamber=CHAMBER):
+        if (name, chamber) not in cache:
+            settings, meshes, asked_of = print_settings(name, models, chamber)
+            gcode = slice_makerpi(out_dir / f"{name}_{len(cache)}.gcode", settings, meshes)
+            cache[(name, chamber)] = Print(gcode, asked_of)
+        return cache[(name, chamber)]
+    return get
+
+
+PRINTS = ["painted", "two_cubes"]
+
+
+@pytest.mark.parametrize("name", PRINTS)
+def test_outer_walls_leave_the_nozzle_in_the_asked_mix(sliced, name, tmp_path, report):
+    p = sliced(name)
+    picture = tmp_path / f"{name}_outer_walls.png"
+    render_side_view(p.replayed, YELLOW_BLUE.split(","), picture, asked=p.asked)
+    width, height, rows = png_pixels(picture)
+    assert sum(px != (255, 255, 255) for row in rows for px in zip(row[::3], row[1::3], row[2::3])) > width * height / 4
+    fraction, length = outer_wall_fraction(p.replayed, p.asked, TOLERANCE)
+    report(f"chamber {name}: {100 * fraction:.1f} % of {length:.0f} mm outer wall within {TOLERANCE} of the asked "
+           f"mix; side view (outlet | asked): {picture}")
+    assert fraction >= 0.95
+
+
+@pytest.mark.parametrize("name", PRINTS)
+def test_purge_is_near_the_physical_minimum(sliced, name, report):
+    p = sliced(name)
+    layers = p.layers_with_both_mixes()
+    minimum = layers * full_change_volume(VOLUME_MM3, STAGES, TOLERANCE)
+    purge = purge_volume(p.replayed)
+    report(f"chamber {name}: purge tower {purge:.0f} mm3, physical minimum {minimum:.0f} mm3 "
+           f"({layers} layers with both mixes in their outer walls)")
+    assert layers > 100
+    assert purge <= 1.25 * minimum
+
+
+@pytest.mark.parametrize("name", PRINTS)
+def test_the_model_is_not_over_extruded(sliced, name, report):
+    planned = model_volume(sliced(name).replayed)
+    ideal = model_volume(sliced(name, ("mixing_chamber_volume=0",)).replayed)
+    report(f"chamber {name}: model {planned:.0f} mm3 with the 40 mm3 chamber, {ideal:.0f} mm3 with an ideal one")
+    assert abs(planned - ideal) <= 0.02 * ideal
+
+
+def test_z_gradient_lands_at_its_height(sliced, tmp_path, report):
+    p = sliced("gradient")
+    render_side_view(p.replayed, YELLOW_BLUE.split(","), tmp_path / "gradient_outer_walls.png", asked=p.asked)
+    fraction, length = outer_wall_fraction(p.replayed, p.asked, TOLERANCE)
+    worst = max(share_distance(r.outlet, p.asked(r.move)) for r in p.replayed
+                if r.extruding and r.move.feature == "WALL-OUTER")
+    report(f"chamber gradient {GRADIENT[0]}-{GRADIENT[1]} %: {100 * fraction:.1f} % of {length:.0f} mm outer wall "
+           f"within {TOLERANCE} (worst {worst:.3f}); side view: {tmp_path / 'gradient_outer_walls.png'}")
+    assert fraction >= 0.98
