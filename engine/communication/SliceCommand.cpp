@@ -37,6 +37,8 @@ int runSliceCommand(const Words& args, std::ostream& out, std::ostream& err) {
     }
     if (preview)
         writeFileAtomically(parsed.preview_png, preview->png());
+    for (const std::string& note : gcode.notes)
+        err << note << '\n';
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log.info("Total time elapsed " + std::to_string(seconds) + "s");
     log.info("Print time (s): " + std::to_string(static_cast<long long>(gcode.summary.print_time_s)));

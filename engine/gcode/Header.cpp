@@ -133,7 +133,9 @@ std::string ultiGCodeHeader(const PrintSummary& summary) {
 }  // namespace
 
 std::string makeHeader(const PrintSummary& summary) {
-    const std::string generated = "\n;Generated with MixEngine " + summary.engine_version + "\n";
+    std::string generated = "\n;Generated with MixEngine " + summary.engine_version + "\n";
+    for (const std::string& line : summary.extra_lines)
+        generated += ";" + line + "\n";
     if (summary.flavor == Flavor::Griffin)
         return griffinHeader(summary) + generated;
     if (summary.flavor == Flavor::UltiGCode)

@@ -50,6 +50,8 @@ struct PrintSummary {
     std::string build_plate_type = "glass";
     double build_plate_temperature_c = 0;
     int print_groups = 1;
+    /// Comment lines (without ';') after the usual header: the mixing report (mixing/MixingReport.h)
+    std::vector<std::string> extra_lines;
 };
 
 /// The header for summary.flavor: Griffin's ;START_OF_HEADER block, UltiGCode's ;MATERIAL: lines,

@@ -70,6 +70,13 @@ TimeFeature timeFeature(Feature feature) {
     }
 }
 
+/// {255, 128, 0} → "#ff8000".
+std::string hexColor(const std::array<std::uint8_t, 3>& rgb) {
+    char text[8];
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+    return text;
+}
+
 /// cool_lift_head (planning/Cooling.h), written as CuraEngine 4.13 writes it.
 void liftHead(const PlanStep& step, GCodeExport& gcode) {
     gcode.comment("Small layer, adding delay");
@@ -163,8 +170,16 @@ void writeLayer(const PlannedLayer& layer, int number, const PlanTables& tables,
         gcode.resetExtrusionAxis();
     gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
     gcode.newExtrusionConfig();
-    for (const PlanStep& step : layer.steps)
+    int outlet_color = -1;  // the ;PREDICTED_COLOR: in force in this layer
+    for (const PlanStep& step : layer.steps) {
+        if (step.kind == PlanStep::Kind::Extrude && step.outlet_color >= 0 &&
+            step.outlet_color != outlet_color) {
+            outlet_color = step.outlet_color;
+            gcode.comment("PREDICTED_COLOR:" +
+                          hexColor(tables.outlet_colors[static_cast<std::size_t>(outlet_color)]));
+        }
         writeStep(step, layer.z, tables, params, gcode, out);
+    }
     gcode.flushTime();
     char elapsed[64];
     std::snprintf(elapsed, sizeof elapsed, "TIME_ELAPSED:%.6f", gcode.elapsedSeconds());
@@ -174,7 +189,7 @@ void writeLayer(const PlannedLayer& layer, int number, const PlanTables& tables,
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode) {
     WrittenLayers out;
-    const PlanTables tables{plan.mesh_names, plan.mixes};
+    const PlanTables tables{plan.mesh_names, plan.mixes, plan.outlet_colors};
     for (const PlannedLayer& layer : plan.layers)
         writeLayer(layer, layer.index, tables, params, gcode, out);
     return out;

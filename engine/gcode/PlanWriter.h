@@ -52,6 +52,7 @@ WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, G
 struct PlanTables {
     const std::vector<std::string>& mesh_names;
     const std::vector<MixVector>& mixes;
+    const std::vector<std::array<std::uint8_t, 3>>& outlet_colors;  ///< PlanStep::outlet_color
 };
 
 /// One layer as writePlan() writes it, numbered `number` (";LAYER:<number>"): its chunk is appended

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "mixing/ChamberDelay.h"
+#include "mixing/LayerOrder.h"
 #include "mixing/MixSchedule.h"
 #include "mixing/PaintSchedule.h"
 #include "mixing/RegionSplit.h"
@@ -168,13 +169,15 @@ void warnAboutMeshModes(const MixingGroup& group, Log& log) {
     }
 }
 
-/// The mix each extrusion should leave the nozzle with (index into plan.mixes), and its volume.
-void targetMixes(PrintPlan& plan, const GroupSchedules& schedules,
-                 const std::vector<std::vector<int>>& regions, std::vector<int>& target,
-                 std::vector<double>& volume) {
+/// The mix each step should leave the nozzle with (index into plan.mixes) and whether it is seen:
+/// an outer wall, skin or ironing of a model (not the raft's, the support's or the shield's).
+std::vector<std::vector<StepTarget>> targetMixes(PrintPlan& plan, const GroupSchedules& schedules,
+                                                 const std::vector<std::vector<int>>& regions) {
     MixTable table(plan.mixes);
+    std::vector<std::vector<StepTarget>> targets(plan.layers.size());
     for (std::size_t l = 0; l < plan.layers.size(); ++l) {
         const PlannedLayer& layer = plan.layers[l];
+        targets[l].resize(layer.steps.size());
         int mesh = -1;
         Feature feature = Feature::Fill;
         // (scope: mesh index, -1 = non-mesh, -2 = raft, -3 = support; painted region or -1) → mix index
@@ -189,27 +192,115 @@ void targetMixes(PrintPlan& plan, const GroupSchedules& schedules,
                 continue;
             const int scope = scopeOf(feature, mesh);
             const int region = regions.empty() ? -1 : regions[l][i];
+            StepTarget& t = targets[l][i];
+            t.visible = scope >= 0 && visibleFeature(feature);
             if (step.rise_um > 0) {  // a spiral: the mix at the height the move ends at
-                target.push_back(table.indexOf(schedules.mixOf(scope, region, layer.z + step.rise_um)));
-                volume.push_back(step.volume_mm3);
+                t.mix = table.indexOf(schedules.mixOf(scope, region, layer.z + step.rise_um));
                 continue;
             }
             auto [it, added] = layer_mix.emplace(std::pair{scope, region}, 0);
             if (added)
                 it->second = table.indexOf(schedules.mixOf(scope, region, layer.z));
-            target.push_back(it->second);
-            volume.push_back(step.volume_mm3);
+            t.mix = it->second;
         }
     }
+    return targets;
+}
+
+/// Whether some layer's visible extrusions ask for more than one mix.
+bool mixChangesInLayers(const std::vector<std::vector<StepTarget>>& targets) {
+    for (const std::vector<StepTarget>& layer : targets) {
+        int first = -1;
+        for (const StepTarget& t : layer) {
+            if (!t.visible)
+                continue;
+            if (first >= 0 && t.mix != first)
+                return true;
+            first = t.mix;
+        }
+    }
+    return false;
+}
+
+/// Without changes inside layers: every extrusion commands its target, shifted earlier by the
+/// chamber's volume — the mean residence time of the chamber, which is exactly the lag of a slowly
+/// changing mix through any number of stirred tanks (mixing/ChamberDelay.h).
+void delayShift(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets, double chamber_mm3) {
+    std::vector<int> target;
+    std::vector<double> volume;
+    for (std::size_t l = 0; l < plan.layers.size(); ++l)
+        for (std::size_t i = 0; i < plan.layers[l].steps.size(); ++i)
+            if (plan.layers[l].steps[i].kind == PlanStep::Kind::Extrude) {
+                target.push_back(targets[l][i].mix);
+                volume.push_back(plan.layers[l].steps[i].volume_mm3);
+            }
+    const std::vector<int> commanded = delayCompensated(target, volume, chamber_mm3);
+    std::size_t next = 0;
+    for (PlannedLayer& layer : plan.layers)
+        for (PlanStep& step : layer.steps)
+            if (step.kind == PlanStep::Kind::Extrude)
+                step.mix = commanded[next++];
+}
+
+TransitionSettings transitionSettings(const Settings& global, const ChamberSpec& chamber, double tolerance) {
+    TransitionSettings t;
+    t.chamber = chamber;
+    t.tolerance = tolerance;
+    t.tower = parsePurgeTower(global);
+    const coord_um w = global.has("machine_width") ? global.lengthMicrons("machine_width") : 200'000;
+    const coord_um d = global.has("machine_depth") ? global.lengthMicrons("machine_depth") : 200'000;
+    if (global.flag("machine_center_is_zero")) {
+        t.site.plate_min = {-w / 2, -d / 2};
+        t.site.plate_max = {w / 2, d / 2};
+    } else {
+        t.site.plate_max = {w, d};
+    }
+    if (global.has("prime_tower_position_x") && global.has("prime_tower_position_y"))
+        t.site.preferred_anchor = Point2{global.lengthMicrons("prime_tower_position_x"),
+                                         global.lengthMicrons("prime_tower_position_y")};
+    for (const char* key : {"prime_tower_line_width", "line_width", "machine_nozzle_size"})
+        if (global.has(key) && global.lengthMicrons(key) > 0) {
+            t.line_width_um = global.lengthMicrons(key);
+            break;
+        }
+    if (global.has("speed_prime_tower") && global.real("speed_prime_tower") > 0)
+        t.speed_mm_s = global.real("speed_prime_tower");
+    return t;
+}
+
+/// Whether every change is between models that stand apart (no painted regions, disjoint in XY).
+std::string sequenceHint(const MixingGroup& group, const std::vector<std::vector<int>>& regions,
+                         const TransitionReport& report) {
+    if (report.changes == 0 || !regions.empty() || group.meshes.size() < 2)
+        return "";
+    if (group.settings->has("print_sequence") && group.settings->text("print_sequence") == "one_at_a_time")
+        return "";
+    for (std::size_t a = 0; a < group.meshes.size(); ++a)
+        for (std::size_t b = a + 1; b < group.meshes.size(); ++b) {
+            if (!group.meshes[a].mesh || !group.meshes[b].mesh)
+                return "";
+            const auto ba = group.meshes[a].mesh->bounds(), bb = group.meshes[b].mesh->bounds();
+            const bool apart =
+                ba.max.x < bb.min.x || bb.max.x < ba.min.x || ba.max.y < bb.min.y || bb.max.y < ba.min.y;
+            if (!apart)
+                return "";
+        }
+    char text[320];
+    std::snprintf(
+        text, sizeof text,
+        "mixing: the models stand apart: printing them one at a time (print_sequence one_at_a_time) would "
+        "remove the %d changes of mix and the %.0f mm3 of purge",
+        report.changes, report.purge_mm3);
+    return text;
 }
 
 }  // namespace
 
-void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
+MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     const MixingOutput output = parseMixingOutput(*group.settings);
     if (!output.enabled()) {
         warnAboutMeshModes(group, log);
-        return;
+        return {};
     }
     // The channel colours' pigment model (a few milliseconds): any scope may ask for a colour.
     const PigmentModel colors(parseChannelColors(*group.settings, output.channels));
@@ -219,21 +310,27 @@ void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     schedules.nonmesh = groupSchedule(group, output, model, schedules.meshes);
     schedules.raft = parseRaftMix(*group.settings, output);
     schedules.support = parseSupportMix(*group.settings, output);
-    const double chamber_mm3 = parseChamberVolumeMm3(*group.settings);
+    MixingReport report;
+    report.mixing = true;
+    report.chamber = parseChamberSpec(*group.settings);
+    report.tolerance = parseTransitionTolerance(*group.settings);
     warnAboutDialect(output, *group.settings, log);
 
     const std::vector<std::vector<int>> regions = paintedRegions(plan, group, schedules.meshes);
-    std::vector<int> target;
-    std::vector<double> volume;
-    targetMixes(plan, schedules, regions, target, volume);
-    const std::vector<int> commanded = delayCompensated(target, volume, chamber_mm3);
-    std::size_t next = 0;
-    for (PlannedLayer& layer : plan.layers) {
-        for (PlanStep& step : layer.steps) {
-            if (step.kind == PlanStep::Kind::Extrude)
-                step.mix = commanded[next++];
-        }
+    std::vector<std::vector<StepTarget>> targets = targetMixes(plan, schedules, regions);
+    if (!report.chamber.ideal() && mixChangesInLayers(targets)) {
+        report.planned = true;
+        report.transitions = planTransitions(
+            plan, targets, transitionSettings(*group.settings, report.chamber, report.tolerance));
+        report.sequence_hint = sequenceHint(group, regions, report.transitions);
+        for (const std::string& warning : report.transitions.warnings)
+            log.warning(warning);
+    } else {
+        delayShift(plan, targets, report.chamber.volume_mm3);
     }
+    std::optional<Chamber> chamber;
+    report.visible = predictOutlet(plan, targets, chamber, report.chamber, report.tolerance, colors);
+    return report;
 }
 
 }  // namespace mixengine

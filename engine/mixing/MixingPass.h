@@ -23,6 +23,7 @@
 #include "common/Log.h"
 #include "geometry/Point.h"
 #include "mesh/Mesh.h"
+#include "mixing/MixingReport.h"
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
 
@@ -45,6 +46,7 @@ struct MixingGroup {
     std::vector<MixingMesh> meshes;      ///< index = PlanStep::mesh_index of the plan's SetMesh steps
 };
 
-void assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log);
+/// Returns what a user needs to trust the print (mixing/MixingReport.h; `mixing` false in single mode).
+MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log);
 
 }  // namespace mixengine

@@ -49,6 +49,12 @@ const char* defaultText(std::string_view key) {
         return "1";
     if (key == "mixing_chamber_volume")
         return "0";
+    if (key == "mixing_chamber_stages")
+        return "3";
+    if (key == "mixing_transition_tolerance")
+        return "0.1";
+    if (key == "mixing_purge_tower_enable")
+        return "true";
     if (key == "mixing_channel_colors")
         return "#f2c500,#e0408a,#00a3e0,#262626,#f4f4f4";
     if (key == "mixing_target_color")
@@ -331,6 +337,32 @@ double parseChamberVolumeMm3(const Settings& global) {
     if (volume < 0)
         fail("mixing_chamber_volume", shown(volume) + " mm³ is negative");
     return volume;
+}
+
+ChamberSpec parseChamberSpec(const Settings& global) {
+    ChamberSpec spec;
+    spec.volume_mm3 = parseChamberVolumeMm3(global);
+    const long long stages = integerOf(global, "mixing_chamber_stages");
+    if (stages < 1 || stages > 200)
+        fail("mixing_chamber_stages", std::to_string(stages) + " is outside 1..200");
+    spec.stages = static_cast<int>(stages);
+    return spec;
+}
+
+double parseTransitionTolerance(const Settings& global) {
+    const double tolerance =
+        parseReal("mixing_transition_tolerance", textOf(global, "mixing_transition_tolerance"));
+    if (!(tolerance > 0 && tolerance <= 1))
+        fail("mixing_transition_tolerance",
+             shown(tolerance) + " is outside (0, 1] (a share: 0.1 = within 10 %)");
+    return tolerance;
+}
+
+bool parsePurgeTower(const Settings& global) {
+    const std::string text = trimmed(textOf(global, "mixing_purge_tower_enable"));
+    if (text != "true" && text != "false" && text != "True" && text != "False")
+        fail("mixing_purge_tower_enable", "'" + text + "' is not true or false");
+    return text == "true" || text == "True";
 }
 
 std::vector<Rgb> parseChannelColors(const Settings& global, int channels) {

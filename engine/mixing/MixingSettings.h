@@ -28,6 +28,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mixing/ChamberModel.h"
 #include "mixing/ColorSolver.h"
 #include "mixing/MixingOutput.h"
 #include "planning/MixVector.h"
@@ -93,6 +94,15 @@ MixVector parseSupportMix(const Settings& global, const MixingOutput& output);
 
 /// mixing_chamber_volume in mm³ (0 = no delay compensation); negative values are an error.
 double parseChamberVolumeMm3(const Settings& global);
+
+/// mixing_chamber_volume and mixing_chamber_stages (1..200).
+ChamberSpec parseChamberSpec(const Settings& global);
+
+/// mixing_transition_tolerance, a share in (0, 1].
+double parseTransitionTolerance(const Settings& global);
+
+/// mixing_purge_tower_enable.
+bool parsePurgeTower(const Settings& global);
 
 /// mixing_channel_colors: `channels` colours (defaults fill missing entries).
 std::vector<Rgb> parseChannelColors(const Settings& global, int channels);

@@ -88,7 +88,9 @@ void SidePreview::add(const PrintPlan& plan) {
     for (const PlannedLayer& layer : plan.layers) {
         for (const PlanStep& step : layer.steps) {
             if (step.kind == PlanStep::Kind::Extrude) {
-                const Rgb color = step.mix >= 0 ? mix_colors[static_cast<std::size_t>(step.mix)] : single;
+                Rgb color = step.mix >= 0 ? mix_colors[static_cast<std::size_t>(step.mix)] : single;
+                if (step.outlet_color >= 0)  // what leaves the nozzle (mixing/OutletPrediction.h)
+                    color = plan.outlet_colors[static_cast<std::size_t>(step.outlet_color)];
                 bands_.push_back({static_cast<std::int32_t>(head.X), static_cast<std::int32_t>(head.Y),
                                   static_cast<std::int32_t>(step.to.X), static_cast<std::int32_t>(step.to.Y),
                                   static_cast<std::int32_t>(below), static_cast<std::int32_t>(layer.z),

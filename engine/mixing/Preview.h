@@ -6,7 +6,9 @@
 // little darker so that the object's shape stays readable. Single mode draws channel A's colour.
 // When the print asks for colours (mixing_mode color, or mixing_gradient_colors in the global
 // settings) the mixes are drawn in the colour the pigment model predicts (mixing/KubelkaMunk.h),
-// the colour the solver aimed at, instead of the linear-light blend.
+// the colour the solver aimed at, instead of the linear-light blend. An extrusion whose colour leaving
+// the nozzle is predicted (PlanStep::outlet_color, mixing/OutletPrediction.h: every mixing print) is
+// drawn in that colour: the preview shows what the chamber lets out, not what the G-code commands.
 #include <cstdint>
 #include <memory>
 #include <string>

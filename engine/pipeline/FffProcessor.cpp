@@ -242,7 +242,7 @@ std::string startText(const Scene& scene, const ExportParams& export_params, con
 WrittenLayers writeLayers(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode,
                           LayerOutput& output) {
     WrittenLayers written;
-    const PlanTables tables{plan.mesh_names, plan.mixes};
+    const PlanTables tables{plan.mesh_names, plan.mixes, plan.outlet_colors};
     for (const PlannedLayer& layer : plan.layers) {
         writeLayer(layer, layer.index, tables, params, gcode, written);
         output.take(written.chunks, layer, layer.index);
@@ -365,6 +365,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     state.head = {first.lengthMicrons("layer_start_x"), first.lengthMicrons("layer_start_y")};
 
     GCodeOutput output;
+    MixingReport mixing;  // every group's, added up
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
     output.summary.max = {INT64_MIN, INT64_MIN, INT64_MIN};
     const std::vector<std::string> verbatim =
@@ -399,7 +400,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         } else {
             planGroup(scene, group, sliced, threads, state, log, plan, {}, on_counted);
         }
-        assignMixes(plan, mixingInput(scene, group), log);
+        mixing.add(assignMixes(plan, mixingInput(scene, group), log));
         model_layers += modelLayers(plan);
         next_index = renumber(plan, next_index, first_group);
         if (on_plan)
@@ -418,6 +419,8 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
                     " lies at a slice height above the build plate (0 layers)");
     }
     output.start = startText(scene, export_params, prime, model_layers);
+    output.summary.extra_lines = mixing.headerLines();
+    output.notes = mixing.summaryLines();
     if (!announced)
         layers.start(output.start);
     finishOutput(scene, export_params, gcode, output);

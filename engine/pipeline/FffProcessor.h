@@ -35,6 +35,7 @@ struct GCodeOutput {
     std::vector<std::string> layer_chunks;
     std::string suffix;  ///< end code
     PrintSummary summary;
+    std::vector<std::string> notes;  ///< what the command line reports after slicing (the mixing report)
 
     std::string joined() const;
     /// The text of joined() in its pieces, in order (views into this output).

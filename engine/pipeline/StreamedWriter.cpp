@@ -24,6 +24,7 @@ void StreamedWriter::hand(const PrintPlan& plan, std::size_t layer) {
         if (layer == 0) {                    // the tables are complete before the first layer is
             mesh_names_ = plan.mesh_names;
             mixes_ = plan.mixes;
+            outlet_colors_ = plan.outlet_colors;
         }
         queue_.push_back(&plan.layers[layer]);
     }
@@ -31,7 +32,7 @@ void StreamedWriter::hand(const PrintPlan& plan, std::size_t layer) {
 }
 
 void StreamedWriter::run() {
-    const PlanTables tables{mesh_names_, mixes_};
+    const PlanTables tables{mesh_names_, mixes_, outlet_colors_};
     int offset = 0;
     for (std::size_t next = 0;; ++next) {
         const PlannedLayer* layer = nullptr;

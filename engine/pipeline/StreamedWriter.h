@@ -48,6 +48,7 @@ class StreamedWriter {
     LayerOutput& output_;
     std::vector<std::string> mesh_names_;  ///< copies of the plan's tables (PlanTables)
     std::vector<MixVector> mixes_;
+    std::vector<std::array<std::uint8_t, 3>> outlet_colors_;
     std::mutex mutex_;
     std::condition_variable handed_;
     std::vector<const PlannedLayer*> queue_;  ///< handed over, in order

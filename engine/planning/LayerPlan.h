@@ -1,6 +1,8 @@
 #pragma once
 // The output of planning: for every layer, the ordered steps the print head takes. Plain data;
 // the G-code writer turns it into text without making any decisions of its own.
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -44,6 +46,8 @@ struct PlanStep {
     double acceleration_mm_s2 = 0;  ///< Travel/Extrude: M204 before the move when it changes (0 = none)
     double jerk_mm_s = 0;           ///< Travel/Extrude: M205 before the move when it changes (0 = none)
     int mix = -1;                   ///< Extrude: index into PrintPlan::mixes (mixing/MixingPass.h); -1 = none
+    /// Extrude: the colour predicted to leave the nozzle (index into PrintPlan::outlet_colors; -1 = none)
+    int outlet_color = -1;
     /// Extrude (spiralize): the nozzle ends the move this far above the layer's z (0 = at the height
     /// it is at); a spiral rises along its moves (toolpaths/Spiralize.h).
     coord_um rise_um = 0;
@@ -69,6 +73,8 @@ struct PrintPlan {
     std::vector<PlannedLayer> layers;
     std::vector<std::string> mesh_names;  ///< for ;MESH: markers
     std::vector<MixVector> mixes;         ///< filled by the mixing stage; empty in single mode
+    /// The distinct 8-bit sRGB colours predicted to leave the nozzle (mixing/OutletPrediction.h)
+    std::vector<std::array<std::uint8_t, 3>> outlet_colors;
 };
 
 }  // namespace mixengine

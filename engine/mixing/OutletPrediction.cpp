@@ -1,0 +1,103 @@
+#include "mixing/OutletPrediction.h"
+
+#include <cmath>
+#include <map>
+
+namespace mixengine {
+namespace {
+
+using MixKey = std::array<long, kMaxMixChannels>;
+
+/// Colours of mixes, looked up by the mix rounded to 1/1000 (colours closer than that are equal in 8 bits).
+class ColorCache {
+  public:
+    ColorCache(const PigmentModel& model, PrintPlan& plan) : model_(model), plan_(plan) {}
+    /// Index into plan.outlet_colors, and the colour's Lab.
+    std::pair<int, Lab> of(const MixVector& mix) {
+        MixKey key{};
+        for (int c = 0; c < kMaxMixChannels; ++c)
+            key[static_cast<std::size_t>(c)] = std::lround(mix[c] * 1000.0);
+        auto it = index_.find(key);
+        if (it == index_.end()) {
+            const Lab lab = model_.predictLab(mix);
+            const Rgb rgb = model_.space().srgbOf(lab);
+            int color = -1;
+            for (std::size_t i = 0; i < plan_.outlet_colors.size() && color < 0; ++i)
+                if (plan_.outlet_colors[i] == rgb)
+                    color = static_cast<int>(i);
+            if (color < 0) {
+                color = static_cast<int>(plan_.outlet_colors.size());
+                plan_.outlet_colors.push_back(rgb);
+            }
+            it = index_.emplace(key, std::pair{color, lab}).first;
+        }
+        return it->second;
+    }
+
+  private:
+    const PigmentModel& model_;
+    PrintPlan& plan_;
+    std::map<MixKey, std::pair<int, Lab>> index_;
+};
+
+void measure(const PlannedLayer& layer, const Point2& at, Feature feature, double length_mm, const Lab& asked,
+             const Lab& out, double share_distance, double tolerance, VisibleReport& report) {
+    const double de = deltaE00(asked, out);
+    report.visible_mm += length_mm;
+    report.within_de_mm += de <= kVisibleDeltaE00 ? length_mm : 0.0;
+    report.within_share_mm += share_distance <= tolerance ? length_mm : 0.0;
+    if (de > report.worst.delta_e00)
+        report.worst = {de, share_distance, layer.index, at, feature};
+}
+
+}  // namespace
+
+void VisibleReport::add(const VisibleReport& other) {
+    visible_mm += other.visible_mm;
+    within_de_mm += other.within_de_mm;
+    within_share_mm += other.within_share_mm;
+    if (other.worst.delta_e00 > worst.delta_e00)
+        worst = other.worst;
+}
+
+VisibleReport predictOutlet(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
+                            std::optional<Chamber>& chamber, const ChamberSpec& spec, double tolerance,
+                            const PigmentModel& model) {
+    VisibleReport report;
+    ColorCache colors(model, plan);
+    std::map<int, Lab> asked;
+    for (std::size_t l = 0; l < plan.layers.size(); ++l) {
+        PlannedLayer& layer = plan.layers[l];
+        std::optional<Point2> head;
+        Feature feature = Feature::Fill;
+        for (std::size_t k = 0; k < layer.steps.size(); ++k) {
+            PlanStep& step = layer.steps[k];
+            if (step.kind == PlanStep::Kind::SetFeature)
+                feature = step.feature;
+            const std::optional<Point2> from = head;
+            if (step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude ||
+                step.kind == PlanStep::Kind::LiftHead)
+                head = step.to;
+            if (step.kind != PlanStep::Kind::Extrude || step.mix < 0)
+                continue;
+            const MixVector& commanded = plan.mixes[static_cast<std::size_t>(step.mix)];
+            if (!chamber)
+                chamber.emplace(spec, commanded);
+            const MixVector out = chamber->push(commanded, step.volume_mm3);
+            const auto [color, out_lab] = colors.of(out);
+            step.outlet_color = color;
+            const StepTarget& t = targets[l][k];
+            if (!t.visible || t.mix < 0 || !from)
+                continue;
+            auto it = asked.find(t.mix);
+            if (it == asked.end())
+                it =
+                    asked.emplace(t.mix, model.predictLab(plan.mixes[static_cast<std::size_t>(t.mix)])).first;
+            measure(layer, step.to, feature, distanceMm(*from, step.to), it->second, out_lab,
+                    shareDistance(out, plan.mixes[static_cast<std::size_t>(t.mix)]), tolerance, report);
+        }
+    }
+    return report;
+}
+
+}  // namespace mixengine
