@@ -119,8 +119,8 @@ std::vector<std::size_t> segmentOrder(const std::vector<Segment>& segments, cons
         order.insert(order.end(), orphans.begin(), orphans.end());
     for (std::size_t g = 0; g < groups.size(); ++g) {
         const bool visible_first = g == 0 && holds_first;
-        append(order, segments, groups[g], !visible_first);
         append(order, segments, groups[g], visible_first);
+        append(order, segments, groups[g], !visible_first);
         if (g == 0 && holds_first)
             order.insert(order.end(), orphans.begin(), orphans.end());
     }
