@@ -1,4 +1,5 @@
-"""Per-vertex colours of Cura's layer view from the mixes the G-code printed (no Cura imports).
+"""Per-vertex colours of Cura's layer view from the colours the engine predicted in the G-code (no Cura
+imports).
 
 Cura's layer data (cura/LayerDataBuilder.py, LayerPolygon.py) holds, per layer, polygons of N + 1
 points and N typed lines; LayerDataBuilder.build() turns them into a vertex list (layers in ascending
@@ -10,7 +11,8 @@ line it belongs to colours every line exactly.
 A line is matched to the G-code move that printed it by layer and end point: the layer view's
 layers are numbered as ProcessSlicedLayersJob numbers them (MixGCode.viewLayerIds: from the lowest id,
 model layers right after a raft's), the G-code's by ";LAYER:n"; within a layer both lists are in print order. The points are (x, -y) of the G-code's
-(x, y) (LayerPolygon's scene frame). Lines without a match keep Cura's colour.
+(x, y) (LayerPolygon's scene frame). Lines without a match, or whose move has no predicted colour, keep
+Cura's colour.
 """
 import numpy
 
@@ -46,30 +48,33 @@ def matchLayer(line_xy, move_xy):
 
 
 class RecolourResult:
-    def __init__(self, colours, lines, matched):
+    def __init__(self, colours, lines, matched, coloured):
         self.colours = colours  # (vertices, 4) new material colours
         self.lines = lines  # extrusion lines in the layer view
-        self.matched = matched  # of which coloured from a G-code move
+        self.matched = matched  # of which matched to a G-code move
+        self.coloured = coloured  # of which given the move's predicted colour
 
 
-def recolour(layers, material_colours, gcode_mixes, move_rgb, layer_ids):
+def recolour(layers, material_colours, gcode_moves, move_rgb, layer_ids):
     """New per-vertex colours for `material_colours` (the built "colors" attribute, not changed).
 
     layers: {abs layer number: Layer with .polygons} as LayerDataBuilder holds them;
-    gcode_mixes: MixGCode.read() result; move_rgb: {layer id: (k, 3) colour of each extruding move};
+    gcode_moves: MixGCode.read() result; move_rgb: {layer id: (k, 3) colour of each extruding move, NaN =
+    none} (GCodeMoves.moveColours);
     layer_ids: {abs layer number: G-code layer id} (MixGCode.viewLayerIds).
     Returns None when the vertex count does not follow the builder's rule (nothing is changed then)."""
     colours = numpy.array(material_colours, dtype=numpy.float32, copy=True)
     vertex = 0
-    lines = matched = 0
+    lines = matched = coloured = 0
     for number in sorted(layers):
         layer_id = layer_ids.get(number)
-        layer_moves = gcode_mixes.layers.get(layer_id)
+        layer_moves = gcode_moves.layers.get(layer_id)
         polygons = layers[number].polygons
         arrays = [_polygonArrays(p) for p in polygons]
         line_colours, counts = _layerLineColours(arrays, layer_moves, move_rgb.get(layer_id))
         lines += counts[0]
         matched += counts[1]
+        coloured += counts[2]
         for (types, _), rgb in zip(arrays, line_colours):
             needed = numpy.ones((len(types), 2), dtype=bool)
             needed[1:, 0] = types[1:] != types[:-1]
@@ -84,13 +89,14 @@ def recolour(layers, material_colours, gcode_mixes, move_rgb, layer_ids):
             vertex += count
     if vertex != len(colours):
         return None
-    return RecolourResult(colours, lines, matched)
+    return RecolourResult(colours, lines, matched, coloured)
 
 
 def _layerLineColours(arrays, layer_moves, rgb):
-    """Per polygon: (lines, 3) colours (NaN = keep Cura's), and (extrusion lines, matched)."""
+    """Per polygon: (lines, 3) colours (NaN = keep Cura's), and (extrusion lines, matched, coloured)."""
     if layer_moves is None or rgb is None or not layer_moves.xy:
-        return [None] * len(arrays), (0, 0)
+        extrusions = sum(int((~numpy.isin(types, JUMP_TYPES)).sum()) for types, _ in arrays)
+        return [None] * len(arrays), (extrusions, 0, 0)
     move_xy = numpy.asarray(layer_moves.xy, dtype=numpy.float64)
     ends, extruding = [], []
     for types, data in arrays:
@@ -107,4 +113,5 @@ def _layerLineColours(arrays, layer_moves, rgb):
     for e in ends:
         result.append(line_rgb[start:start + len(e)])
         start += len(e)
-    return result, (int(all_extruding.sum()), int(hit.sum()))
+    coloured = int((~numpy.isnan(line_rgb[extrusion_rows[hit], 0])).sum())
+    return result, (int(all_extruding.sum()), int(hit.sum()), coloured)

@@ -1,25 +1,35 @@
-"""The filament mix of every extrusion, read from the G-code the engine wrote (no Cura imports).
+"""The extrusions of a mixing print and the colour the engine predicts for each, read from its G-code
+(no Cura imports).
 
 Cura holds the G-code of a slice as a list of chunks (scene.gcode_dict): the header, the start code,
 one chunk per layer starting with ";LAYER:n", the end code. This reads, per layer and in print order,
-every move that extrudes while moving in X/Y: where it ends (mm, machine frame), its mix (shares of
-the channels, adding up to 1) and its amount (filament units of the E axis: mm, or mm3 for
-volumetric flavours). Each dialect of mixing.def.json carries the mix its own way:
+every move that extrudes while moving in X/Y: where it ends (mm, machine frame), its amount (filament
+units of the E axis: mm, or mm3 for volumetric flavours) and the colour in force.
+
+The colour is the engine's own: in a mixing print it writes ";PREDICTED_COLOR:#rrggbb" before an
+extruding move whenever the predicted colour of what leaves the nozzle (its pigment model, after the
+mixing chamber) changes, and before the first extrusion of every layer; that colour holds for every
+extruding move until the next such comment. This module computes no colour: a move before any such
+comment (an older engine) or after a malformed one has none.
+
+Whether a move extrudes depends on how the dialect of mixing.def.json carries the filament:
 
   eb_axes      E and B words on every move; M82/M83, G90/G91 and G92 act on both
   klipper_b    E as usual, B a Klipper manual_stepper: follows G90/G91 only (not M82/M83), never
                reset by G92; MANUAL_STEPPER ... SET_POSITION= sets it
   rrf_colon    "E a:b[:c...]" words, relative
-  marlin_m163  "M163 S<i> P<w>" ... "M164": the mix of the following moves, E the total
-  marlin_m165  "M165 A B C D H I" (DIRECT_MIXING_IN_G1): the mix of the following moves, E the total
-  rrf_m567     "M567 P<tool> E a:b[:c...]": the mix of the following moves, E the total
+  marlin_m163, marlin_m165, rrf_m567
+               a mix command sets the shares of the following moves; E is the total
 
 Moves outside a ";LAYER:" chunk (start and end code, purge lines) set the state but are not listed.
 """
+import re
+
 import numpy
 
 DIALECTS = ("eb_axes", "klipper_b", "rrf_colon", "marlin_m163", "marlin_m165", "rrf_m567")
-M165_LETTERS = "ABCDHI"  # Marlin's mixing channel letters of M165
+PREDICTED = ";PREDICTED_COLOR:"
+_HEX = re.compile(r"#[0-9a-fA-F]{6}")
 
 
 class LayerMoves:
@@ -28,42 +38,46 @@ class LayerMoves:
     def __init__(self, layer_id):
         self.layer_id = layer_id
         self.xy = []  # (x, y) end points, mm
-        self.mix = []  # index into GCodeMixes.mixes
-        self.amount = []  # axis units (mm of filament, or mm3)
+        self.amount = []  # axis units (mm of filament, or mm3), all channels together
+        self.colour = []  # index into GCodeMoves.colours, -1: no predicted colour
 
     def arrays(self):
         return (numpy.asarray(self.xy, dtype=numpy.float64).reshape(-1, 2),
-                numpy.asarray(self.mix, dtype=numpy.int64), numpy.asarray(self.amount, dtype=numpy.float64))
+                numpy.asarray(self.amount, dtype=numpy.float64), numpy.asarray(self.colour, dtype=numpy.int64))
 
 
-class GCodeMixes:
-    """Result of read(): layers (id -> LayerMoves) in print order and the distinct mixes."""
+class GCodeMoves:
+    """Result of read(): layers (id -> LayerMoves) in print order and the distinct predicted colours."""
 
-    def __init__(self, channels):
-        self.channels = channels
+    def __init__(self):
         self.layers = {}
         self.order = []  # layer ids in print order
-        self._mixes = {}  # rounded tuple -> index
+        self.colours = []  # "#rrggbb" (lower case), in order of first appearance
+        self._colour_index = {}
+        self.malformed = 0  # PREDICTED_COLOR comments without a #rrggbb
 
-    def mixIndex(self, shares):
-        total = sum(shares)
-        if total <= 0:
-            return None
-        key = tuple(round(s / total, 4) for s in shares[:self.channels]) + (0.0,) * (self.channels - len(shares))
-        if key not in self._mixes:
-            self._mixes[key] = len(self._mixes)
-        return self._mixes[key]
+    def colourIndex(self, text):
+        if text not in self._colour_index:
+            self._colour_index[text] = len(self.colours)
+            self.colours.append(text)
+        return self._colour_index[text]
 
-    @property
-    def mixes(self):
-        """(distinct mixes, channels) array; row i is mix index i."""
-        table = numpy.zeros((len(self._mixes), self.channels))
-        for key, index in self._mixes.items():
-            table[index] = key
-        return table
+    def colourTable(self):
+        """(distinct colours, 3) sRGB in 0..1; row i is colour index i."""
+        rows = [[int(h[i:i + 2], 16) / 255.0 for i in (1, 3, 5)] for h in self.colours]
+        return numpy.array(rows, dtype=numpy.float64).reshape(-1, 3)
 
-    def hasMix(self):
-        return bool(self._mixes) and any(self.layers[i].xy for i in self.order)
+    def moveColours(self):
+        """{layer id: (k, 3) sRGB of each extruding move}, NaN where a move has no predicted colour."""
+        table = numpy.vstack((self.colourTable(), numpy.full((1, 3), numpy.nan)))  # index -1: the NaN row
+        return {i: table[numpy.asarray(self.layers[i].colour, dtype=numpy.int64)] for i in self.order}
+
+    def extrusions(self):
+        return sum(len(self.layers[i].xy) for i in self.order)
+
+    def predicted(self):
+        """How many extruding moves have a predicted colour."""
+        return sum(sum(1 for c in self.layers[i].colour if c >= 0) for i in self.order)
 
 
 def _words(line):
@@ -80,17 +94,15 @@ def _float(text, default=0.0):
 
 
 class _Reader:
-    def __init__(self, dialect, channels):
+    def __init__(self, dialect):
         self.dialect = dialect
-        self.result = GCodeMixes(channels)
-        self.channels = channels
+        self.result = GCodeMoves()
         self.xy = [0.0, 0.0]
         self.axes_relative = False  # G91 (X, Y, Z, and E: relative when G91 or M83, as Klipper and the
         self.extrude_relative = False  # M83   firmware models of tests/python/mixing_gcode.py read it)
         self.e = 0.0
         self.b = 0.0
-        self.state_mix = [1.0] + [0.0] * (channels - 1)  # mix-command dialects: the mix in force
-        self.m163 = [0.0] * max(channels, 6)
+        self.colour = -1  # the predicted colour in force
         self.layer = None
 
     # ---- state commands --------------------------------------------------------------------
@@ -103,8 +115,6 @@ class _Reader:
             self.extrude_relative = code == "M83"
         elif code == "G92":
             self.setPosition(words)
-        elif code in ("M163", "M164", "M165", "M567"):
-            self.mixCommand(code, words)
         elif code == "MANUAL_STEPPER" and "SET_POSITION=" in line.upper():
             self.b = _float(line.upper().split("SET_POSITION=", 1)[1].split()[0])
 
@@ -117,17 +127,13 @@ class _Reader:
         if "B" in words and self.dialect != "klipper_b":
             self.b = _float(words["B"])
 
-    def mixCommand(self, code, words):
-        if code == "M163":
-            index = int(_float(words.get("S"), -1))
-            if 0 <= index < len(self.m163):
-                self.m163[index] = _float(words.get("P"))
-        elif code == "M164":
-            self.state_mix = list(self.m163[:self.channels])
-        elif code == "M165":
-            self.state_mix = [_float(words.get(letter)) for letter in M165_LETTERS[:self.channels]]
-        elif code == "M567" and "E" in words:
-            self.state_mix = [_float(part) for part in words["E"].split(":")]
+    def predictedColour(self, line):
+        found = _HEX.match(line[len(PREDICTED):].strip())
+        if found is None:
+            self.result.malformed += 1
+            self.colour = -1
+        else:
+            self.colour = self.result.colourIndex(found.group(0).lower())
 
     # ---- moves -----------------------------------------------------------------------------
     def axisDelta(self, words, letter, current, relative):
@@ -137,7 +143,7 @@ class _Reader:
         return (value, current + value) if relative else (value - current, value)
 
     def amounts(self, words):
-        """Per-channel forward amounts of the move (None: the state's mix with total E)."""
+        """Per-axis forward amounts of the move."""
         if self.dialect == "rrf_colon" and ":" in words.get("E", ""):
             return [_float(p) for p in words["E"].split(":")]
         e_relative = self.axes_relative or self.extrude_relative
@@ -147,10 +153,10 @@ class _Reader:
             b_relative = e_relative if self.dialect == "eb_axes" else self.axes_relative
             d_b, self.b = self.axisDelta(words, "B", self.b, b_relative)
             return [d_e, d_b]
-        return [d_e * s for s in self.state_mix]
+        return [d_e]  # mix commands: E is the total
 
     def move(self, words):
-        shares = self.amounts(words)
+        amounts = self.amounts(words)
         start = list(self.xy)
         for axis, index in (("X", 0), ("Y", 1)):
             if axis in words:
@@ -158,14 +164,12 @@ class _Reader:
                 self.xy[index] = self.xy[index] + value if self.axes_relative else value
         if self.layer is None or self.xy == start:
             return
-        forward = [max(s, 0.0) for s in shares]
-        total = sum(forward)
+        total = sum(max(a, 0.0) for a in amounts)
         if total <= 1e-9:
             return
-        index = self.result.mixIndex(forward)
         self.layer.xy.append(tuple(self.xy))
-        self.layer.mix.append(index)
         self.layer.amount.append(total)
+        self.layer.colour.append(self.colour)
 
     # ---- chunks ----------------------------------------------------------------------------
     def chunk(self, text):
@@ -177,8 +181,10 @@ class _Reader:
             if first == ";":
                 if line.startswith(";LAYER:"):
                     self.startLayer(line)
+                elif line.startswith(PREDICTED):
+                    self.predictedColour(line)
                 continue
-            if first not in "GMgmM" and not line.startswith("MANUAL_STEPPER"):
+            if first not in "GMgm" and not line.startswith("MANUAL_STEPPER"):
                 continue
             code, words = _words(line)
             self.command(code, words, line)
@@ -194,11 +200,12 @@ class _Reader:
         self.layer = self.result.layers[layer_id]
 
 
-def read(chunks, dialect, channels):
-    """The extruding moves of `chunks` (Cura's list of G-code chunks, or [whole file]) per layer."""
+def read(chunks, dialect):
+    """The extruding moves of `chunks` (Cura's list of G-code chunks, or [whole file]) per layer, each with
+    the predicted colour in force."""
     if dialect not in DIALECTS:
         raise ValueError("unknown mixing dialect %r" % dialect)
-    reader = _Reader(dialect, max(1, int(channels)))
+    reader = _Reader(dialect)
     for text in chunks:
         reader.chunk(text)
     return reader.result

@@ -1,14 +1,15 @@
 """The filament mix in Cura's layer view (Preview stage, "Material Color" scheme).
 
-On a mixing printer (mixing_mode dual or gradient) the material of a line is its mix. When Cura's
-ProcessSlicedLayersJob builds the layer view of a slice (LayerDataBuilder.build, wrapped here), the
-mix of every extrusion is read from the G-code Cura holds for that build plate (MixGCode: E/B words,
-E a:b, M163/M164, M165, M567), passed through the mixing chamber (MixColours.delayedMixes: what
-leaves the nozzle, mixing_chamber_volume), coloured from mixing_channel_colors (linear-light blend)
-and written into the "colors" vertex attribute, which only the Material Color scheme draws
-(LayerRecolour). The layer slider and the simulation use the same vertices, so they follow. Line
-Type, Speed, ... and non-mixing printers are untouched. A legend of the channels (qml/MixLegend.qml)
-shows over the Preview while the Material Color scheme is on.
+On a mixing printer (mixing_mode dual, gradient or color) the material of a line is the colour the
+engine predicts for what leaves the nozzle there: its pigment model after the mixing chamber, written
+into the G-code as ";PREDICTED_COLOR:#rrggbb" comments. When Cura's ProcessSlicedLayersJob builds the
+layer view of a slice (LayerDataBuilder.build, wrapped here), every extruding move of the G-code Cura
+holds for that build plate is read with the colour in force (MixGCode) and that colour is written into
+the "colors" vertex attribute of the line the move printed, which only the Material Color scheme draws
+(LayerRecolour). The plugin computes no colour of its own: G-code without these comments (an older
+engine) leaves Cura's colours as they are. The layer slider and the simulation use the same vertices,
+so they follow. Line Type, Speed, ... and non-mixing printers are untouched. A legend of the channels
+(qml/MixLegend.qml) shows over the Preview while the Material Color scheme is on.
 
 Private Cura API: the wrapped LayerDataBuilder.build, the caller's job (its build plate), and
 scene.gcode_dict. Any failure is logged and leaves Cura's own colours.
@@ -17,7 +18,6 @@ import os
 import sys
 import time
 
-import numpy
 from PyQt5.QtCore import QObject, pyqtProperty, pyqtSignal
 
 from UM.Backend.Backend import BackendState
@@ -123,15 +123,10 @@ class MixPreview:
         if stack is None or stack.getProperty("mixing_mode", "value") in (None, "single"):
             return None
         channels = int(stack.getProperty("mixing_channels", "value") or 2)
-        extruder = stack.extruderList[0] if stack.extruderList else stack
         return {
             "dialect": stack.getProperty("mixing_dialect", "value"),
-            "channels": channels,
             "colours": MixColours.channelColours(stack.getProperty("mixing_channel_colors", "value"), channels,
                                                  self._default_colours),
-            "chamber_mm3": float(stack.getProperty("mixing_chamber_volume", "value") or 0.0),
-            "volumetric": stack.getProperty("machine_gcode_flavor", "value") == "RepRap (Volumetric)",
-            "diameter_mm": float(extruder.getProperty("material_diameter", "value") or 1.75),
         }
 
     def recolour(self, builder, layer_data, build_plate):
@@ -150,35 +145,23 @@ class MixPreview:
         self._done(info, settings)
 
     def _recolour(self, builder, layer_data, chunks, settings):
-        moves = MixGCode.read(chunks, settings["dialect"], settings["channels"])
-        if not moves.hasMix():
-            return {"state": "no mix in the G-code"}
-        move_rgb = self._moveColours(moves, settings)
+        moves = MixGCode.read(chunks, settings["dialect"])
+        if not moves.extrusions():
+            return {"state": "no extrusion in the G-code"}
+        if not moves.predicted():
+            return {"state": "no predicted colour in the G-code; colours left alone", "moves": moves.extrusions()}
         attribute = layer_data.getAttribute("colors")
         layer_ids = MixGCode.viewLayerIds(moves)
-        result = LayerRecolour.recolour(builder.getLayers(), attribute["value"], moves, move_rgb, layer_ids)
+        result = LayerRecolour.recolour(builder.getLayers(), attribute["value"], moves, moves.moveColours(),
+                                        layer_ids)
         if result is None:
             return {"state": "vertex count differs from the layer view; colours left alone"}
         attribute["value"] = result.colours
         attribute["value"].setflags(write=False)
         return {"state": "coloured", "lines": result.lines, "matched": result.matched,
-                "layers": len(moves.order), "distinct_mixes": len(moves.mixes)}
-
-    @staticmethod
-    def _moveColours(moves, settings):
-        """{layer id: (k, 3) colour of each extruding move}, through the chamber delay."""
-        mixes = moves.mixes
-        layers = [moves.layers[i].arrays() for i in moves.order]
-        index = numpy.concatenate([mix for _, mix, _ in layers])
-        amounts = numpy.concatenate([amount for _, _, amount in layers])
-        area = 1.0 if settings["volumetric"] else numpy.pi * (settings["diameter_mm"] / 2) ** 2
-        delivered = MixColours.delayedMixes(mixes[index], amounts * area, settings["chamber_mm3"])
-        rgb = MixColours.mixColours(delivered, settings["colours"])
-        result, start = {}, 0
-        for layer_id, (_, mix, _) in zip(moves.order, layers):
-            result[layer_id] = rgb[start:start + len(mix)]
-            start += len(mix)
-        return result
+                "coloured": result.coloured, "layers": len(moves.order), "moves": moves.extrusions(),
+                "predicted_moves": moves.predicted(), "distinct_colours": len(moves.colours),
+                "malformed_comments": moves.malformed}
 
     def _done(self, info, settings):
         info["channels"] = [_hex(c) for c in settings["colours"]] if settings else []

@@ -174,19 +174,33 @@ def test_preview_draws_the_painted_halves(tmp_path):
     assert right[2] > 150 and right[0] < 40 and right[1] < 40, right  # blue
 
 
-def delivered_share_b(path, chamber_mm3):
-    """(moves, commanded B shares, B shares leaving the nozzle by the plugin's plug-flow chamber model)."""
-    import sys
-
+def plug_flow(shares, volumes, chamber_mm3):
+    """The share leaving the nozzle during each extrusion when the chamber is plug flow: the average of the
+    commanded `shares` (one per extrusion, in print order, `volumes` mm3 > 0) over the extrusion's own volume
+    shifted back by `chamber_mm3`; before the first extrusion the chamber holds the first share."""
     import numpy
-    sys.path.insert(0, str(helpers.REPO / "plugin"))
-    import MixColours
+
+    ends = numpy.cumsum(volumes)
+    starts = ends - volumes
+    before_end = numpy.concatenate(([0.0], numpy.cumsum(shares * volumes)))[:-1]
+
+    def integral(u):  # of the commanded share over the cumulative volume [0, u]
+        i = numpy.clip(numpy.searchsorted(ends, u, side="left"), 0, len(ends) - 1)
+        inside = before_end[i] + numpy.clip(u - starts[i], 0.0, None) * shares[i]
+        return numpy.where(u > 0, inside, numpy.minimum(u, 0.0) * shares[0])
+
+    return (integral(ends - chamber_mm3) - integral(starts - chamber_mm3)) / volumes
+
+
+def delivered_share_b(path, chamber_mm3):
+    """(moves, commanded B shares, B shares leaving the nozzle of a plug-flow chamber)."""
+    import numpy
 
     area = math.pi * (2.85 / 2) ** 2  # fdmprinter's material_diameter
     extrusions = read_mixing_gcode(path, "eb_axes", channels=2).extrusions()
-    commanded = numpy.array([[a / m.total for a in m.amounts] for m in extrusions])
+    commanded = numpy.array([m.amounts[1] / m.total for m in extrusions])
     volume = numpy.array([m.total * area for m in extrusions])
-    return extrusions, commanded[:, 1], MixColours.delayedMixes(commanded, volume, chamber_mm3)[:, 1]
+    return extrusions, commanded, plug_flow(commanded, volume, chamber_mm3)
 
 
 def share_on_the_nozzle(extrusions, delivered):
@@ -204,7 +218,7 @@ def share_on_the_nozzle(extrusions, delivered):
 
 def test_chamber_delay_applies_to_painted_regions(tmp_path, report):
     """With mixing_chamber_volume each region's mix is commanded early, so that what leaves the nozzle (the
-    plugin's plug-flow model of the chamber, MixColours.delayedMixes) is mostly the region's mix; without the
+    plug-flow model of the chamber, plug_flow) is mostly the region's mix; without the
     compensation far less of it would be. Per-move mixes cannot be exact where the pieces alternate faster
     than the chamber empties (a move is not cut where the delayed boundary falls)."""
     chamber_mm3 = 5.0

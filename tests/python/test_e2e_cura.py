@@ -11,6 +11,10 @@ and the CuraHarness plugin drives the session without clicks (tests/e2e/README.m
   (cura_gradient_material_color.png: channel A at the bottom, B at the top, the legend of the channels),
   the layer slider at the middle (cura_gradient_material_color_layer99.png: no B yet), Line Type
   unchanged (cura_gradient_line_type.png); and that backend/location is given back.
+- yellow to blue (issue 26): the MakerPi with channel colours #ffff00,#0000ff and a gradient over the whole
+  cube. Material Color draws the colours the engine predicts and writes into the G-code
+  (";PREDICTED_COLOR:", its pigment model): the middle of the cube is green, not the grey of a linear-light
+  blend (cura_yellow_blue_material_color.png, and ..._layer99.png with the layer slider at the middle).
 - CMYK+W: the 5-channel M165 mixer with a multi-stop gradient (cura_cmykw_material_color.png).
 - raft: the MakerPi with a raft under a gradient (cura_raft_material_color.png): raft layers below 0, filament A.
 - single colour: the MakerPi in single mode stays one colour (cura_single_material_color.png), and
@@ -46,10 +50,16 @@ SHOTS = {"material": ARTIFACTS / "cura_gradient_material_color.png",
          "line_type": ARTIFACTS / "cura_gradient_line_type.png",
          "cmykw": ARTIFACTS / "cura_cmykw_material_color.png",
          "single": ARTIFACTS / "cura_single_material_color.png",
-         "raft": ARTIFACTS / "cura_raft_material_color.png"}
+         "raft": ARTIFACTS / "cura_raft_material_color.png",
+         "yellow_blue": ARTIFACTS / "cura_yellow_blue_material_color.png",
+         "yellow_blue_middle": ARTIFACTS / "cura_yellow_blue_material_color_layer99.png"}
 # the 3D view in the 1600 x 1000 screenshots: below the stage menu, right of the mix legend (whose swatches
 # carry the channel colours), left of the print settings panel
 VIEW_ROWS, VIEW_COLS = slice(170, 900), slice(260, 1040)
+PART_ROWS = slice(240, 900)  # the same without the far edge of the build plate (drawn in blue at the top left)
+# Cura's layers3d.shader draws a line of material colour c as c * (0.2 + N.L) + u_minimumAlbedo (0.1): every
+# pixel of a line is 0.1 plus a multiple of its colour, so (pixel - 0.1) has the chromaticity of the colour
+ALBEDO = 0.1
 
 pytestmark = pytest.mark.skipif(not shutil.which("xvfb-run") or not os.path.exists("/usr/bin/cura"),
                                 reason="needs xvfb-run and /usr/bin/cura (apt-get install cura xvfb xauth)")
@@ -278,6 +288,135 @@ def test_cura_print_information_shows_the_time_by_feature(gradient, report):
 def test_backend_location_given_back_on_shutdown(gradient):
     assert gradient["summary"]["cfg_backend_location"] == gradient["previous"]
     assert "[MixEngine] shutdown (plugin disabled): backend/location back to " + gradient["previous"] in gradient["log"]
+
+
+# ---- yellow to blue: the engine's pigment colours in Cura's layer view (issue 26) -------------------------------
+YELLOW_BLUE = "#ffff00,#0000ff"
+MIDDLE_LAYER = 99  # of the 20 mm cube at 0.1 mm (Fine): z 9.95..10.05 mm
+
+
+def written_colours(chunks):
+    """{layer id: the ;PREDICTED_COLOR: values the engine wrote in that layer, in order}."""
+    out = {}
+    for chunk in chunks:
+        if chunk.startswith(";LAYER:"):
+            layer = int(chunk.split("\n", 1)[0][7:])
+            out[layer] = [c.lower() for c in re.findall(r"^;PREDICTED_COLOR:(#[0-9a-fA-F]{6})\s*$", chunk, re.M)]
+    return out
+
+
+def rgb_of(hex_colour):
+    return numpy.array([int(hex_colour[i:i + 2], 16) / 255 for i in (1, 3, 5)])
+
+
+def chromaticity(rgb):
+    """(r, g, b) / (r + g + b) of the colour a pixel was drawn in (the pixel minus the minimum albedo)."""
+    q = numpy.clip(numpy.asarray(rgb, dtype=float) - ALBEDO, 1e-6, None)
+    return q / q.sum(axis=-1, keepdims=True)
+
+
+def part_mask(image):
+    """The pixels of printed lines in the 3D view: coloured, unlike the grey plate, ghost and background."""
+    part = image[PART_ROWS, VIEW_COLS]
+    return part.max(axis=2) - part.min(axis=2) > 0.08
+
+
+def is_green(rgb):
+    r, g, b = rgb
+    return g > r + 0.2 and g > b + 0.1
+
+
+@pytest.fixture(scope="module")
+def yellow_blue(tmp_path_factory, package):
+    work = tmp_path_factory.mktemp("cura_yellow_blue")
+    job = {"name": "cura_yellow_blue", "machine": "mixengine_makerpi_m2030x",
+           "global": {"mixing_mode": "gradient", "mixing_gradient_start": 0, "mixing_gradient_end": 100,
+                      "mixing_channel_colors": YELLOW_BLUE},
+           "models": [{"path": box(work / "cube20.stl", (20, 20, 20))}], "plugin_status": "MixEngine",
+           "gcode_output": str(work / "gcode.json"), "preview": True,
+           "screenshots": [{"path": str(SHOTS["yellow_blue"]), "layer_view_type": 0, "layer": None},
+                           {"path": str(SHOTS["yellow_blue_middle"]), "layer_view_type": 0, "layer": MIDDLE_LAYER}],
+           "camera": CAMERA}
+    summary, status, fixture = run_cura(job, work, package)
+    assert summary["backend_state"] == "Done"
+    chunks = json.loads((work / "gcode.json").read_text())["chunks"]
+    return {"status": status, "fixture": fixture, "chunks": chunks}
+
+
+def test_cura_shows_the_predicted_colour_of_every_line(yellow_blue):
+    """Every extrusion line of Cura's layer view is coloured from the ;PREDICTED_COLOR: the engine wrote for its
+    move; the legend lists the channels."""
+    preview = yellow_blue["status"]["plugin_status_end"]["preview"]
+    assert preview["state"] == "coloured", preview
+    assert preview["coloured"] == preview["matched"] == preview["lines"] > 1000, preview
+    assert preview["predicted_moves"] == preview["moves"] and preview["malformed_comments"] == 0, preview
+    written = written_colours(yellow_blue["chunks"])
+    assert all(written.values()) and preview["distinct_colours"] == len({c for w in written.values() for c in w})
+    channels = yellow_blue["status"]["plugin_status_end"]["legend"]["channels"]
+    assert channels == [{"name": "A", "color": "#ffff00"}, {"name": "B", "color": "#0000ff"}]
+
+
+def test_a_yellow_to_blue_gradient_is_green_in_the_middle_of_cura_layer_view(yellow_blue, engine, report):
+    """Issue 26: with the layer slider at the middle of the cube, the cut edge of the print shows the colour the
+    engine predicted for that layer (the chromaticity of the pixels, shading taken out, within 0.02 of the
+    written colour's), and that colour is green (G well above R and B), as `mixengine mix` predicts for the
+    50:50 mix; a linear-light blend of yellow and blue, what the plugin used to draw, would be grey."""
+    written = written_colours(yellow_blue["chunks"])
+    assert abs(MIDDLE_LAYER - (len(written) - 1) / 2) <= 1, len(written)  # the middle of the cube
+    assert len(set(written[MIDDLE_LAYER])) == 1, written[MIDDLE_LAYER]  # one mix per layer (no chamber)
+    middle = written[MIDDLE_LAYER][0]
+    assert is_green(rgb_of(middle)), middle
+    mix = helpers.mixengine("mix", "--colors", YELLOW_BLUE, "--ratio", "0.5:0.5")
+    assert mix.returncode == 0, mix.stderr
+    half = re.search(r"^predicted\s+(#[0-9a-f]{6})$", mix.stdout, re.M).group(1)
+    assert numpy.abs(rgb_of(middle) - rgb_of(half)).max() <= 12 / 255, (middle, half)  # about 50:50 there
+    # the cut: the first printed pixels below the top of the part, in the middle of its width
+    image = screenshot(SHOTS["yellow_blue_middle"])
+    mask = part_mask(image)
+    columns = numpy.flatnonzero(mask.any(axis=0))
+    left, right = numpy.percentile(columns, 30), numpy.percentile(columns, 70)
+    edge = []
+    for col in range(int(left), int(right) + 1):
+        rows = numpy.flatnonzero(mask[:, col])
+        if len(rows):
+            edge += [image[PART_ROWS.start + r, VIEW_COLS.start + col] for r in range(rows[0] + 2, rows[0] + 8)
+                     if mask[r, col]]
+    assert len(edge) > 300, len(edge)
+    seen = numpy.median(chromaticity(numpy.array(edge)), axis=0)
+    expected = chromaticity(rgb_of(middle) + ALBEDO)
+    assert numpy.abs(seen - expected).max() <= 0.02, (seen, expected)
+    assert seen[1] > seen[0] + 0.2 and seen[1] > seen[2] + 0.1, seen  # green
+    grey = chromaticity(numpy.full(3, 0.735) + ALBEDO)  # yellow and blue blended in linear light
+    report(f"Cura e2e yellow to blue: {SHOTS['yellow_blue_middle']}: layer {MIDDLE_LAYER} drawn with chromaticity "
+           f"{numpy.round(seen, 3).tolist()}, the engine's {middle} {numpy.round(expected, 3).tolist()} "
+           f"(a linear blend: {numpy.round(grey, 3).tolist()}); median pixel "
+           f"{numpy.round(numpy.median(numpy.array(edge), axis=0) * 255).astype(int).tolist()}")
+
+
+def test_yellow_to_blue_in_cura_runs_yellow_green_blue_from_bottom_to_top(yellow_blue, report):
+    """The whole cube in Material Color: each printed pixel is given the layer whose written colour has the
+    nearest chromaticity; yellow's layers sit at the bottom of the picture, the middle (green) layers above
+    them, blue's at the top, and the pixels fit the written colours closely."""
+    written = written_colours(yellow_blue["chunks"])
+    layers = sorted(written)
+    table = chromaticity(numpy.array([rgb_of(written[i][0]) for i in layers]) + ALBEDO)
+    image = screenshot(SHOTS["yellow_blue"])
+    mask = part_mask(image)
+    rows = numpy.nonzero(mask)[0] + PART_ROWS.start
+    pixels = chromaticity(image[PART_ROWS, VIEW_COLS][mask])
+    distance = numpy.abs(pixels[:, None, :] - table[None, :, :]).max(axis=2)
+    nearest = numpy.array(layers)[distance.argmin(axis=1)]
+    fit = distance.min(axis=1)
+    assert len(pixels) > 20000 and numpy.mean(fit <= 0.03) > 0.9, (len(pixels), numpy.mean(fit <= 0.03))
+    third = len(layers) / 3
+    bottom, centre, top = (rows[(nearest >= lo) & (nearest < hi)] for lo, hi in
+                           ((0, third), (len(layers) / 2 - 10, len(layers) / 2 + 10), (2 * third, len(layers))))
+    assert min(len(bottom), len(centre), len(top)) > 1000, (len(bottom), len(centre), len(top))
+    assert numpy.median(bottom) > numpy.median(centre) > numpy.median(top)  # rows grow downwards
+    report(f"Cura e2e yellow to blue: {SHOTS['yellow_blue']}: {len(pixels)} printed pixels, "
+           f"{100 * numpy.mean(fit <= 0.03):.1f} % within 0.03 of a written colour's chromaticity; median rows "
+           f"bottom third {numpy.median(bottom):.0f}, middle {numpy.median(centre):.0f}, "
+           f"top third {numpy.median(top):.0f}")
 
 
 # ---- five channels, multi-stop: the CMYK+W mixer (Marlin M165) ----------------------------------------------
