@@ -121,7 +121,7 @@ def slice_makerpi(out, settings, models):
         args += ["-l", path]
         for s in per_mesh:
             args += ["-s", s]
-    proc = helpers.mixengine(*args, "-o", out)
+    proc = helpers.mixengine(*args, "-o", out, "--preview", out.with_suffix(".png"))
     assert proc.returncode == 0, proc.stderr
     return out
 
@@ -238,3 +238,68 @@ def test_z_gradient_lands_at_its_height(sliced, tmp_path, report):
     report(f"chamber gradient {GRADIENT[0]}-{GRADIENT[1]} %: {100 * fraction:.1f} % of {length:.0f} mm outer wall "
            f"within {TOLERANCE} (worst {worst:.3f}); side view: {tmp_path / 'gradient_outer_walls.png'}")
     assert fraction >= 0.98
+
+
+def predicted_colours(gcode):
+    """The ;PREDICTED_COLOR: in force at each line of the layers that moves in XY and pushes E or B forward."""
+    colours, current, last, in_layers = [], None, {"E": 0.0, "B": 0.0}, False
+    for line in open(gcode):
+        in_layers = in_layers or line.startswith(";LAYER:")
+        if line.startswith(";PREDICTED_COLOR:"):
+            current = line.split(":", 1)[1].strip()
+        words = line.split(";")[0].split()
+        if words[:1] == ["G92"]:
+            for w in words[1:]:
+                if w[0] in last:
+                    last[w[0]] = float(w[1:])
+        if words[:1] not in (["G0"], ["G1"]):
+            continue
+        forward, moves_xy = False, any(w[0] in "XY" for w in words[1:])
+        for w in words[1:]:
+            if w[0] in last:
+                value = float(w[1:])
+                forward = forward or value > last[w[0]]
+                last[w[0]] = value
+        if moves_xy and forward and in_layers:
+            colours.append(current)
+    return colours
+
+
+def mix_colour(ratio):
+    proc = helpers.mixengine("mix", "--colors", YELLOW_BLUE, "--ratio", ratio)
+    assert proc.returncode == 0, proc.stderr
+    text = next(line.split()[1] for line in proc.stdout.splitlines() if line.startswith("predicted"))
+    return tuple(int(text[i:i + 2], 16) for i in (1, 3, 5))
+
+
+@pytest.mark.parametrize("name", PRINTS)
+def test_the_predicted_colour_is_what_the_replay_lets_out(sliced, name, report):
+    """The engine's ;PREDICTED_COLOR: on outer walls is the pigment colour of the mix the independent replay
+    lets out there (to the engine's 1/1000 rounding of the mix), and its --preview shows those colours."""
+    p = sliced(name)
+    extruding = [r for r in p.replayed if r.extruding]
+    colours = predicted_colours(p.gcode)
+    assert len(colours) == len(extruding)
+    walls = [(r, c) for r, c in zip(extruding, colours) if r.move.feature == "WALL-OUTER"]
+    sample = walls[:: max(1, len(walls) // 12)]
+    worst = 0
+    for r, written in sample:
+        share_b = r.outlet[1] / sum(r.outlet)
+        expected = mix_colour(f"{1 - share_b:.4f}:{share_b:.4f}")
+        got = tuple(int(written[i:i + 2], 16) for i in (1, 3, 5))
+        worst = max(worst, max(abs(a - b) for a, b in zip(got, expected)))
+    report(f"chamber {name}: ;PREDICTED_COLOR: vs the replay's outlet through the pigment model, worst "
+           f"{worst}/255 over {len(sample)} outer-wall moves; preview: {p.gcode.with_suffix('.png')}")
+    assert worst <= 3
+    # the preview: the front face's left and right quarters in the colours written for those walls
+    width, height, rows = png_pixels(p.gcode.with_suffix(".png"))
+    xs = [x for r, _ in walls for x in (r.move.start[0], r.move.end[0])]
+    left = [c for r, c in walls if r.move.end[0] < (min(xs) + max(xs)) / 2]
+    right = [c for r, c in walls if r.move.end[0] > (min(xs) + max(xs)) / 2]
+    for side, written in (("left", left), ("right", right)):
+        common = max(set(written), key=written.count)
+        want = tuple(int(common[i:i + 2], 16) for i in (1, 3, 5))
+        found = any(all(abs(a - b) <= 0.2 * b + 4 for a, b in zip(px, want))
+                    for row in rows[height // 3: 2 * height // 3: 4]
+                    for px in zip(row[::3], row[1::3], row[2::3]))
+        assert found, f"{side} walls' colour {common} not in the preview"
