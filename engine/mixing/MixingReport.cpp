@@ -62,8 +62,8 @@ std::vector<std::string> MixingReport::headerLines() const {
     };
     if (planned)
         lines.push_back("MIXING.PURGE_MM3_AT_TOLERANCE_" + fixed(2 * tolerance, 3) + ":" +
-                        fixed(transitions.looser_needed_mm3, 1) + " (needed at " + fixed(tolerance, 3) + ": " +
-                        fixed(transitions.needed_mm3, 1) + ")");
+                        fixed(transitions.looser_needed_mm3, 1) + " (needed at " + fixed(tolerance, 3) +
+                        ": " + fixed(transitions.needed_mm3, 1) + ")");
     if (transitions.unpurged_mm3 > 0.5)
         lines.push_back("MIXING.UNPURGED_MM3:" + fixed(transitions.unpurged_mm3, 1));
     if (!sequence_hint.empty())
