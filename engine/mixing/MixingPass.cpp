@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <memory>
 
 #include "mixing/ChamberDelay.h"
+#include "mixing/FieldBands.h"
 #include "mixing/LayerOrder.h"
 #include "mixing/MixSchedule.h"
 #include "mixing/PaintSchedule.h"
@@ -18,7 +20,8 @@ struct ScopeSchedule {
     MeshMixing mixing;
     coord_um bottom_um = 0;
     coord_um top_um = 0;
-    MeshPaint paint;  ///< color mode, painted 3MF faces: regions and their solved colours
+    MeshPaint paint;                    ///< color mode, painted 3MF faces: regions and their solved colours
+    std::unique_ptr<FieldBands> bands;  ///< gradient along x, y or radial: its bands (the regions)
 };
 
 struct MixLess {
@@ -56,8 +59,21 @@ void reportColors(const std::string& name, const MeshMixing& mixing, Log& log) {
     }
 }
 
+const char* axisName(GradientAxis axis) {
+    switch (axis) {
+        case GradientAxis::X:
+            return "x";
+        case GradientAxis::Y:
+            return "y";
+        case GradientAxis::Radial:
+            return "radial";
+        default:
+            return "z";
+    }
+}
+
 std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingOutput& output,
-                                         const PigmentModel* colors, Log& log) {
+                                         const PigmentModel* colors, double tolerance, Log& log) {
     std::vector<ScopeSchedule> schedules;
     for (const MixingMesh& m : group.meshes) {
         ScopeSchedule& s = schedules.emplace_back();
@@ -68,6 +84,13 @@ std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingO
             s.paint =
                 paintOf(*m.mesh, *m.settings, parseChannelColors(*group.settings, output.channels), *colors);
             s.mixing.colors.insert(s.mixing.colors.end(), s.paint.colors.begin(), s.paint.colors.end());
+        }
+        if (s.mixing.mode == MixingMode::Gradient && s.mixing.axis != GradientAxis::Z && m.mesh) {
+            s.bands = std::make_unique<FieldBands>(s.mixing, *m.mesh, tolerance);
+            char text[160];
+            std::snprintf(text, sizeof text, "': %s gradient in %d bands of %.2f mm", axisName(s.mixing.axis),
+                          s.bands->bands(), s.bands->bandWidthMm());
+            log.info("mixing: '" + m.name + text);
         }
         reportColors(m.name, s.mixing, log);
     }
@@ -80,7 +103,10 @@ std::vector<std::vector<int>> paintedRegions(PrintPlan& plan, const MixingGroup&
     std::vector<PaintedMesh> painted;
     bool any = false;
     for (std::size_t m = 0; m < meshes.size(); ++m) {
-        painted.push_back({meshes[m].paint.regions.get(), group.meshes[m].lift_um});
+        const RegionField* field = meshes[m].paint.regions
+                                       ? static_cast<const RegionField*>(meshes[m].paint.regions.get())
+                                       : meshes[m].bands.get();
+        painted.push_back({field, group.meshes[m].lift_um});
         any = any || painted.back().regions;
     }
     if (!any)
@@ -104,6 +130,9 @@ ScopeSchedule groupSchedule(const MixingGroup& group, const MixingOutput& output
 }
 
 MixVector scheduledMix(const ScopeSchedule& s, coord_um layer_z) {
+    if (s.mixing.mode == MixingMode::Gradient && s.mixing.axis != GradientAxis::Z)
+        return s.mixing.stops.front()
+            .mix;  // outside the bands (the skirt of a print graded along x): its start
     return targetMix(s.mixing, micronsToMm(layer_z - s.bottom_um), micronsToMm(s.top_um - s.bottom_um));
 }
 
@@ -141,10 +170,11 @@ struct GroupSchedules {
             return raft;
         if (scope == kSupportScope)
             return support;
-        if (region >= 0)
-            return meshes[static_cast<std::size_t>(scope)]
-                .paint.colors[static_cast<std::size_t>(region)]
-                .solution.mix;
+        if (region >= 0) {
+            const ScopeSchedule& mesh = meshes[static_cast<std::size_t>(scope)];
+            return mesh.bands ? mesh.bands->bandMix(region)
+                              : mesh.paint.colors[static_cast<std::size_t>(region)].solution.mix;
+        }
         const bool own = scope >= 0 && static_cast<std::size_t>(scope) < meshes.size();
         return scheduledMix(own ? meshes[static_cast<std::size_t>(scope)] : nonmesh, layer_z);
     }
@@ -294,6 +324,36 @@ std::string sequenceHint(const MixingGroup& group, const std::vector<std::vector
     return text;
 }
 
+bool anyBands(const std::vector<ScopeSchedule>& meshes) {
+    return std::any_of(meshes.begin(), meshes.end(),
+                       [](const ScopeSchedule& s) { return s.bands != nullptr; });
+}
+
+/// One warning per model whose field (x, y or radial) the chamber cannot follow without purging.
+void warnAboutFields(const MixingGroup& group, const std::vector<ScopeSchedule>& meshes,
+                     const MixingReport& report, Log& log) {
+    if (report.transitions.changes == 0)
+        return;
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+        if (!meshes[m].bands || meshes[m].bands->bands() < 2)
+            continue;
+        const auto it = report.visible.by_mesh.find(static_cast<int>(m));
+        const VisibleFigure figure = it == report.visible.by_mesh.end() ? VisibleFigure{} : it->second;
+        const double whole = figure.visible_mm > 0 ? figure.visible_mm : 1.0;
+        char text[400];
+        std::snprintf(
+            text, sizeof text,
+            "': its %s gradient changes faster than the mixing chamber can follow (%d bands of %.1f mm in "
+            "a layer): the print purges %.0f mm3 for it and the bands of the other models, and %.1f %% of "
+            "its visible surface leaves the nozzle within %.2f of its band's mix (%.1f %% within dE00 3 of "
+            "it)",
+            axisName(meshes[m].mixing.axis), meshes[m].bands->bands(), meshes[m].bands->bandWidthMm(),
+            report.transitions.purge_mm3, 100.0 * figure.within_share_mm / whole, report.tolerance,
+            100.0 * figure.within_de_mm / whole);
+        log.warning("mixing: '" + group.meshes[m].name + text);
+    }
+}
+
 }  // namespace
 
 MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
@@ -305,23 +365,27 @@ MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     // The channel colours' pigment model (a few milliseconds): any scope may ask for a colour.
     const PigmentModel colors(parseChannelColors(*group.settings, output.channels));
     const PigmentModel* model = &colors;
-    GroupSchedules schedules;
-    schedules.meshes = meshSchedules(group, output, model, log);
-    schedules.nonmesh = groupSchedule(group, output, model, schedules.meshes);
-    schedules.raft = parseRaftMix(*group.settings, output);
-    schedules.support = parseSupportMix(*group.settings, output);
     MixingReport report;
     report.mixing = true;
     report.chamber = parseChamberSpec(*group.settings);
     report.tolerance = parseTransitionTolerance(*group.settings);
+    GroupSchedules schedules;
+    schedules.meshes = meshSchedules(group, output, model, report.tolerance, log);
+    schedules.nonmesh = groupSchedule(group, output, model, schedules.meshes);
+    schedules.raft = parseRaftMix(*group.settings, output);
+    schedules.support = parseSupportMix(*group.settings, output);
     warnAboutDialect(output, *group.settings, log);
 
     const std::vector<std::vector<int>> regions = paintedRegions(plan, group, schedules.meshes);
     std::vector<std::vector<StepTarget>> targets = targetMixes(plan, schedules, regions);
     if (!report.chamber.ideal() && mixChangesInLayers(targets)) {
         report.planned = true;
+        // a band's own error (at most a quarter of the tolerance, mixing/FieldBands.h) leaves the rest to the
+        // chamber
+        const double planned_tolerance =
+            anyBands(schedules.meshes) ? 0.75 * report.tolerance : report.tolerance;
         report.transitions = planTransitions(
-            plan, targets, transitionSettings(*group.settings, report.chamber, report.tolerance));
+            plan, targets, transitionSettings(*group.settings, report.chamber, planned_tolerance));
         report.sequence_hint = sequenceHint(group, regions, report.transitions);
         for (const std::string& warning : report.transitions.warnings)
             log.warning(warning);
@@ -330,6 +394,7 @@ MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     }
     std::optional<Chamber> chamber;
     report.visible = predictOutlet(plan, targets, chamber, report.chamber, report.tolerance, colors);
+    warnAboutFields(group, schedules.meshes, report, log);
     return report;
 }
 

@@ -39,6 +39,8 @@ const char* defaultText(std::string_view key) {
         return "mixing_b";
     if (key == "mixing_gradient_unit")
         return "percent";
+    if (key == "mixing_gradient_axis")
+        return "z";
     if (key == "mixing_gradient_start")
         return "0";
     if (key == "mixing_gradient_end")
@@ -258,6 +260,23 @@ std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_v
     return stops;
 }
 
+namespace {
+
+GradientAxis parseAxis(const Settings& scope) {
+    const std::string axis = trimmed(textOf(scope, "mixing_gradient_axis"));
+    if (axis == "z")
+        return GradientAxis::Z;
+    if (axis == "x")
+        return GradientAxis::X;
+    if (axis == "y")
+        return GradientAxis::Y;
+    if (axis == "radial")
+        return GradientAxis::Radial;
+    fail("mixing_gradient_axis", "unknown axis '" + axis + "' (z, x, y or radial)");
+}
+
+}  // namespace
+
 MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, const PigmentModel* colors) {
     MeshMixing m;
     m.mode = output.mode;
@@ -277,6 +296,7 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, co
         m.unit = HeightUnit::Millimetres;
     else
         fail("mixing_gradient_unit", "unknown unit '" + unit + "' (percent or mm)");
+    m.axis = parseAxis(scope);
     if (m.mode == MixingMode::Dual) {
         m.fixed = parseMixRatio("mixing_ratio", textOf(scope, "mixing_ratio"), output.channels);
         return m;

@@ -41,6 +41,14 @@ enum class HeightUnit {
     Millimetres,  ///< mm above the mesh's bottom
 };
 
+/// mixing_gradient_axis: the direction a gradient's stops are measured along.
+enum class GradientAxis {
+    Z,       ///< height (the seed's gradient)
+    X,       ///< from the model's left side
+    Y,       ///< from the model's front side
+    Radial,  ///< from the model's vertical centre axis outward
+};
+
 struct GradientStop {
     double height = 0;  ///< in the schedule's unit
     MixVector mix;
@@ -56,6 +64,7 @@ struct SolvedColor {
 struct MeshMixing {
     MixingMode mode = MixingMode::Single;
     HeightUnit unit = HeightUnit::Percent;
+    GradientAxis axis = GradientAxis::Z;
     std::vector<GradientStop> stops;  ///< gradient mode: at least one, heights non-decreasing
     MixVector fixed;                  ///< dual and color mode
     std::vector<SolvedColor> colors;  ///< color mode: the target; gradient colours: one per stop

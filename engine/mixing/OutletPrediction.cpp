@@ -40,14 +40,26 @@ class ColorCache {
     std::map<MixKey, std::pair<int, Lab>> index_;
 };
 
-void measure(const PlannedLayer& layer, const Point2& at, Feature feature, double length_mm, const Lab& asked,
-             const Lab& out, double share_distance, double tolerance, VisibleReport& report) {
+/// Where a visible extrusion is.
+struct Where {
+    int layer = 0;
+    Point2 at{};
+    Feature feature = Feature::Fill;
+    int mesh = -1;
+};
+
+void measure(const Where& where, double length_mm, const Lab& asked, const Lab& out, double share_distance,
+             double tolerance, VisibleReport& report) {
+    const int mesh = where.mesh;
     const double de = deltaE00(asked, out);
-    report.visible_mm += length_mm;
-    report.within_de_mm += de <= kVisibleDeltaE00 ? length_mm : 0.0;
-    report.within_share_mm += share_distance <= tolerance ? length_mm : 0.0;
+    for (double* sum : {&report.visible_mm, &report.by_mesh[mesh].visible_mm})
+        *sum += length_mm;
+    for (double* sum : {&report.within_de_mm, &report.by_mesh[mesh].within_de_mm})
+        *sum += de <= kVisibleDeltaE00 ? length_mm : 0.0;
+    for (double* sum : {&report.within_share_mm, &report.by_mesh[mesh].within_share_mm})
+        *sum += share_distance <= tolerance ? length_mm : 0.0;
     if (de > report.worst.delta_e00)
-        report.worst = {de, share_distance, layer.index, at, feature};
+        report.worst = {de, share_distance, where.layer, where.at, where.feature};
 }
 
 }  // namespace
@@ -70,10 +82,13 @@ VisibleReport predictOutlet(PrintPlan& plan, const std::vector<std::vector<StepT
         PlannedLayer& layer = plan.layers[l];
         std::optional<Point2> head;
         Feature feature = Feature::Fill;
+        int mesh = -1;
         for (std::size_t k = 0; k < layer.steps.size(); ++k) {
             PlanStep& step = layer.steps[k];
             if (step.kind == PlanStep::Kind::SetFeature)
                 feature = step.feature;
+            if (step.kind == PlanStep::Kind::SetMesh)
+                mesh = step.mesh_index;
             const std::optional<Point2> from = head;
             if (step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude ||
                 step.kind == PlanStep::Kind::LiftHead)
@@ -93,7 +108,7 @@ VisibleReport predictOutlet(PrintPlan& plan, const std::vector<std::vector<StepT
             if (it == asked.end())
                 it =
                     asked.emplace(t.mix, model.predictLab(plan.mixes[static_cast<std::size_t>(t.mix)])).first;
-            measure(layer, step.to, feature, distanceMm(*from, step.to), it->second, out_lab,
+            measure({layer.index, step.to, feature, mesh}, distanceMm(*from, step.to), it->second, out_lab,
                     shareDistance(out, plan.mixes[static_cast<std::size_t>(t.mix)]), tolerance, report);
         }
     }

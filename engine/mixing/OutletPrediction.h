@@ -7,6 +7,7 @@
 // the visible surface (mixing/LayerOrder.h visibleFeature: outer walls, skin, ironing) is measured
 // against what each extrusion asked for: by length, the share within ΔE00 ≤ 3 and the share within
 // the transition tolerance, and the worst place.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,11 +28,17 @@ struct VisiblePlace {
     Feature feature = Feature::WallOuter;
 };
 
+/// Lengths of visible extrusion (mm): all, within ΔE00 ≤ kVisibleDeltaE00, within the tolerance.
+struct VisibleFigure {
+    double visible_mm = 0, within_de_mm = 0, within_share_mm = 0;
+};
+
 struct VisibleReport {
     double visible_mm = 0;       ///< length of the visible extrusions
     double within_de_mm = 0;     ///< of which within ΔE00 ≤ kVisibleDeltaE00 of what they asked
     double within_share_mm = 0;  ///< of which within the tolerance (shareDistance)
     VisiblePlace worst;
+    std::map<int, VisibleFigure> by_mesh;  ///< by PlanStep::mesh_index (this group's meshes only)
     void add(const VisibleReport& other);
 };
 

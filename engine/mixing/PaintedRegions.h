@@ -10,16 +10,17 @@
 
 #include "geometry/Point.h"
 #include "mesh/Mesh.h"
+#include "mixing/RegionField.h"
 
 namespace mixengine {
 
-class PaintedRegions {
+class PaintedRegions : public RegionField {
   public:
     /// `face_region[f]`: the region of mesh face f (−1 = not painted); `mesh` is not kept.
     PaintedRegions(const Mesh& mesh, std::vector<int> face_region, coord_um depth_um);
 
     /// The region at `p` (microns, the mesh's frame), −1 for none.
-    int regionAt(const Point3& p) const;
+    int regionAt(const Point3& p) const override;
 
   private:
     struct Triangle {

@@ -18,7 +18,7 @@ bool isRaftFeature(Feature feature) {
 struct Segment {
     Point2 from, to;
     coord_um z;
-    const PaintedRegions* regions;
+    const RegionField* regions;
 
     Point2 at(double t) const {
         return {from.X + static_cast<coord_um>(std::llround(t * static_cast<double>(to.X - from.X))),

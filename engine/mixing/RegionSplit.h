@@ -1,12 +1,12 @@
 #pragma once
-// Moves that cross painted regions (mixing/PaintedRegions.h) are cut where the region changes, so
-// that each piece can carry its region's mix. Every extrusion of a painted mesh is sampled every
+// Moves that cross regions (mixing/RegionField.h: painted regions, gradient bands) are cut where the region
+// changes, so that each piece can carry its region's mix. Every extrusion of a painted mesh is sampled every
 // 0.2 mm at the middle of its layer's height; between two samples of different regions the
 // boundary is found by bisection to 5 µm, and the extrusion is cut there into pieces that keep its
 // speed, feature and settings, their volume in proportion to their length.
 #include <vector>
 
-#include "mixing/PaintedRegions.h"
+#include "mixing/RegionField.h"
 #include "planning/LayerPlan.h"
 
 namespace mixengine {
@@ -14,7 +14,7 @@ namespace mixengine {
 /// What the splitter needs of one mesh: its regions (null: not painted) and how far the printed
 /// layers are lifted above the mesh's own frame (the raft).
 struct PaintedMesh {
-    const PaintedRegions* regions = nullptr;
+    const RegionField* regions = nullptr;
     coord_um lift_um = 0;
 };
 

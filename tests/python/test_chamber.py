@@ -303,3 +303,34 @@ def test_the_predicted_colour_is_what_the_replay_lets_out(sliced, name, report):
                     for row in rows[height // 3: 2 * height // 3: 4]
                     for px in zip(row[::3], row[1::3], row[2::3]))
         assert found, f"{side} walls' colour {common} not in the preview"
+
+
+def test_x_gradient_bands_follow_the_field(models, tmp_path, report):
+    """Issue 27, part 1: a 60 × 12 × 10 mm bar graded along x from A (left side) to B (right side). Each layer is
+    cut into bands printed in the order of their mix; the replayed outer walls follow the continuous field (the
+    share of B = the distance from the bar's left side over its 60 mm), and the slice warns that the chamber
+    cannot follow such a field without purging."""
+    bar = box_stl(tmp_path / "bar.stl", 60, 12, 10)
+    out = tmp_path / "bar.gcode"
+    proc = helpers.mixengine("slice", "-j", PROFILE, *[w for s in CHAMBER for w in ("-s", s)], "-s", "mixing_mode=gradient",
+                             "-s", "mixing_gradient_axis=x", "-s", "mixing_gradient_start=0", "-s",
+                             "mixing_gradient_end=100", "-s", f"mixing_channel_colors={YELLOW_BLUE}", "-l", bar, "-o",
+                             out, "--preview", tmp_path / "bar.png")
+    assert proc.returncode == 0, proc.stderr
+    warnings = [line for line in proc.stderr.splitlines() if "gradient changes faster than the mixing chamber" in line]
+    assert len(warnings) == 1 and "bar.stl" in warnings[0] and " x gradient" in warnings[0], proc.stderr
+    replayed = replay(read_mixing_gcode(out, "eb_axes").moves, DIAMETER_MM, VOLUME_MM3, STAGES)
+    walls = [r for r in replayed if r.extruding and r.move.feature == "WALL-OUTER"]
+    xs = [x for r in walls for x in (r.move.start[0], r.move.end[0])]
+    left = (min(xs) + max(xs)) / 2 - 30.0
+
+    def asked(move):
+        share = min(1.0, max(0.0, ((move.start[0] + move.end[0]) / 2 - left) / 60.0))
+        return [1.0 - share, share]
+    fraction, length = outer_wall_fraction(replayed, asked, TOLERANCE)
+    purge, model = purge_volume(replayed), model_volume(replayed)
+    render_side_view(replayed, YELLOW_BLUE.split(","), tmp_path / "bar_outer_walls.png", asked=asked)
+    report(f"chamber x gradient bar: {100 * fraction:.1f} % of {length:.0f} mm outer wall within {TOLERANCE} of the "
+           f"field; purge {purge:.0f} mm3 = {purge / model:.1f}x the model's {model:.0f} mm3; pictures: "
+           f"{tmp_path / 'bar_outer_walls.png'}, {tmp_path / 'bar.png'}")
+    assert fraction >= 0.90

@@ -180,11 +180,11 @@ TEST(DefinitionLoader, CustomDefinitionOnTheSearchPath) {
     EXPECT_EQ(set.find("machine_depth")->type, "float");
     ASSERT_NE(set.find("mix_custom_new_key"), nullptr);
     EXPECT_EQ(set.find("mix_custom_new_key")->default_value, "7");
-    // fdmprinter's settings, the custom key and MixEngine's own (settings/mixengine/*.def.json).
-    EXPECT_EQ(set.settings.size(),
-              605U);  // 596 before mixing_raft_ratio, mixing_support_ratio (issue 15),
-                      // the colour keys of issue 18 (target, gradient, paint) and the
-                      // chamber's stages, transition tolerance and purge tower (issue 26)
+    // fdmprinter's settings, the custom key and MixEngine's own (settings/mixengine/*.def.json): 596 before
+    // mixing_raft_ratio, mixing_support_ratio (issue 15), the colour keys of issue 18 (target, gradient,
+    // paint), the chamber's stages, transition tolerance and purge tower (issue 26) and the gradient axis
+    // (issue 27).
+    EXPECT_EQ(set.settings.size(), 606U);
     EXPECT_NE(set.find("mixing_mode"), nullptr);
     EXPECT_NE(set.find("dual_orientation_optimize"), nullptr);
     ASSERT_EQ(set.extruders.size(), 2U);
