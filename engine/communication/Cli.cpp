@@ -21,8 +21,9 @@ int runHelp(const Words& words, std::ostream& out) {
     }
     const std::optional<std::string> usage = commandHelp(words.front());
     if (!usage)
-        throw InputError("help: unknown command '" + words.front() +
-                         "' (commands: help, slice, connect, layers, settings, demo, orient, mix)");
+        throw InputError(
+            "help: unknown command '" + words.front() +
+            "' (commands: help, slice, connect, layers, settings, demo, orient, mix, calibrate-chamber)");
     out << *usage;
     return 0;
 }
@@ -58,8 +59,11 @@ int runCli(int argc, char** argv, std::ostream& out, std::ostream& err) {
         return runOrientCommand(words, out, err);
     if (command == "mix")
         return runMixCommand(words, out, err);
-    throw InputError("unknown command '" + command +
-                     "' (commands: help, slice, connect, layers, settings, demo, orient, mix)");
+    if (command == "calibrate-chamber")
+        return runCalibrateChamberCommand(words, out, err);
+    throw InputError(
+        "unknown command '" + command +
+        "' (commands: help, slice, connect, layers, settings, demo, orient, mix, calibrate-chamber)");
 }
 
 }  // namespace mixengine

@@ -16,5 +16,6 @@ int runDemoCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runConnectCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runOrientCommand(const Words& args, std::ostream& out, std::ostream& err);
 int runMixCommand(const Words& args, std::ostream& out, std::ostream& err);
+int runCalibrateChamberCommand(const Words& args, std::ostream& out, std::ostream& err);
 
 }  // namespace mixengine

@@ -99,18 +99,33 @@ constexpr std::string_view kMix =
 	a mix is predicted to print. In `slice`: -s mixing_mode=color -s mixing_target_color=#rrggbb.
 )";
 
+constexpr std::string_view kCalibrateChamber =
+    R"(mixengine calibrate-chamber [-j <definition>] [--profiles ...] [-s key=value] [-e<N>] -o <tower.gcode>
+                            [--filaments a,b] [--band <mm>] [--preview <file.png>]
+	A print that measures the mixing chamber: an 8 mm square tower, one wall (spiralize), filament a
+	(default 1) up to 10 mm, b (default 2) for --band mm (default 15), a again for as long, sliced with the
+	printer's settings and mixing_chamber_volume 0, so the G-code switches at once and the blur on the
+	tower is the chamber's own. Prints (and writes as ;CALIBRATION: lines after the G-code header) the
+	switch heights, the extrusion per mm of tower height and, from the chamber model, the heights above
+	a switch where the colour is 10, 50 and 90 % of the way to the new filament for chambers of 10 to
+	120 mm3 in 1 to 10 stages: measure the tower, pick the nearest row, set mixing_chamber_volume and
+	mixing_chamber_stages. No -l: the tower is the model.
+)";
+
 constexpr std::string_view kExitCodes =
     "Exit codes: 0 success, 1 bad input (one line on stderr names the file, key or value), 2 internal "
     "error.\n";
 
-constexpr std::array<std::pair<std::string_view, std::string_view>, 8> kCommands{{{"help", kHelp},
-                                                                                  {"slice", kSlice},
-                                                                                  {"connect", kConnect},
-                                                                                  {"layers", kLayers},
-                                                                                  {"settings", kSettings},
-                                                                                  {"demo", kDemo},
-                                                                                  {"orient", kOrient},
-                                                                                  {"mix", kMix}}};
+constexpr std::array<std::pair<std::string_view, std::string_view>, 9> kCommands{
+    {{"help", kHelp},
+     {"slice", kSlice},
+     {"connect", kConnect},
+     {"layers", kLayers},
+     {"settings", kSettings},
+     {"demo", kDemo},
+     {"orient", kOrient},
+     {"mix", kMix},
+     {"calibrate-chamber", kCalibrateChamber}}};
 
 }  // namespace
 
