@@ -165,3 +165,26 @@ def test_help_names_the_command_and_writes_nothing(engine, tmp_path):
     assert "calibrate-chamber" in helpers.mixengine("help").stdout
     assert list(tmp_path.iterdir()) == []
 
+
+MIXING_PROFILES = {  # the estimates written into each profile (settings/definitions), checked as resolved
+    "mixengine_makerpi_m2030x": (30.0, 3),
+    "mixengine_geeetech_a10m": (30.0, 3),
+    "mixengine_rrf_mixing": (30.0, 3),
+    "mixengine_cmykw_mixer": (20.0, 3),
+}
+
+
+@pytest.mark.parametrize("machine", sorted(MIXING_PROFILES))
+def test_profiles_carry_chamber_estimates_said_to_be_estimates(engine, tmp_path, machine):
+    proc = helpers.mixengine("settings", "-j", machine, "--json")
+    assert proc.returncode == 0, proc.stderr
+    resolved = json.loads(proc.stdout)["global"]
+    volume, stages = MIXING_PROFILES[machine]
+    assert (float(resolved["mixing_chamber_volume"]), int(resolved["mixing_chamber_stages"])) == (volume, stages)
+    doc = json.loads((helpers.REPO / "settings" / "definitions" / f"{machine}.def.json").read_text())
+    note = doc["metadata"]["mixengine_chamber_estimate"]
+    assert f"mixing_chamber_volume {volume:g} mm³" in note and f"mixing_chamber_stages {stages}" in note
+    assert "estimate" in note and "calibrate-chamber" in note
+    # and the calibration print says what the profile predicts
+    stdout, _ = calibrate(tmp_path, "-j", machine)
+    assert f"mixing_chamber_volume {volume:g} mm3, mixing_chamber_stages {stages}" in stdout

@@ -289,7 +289,12 @@ def check_two_stop_gradient(reading, tolerance):
         assert share == pytest.approx(seed_share_b(20, 80, percent), abs=tolerance), percent
 
 
-GRADIENT = ("-s", "mixing_mode=gradient", "-s", "mixing_gradient_start=20", "-s", "mixing_gradient_end=80")
+# The mixing profiles carry an estimated mixing_chamber_volume, which commands every mix earlier by that volume
+# (test_mixing.py::test_chamber_delay_shifts_the_schedule_earlier); the dialect checks here read the seed's
+# schedule itself, so they slice with an ideal chamber.
+IDEAL_CHAMBER = ("-s", "mixing_chamber_volume=0")
+GRADIENT = ("-s", "mixing_mode=gradient", "-s", "mixing_gradient_start=20", "-s", "mixing_gradient_end=80",
+            *IDEAL_CHAMBER)
 
 
 def test_makerpi_writes_e_and_b_words(engine, cube, tmp_path):
@@ -341,7 +346,7 @@ def test_reprap_mixing_writes_m567_relative(engine, cube, tmp_path):
 def test_cmykw_mixer_drives_five_channels(engine, cube, tmp_path):
     stops = "0=1:0:0:0:0; 25=0:1:0:0:0; 50=0:0:1:0:0; 75=0:0:0:1:0; 100=0:0:0:0:1"
     text = slice_with("mixengine_cmykw_mixer", tmp_path / "c.gcode", "-s", "mixing_mode=gradient",
-                      "-s", f"mixing_gradient_stops={stops}", "-l", cube)
+                      "-s", f"mixing_gradient_stops={stops}", *IDEAL_CHAMBER, "-l", cube)
     layers = text.split(";LAYER:0\n", 1)[1]
     m165 = re.findall(r"^M165 A([\d.]+) B([\d.]+) C([\d.]+) D([\d.]+) H([\d.]+)$", layers, re.M)
     assert len(m165) > 60 and len(m165) == layers.count("M165")
