@@ -19,7 +19,10 @@ class ColorCache {
             key[static_cast<std::size_t>(c)] = std::lround(mix[c] * 1000.0);
         auto it = index_.find(key);
         if (it == index_.end()) {
-            const Lab lab = model_.predictLab(mix);
+            MixVector rounded = mix;  // the colour of the key itself, whichever mix found it first
+            for (int c = 0; c < kMaxMixChannels; ++c)
+                rounded[c] = static_cast<double>(key[static_cast<std::size_t>(c)]) / 1000.0;
+            const Lab lab = model_.predictLab(rounded);
             const Rgb rgb = model_.space().srgbOf(lab);
             int color = -1;
             for (std::size_t i = 0; i < plan_.outlet_colors.size() && color < 0; ++i)

@@ -317,9 +317,10 @@ def test_layer_view_lines_take_the_written_colours_exactly():
 
 @pytest.fixture(scope="module")
 def socket_slice(engine, cube, tmp_path_factory):
+    # an ideal chamber (the profile's estimate is 30 mm³): each layer of the gradient in one colour
     global_settings, extruders = resolved_settings("mixengine_makerpi_m2030x", "mixing_mode=gradient",
                                                    "mixing_gradient_start=20", "mixing_gradient_end=80",
-                                                   f"mixing_channel_colors={YELLOW_BLUE}")
+                                                   f"mixing_channel_colors={YELLOW_BLUE}", "mixing_chamber_volume=0")
     result = slice_over_socket(engine, tmp_path_factory.mktemp("socket"), global_settings, extruders,
                                [one_object(cube)], raw_layers=True)
     assert result["exit_code"] == 0 and result["finished"]
