@@ -65,6 +65,11 @@ constexpr std::string_view kConnect = R"(mixengine connect <host>[:<port>] [-v] 
 constexpr std::string_view kLayers = R"(mixengine layers <slice arguments> -o <dir>
 	Slice only, and write <dir>/layers.json (outlines in mm, area per layer) and one SVG per
 	layer (<dir>/layer_00000.svg ...), in the model's own frame, to look at the slices.
+	A mixing print (mixing_mode not single) is planned as `slice` plans it, and each SVG also
+	draws the layer's extrusions over the outline, as lines of their width in the colour
+	predicted to leave the nozzle (the G-code's ;PREDICTED_COLOR:); layers.json adds per layer
+	"gcode_layer" (its ;LAYER: number) and "predicted_colors" ([{"color", "length_mm"}]), and
+	"raft_layers" for the raft's layers (no SVG). Only the first mesh group is drawn.
 	Takes the options of `mixengine slice` (-j, -s, -e<N>, -l, --profiles, ...).
 )";
 

@@ -145,7 +145,7 @@ def test_not_honoured_settings_are_named_once_each(engine, corpus, tmp_path):
 
 HELP_COMMANDS = {  # command -> words its usage must show (its own options, nothing of the others)
     "slice": ["mixengine slice", "-j <file|id>", "--preview", "--next"],
-    "layers": ["mixengine layers", "layers.json"],
+    "layers": ["mixengine layers", "layers.json", "predicted_colors"],
     "settings": ["mixengine settings", "--json"],
     "orient": ["mixengine orient", "--offset", "--report"],
     "connect": ["mixengine connect", "<host>[:<port>]"],
