@@ -7,7 +7,8 @@ Timeline in Cura 4.13:
   initializationFinished       cura.cfg has been read: backend/location -> mixengine (engine respawned),
                                MixEngine's settings made visible once; the layer view learns the mix
                                (MixPreview: LayerDataBuilder.build wrapped, legend overlay created); the
-                               settings MixEngine does not act on are watched (SettingsNotice)
+                               settings MixEngine does not act on are watched (SettingsNotice); each
+                               slice's mixing report becomes one message (MixReportNotice)
   shutdown                     backend/location given back before the preferences are saved
 """
 import os
@@ -19,6 +20,7 @@ from UM.PluginRegistry import PluginRegistry
 
 from . import BackendLocation, NotHonoured, PluginPaths, SettingFragments
 from .MixPreview import MixPreview
+from .MixReportNotice import MixReportNotice
 from .OrientAction import OrientAction
 from .SettingsInjector import SettingsInjector
 from .SettingsNotice import SettingsNotice
@@ -50,6 +52,7 @@ class MixEngineExtension(Extension):
         self.orient = OrientAction(app, lambda: self._findEngine(mixengine_only=True))
         self.preview = MixPreview(app, defaultChannelColours(settings_dir))
         self.notice = SettingsNotice(app, NotHonoured.load(settings_dir), self._slicesWithMixEngine)
+        self.report_notice = MixReportNotice(app)
         self.setMenuName("MixEngine")
         self.addMenuItem(ORIENT_ITEM, self.orient.run)
         self.colour_picker = TargetColourPicker(app)
@@ -66,7 +69,8 @@ class MixEngineExtension(Extension):
                 "keys": self._injector.allKeys() if self._injector else [],
                 "preview": dict(self.preview.last),
                 "legend": {"shown": self.preview.legend.shown, "channels": self.preview.legend.channels},
-                "not_honoured": [list(r) for r in self.notice.rows], "not_honoured_message": self.notice.text()}
+                "not_honoured": [list(r) for r in self.notice.rows], "not_honoured_message": self.notice.text(),
+                "mixing_report": self.report_notice.status()}
 
     def _slicesWithMixEngine(self):
         return bool(self._backend and self._backend.active and self.engine_path
@@ -84,6 +88,10 @@ class MixEngineExtension(Extension):
             self.preview.createLegend(os.path.join(os.path.dirname(os.path.abspath(__file__)), "qml", "MixLegend.qml"))
         except Exception:
             Logger.logException("e", "[MixEngine] the layer view will not show the mix")
+        try:
+            self.report_notice.connect()
+        except Exception:
+            Logger.logException("e", "[MixEngine] the mixing report will not be shown")
         self.engine_path, self.engine_how = self._findEngine()
         if self.engine_path is None:
             Logger.log("e", "[MixEngine] %s; Cura keeps its engine", self.engine_how)

@@ -15,6 +15,10 @@ and the CuraHarness plugin drives the session without clicks (tests/e2e/README.m
   cube. Material Color draws the colours the engine predicts and writes into the G-code
   (";PREDICTED_COLOR:", its pigment model): the middle of the cube is green, not the grey of a linear-light
   blend (cura_yellow_blue_material_color.png, and ..._layer99.png with the layer slider at the middle).
+- two cubes (issue 26): the MakerPi in dual mode, two 20 mm cubes side by side at mixing_ratio 1:0 and 0:1 (per
+  model), a 40 mm³ chamber: one Cura message says what the engine's ;MIXING.* header says, the purge in mm³ and
+  grams (the density of Cura's material) and that printing the cubes one at a time would remove the changes
+  (cura_two_cubes_mixing_report.png). A gradient's message says there is no purge; a single-colour print has none.
 - CMYK+W: the 5-channel M165 mixer with a multi-stop gradient (cura_cmykw_material_color.png).
 - raft: the MakerPi with a raft under a gradient (cura_raft_material_color.png): raft layers below 0, filament A.
 - single colour: the MakerPi in single mode stays one colour (cura_single_material_color.png), and
@@ -29,6 +33,8 @@ import json
 import os
 import re
 import shutil
+import sys
+from pathlib import Path
 
 import numpy
 import pytest
@@ -37,6 +43,9 @@ from PIL import Image
 
 import helpers
 from mixing_gcode import read_mixing_gcode, seed_share_b
+
+sys.path.insert(0, str(helpers.REPO / "plugin"))
+import MixReport  # noqa: E402
 
 DRIVER = helpers.REPO / "tests" / "e2e" / "cura_driver.py"
 ARTIFACTS = helpers.BIN.parent / "e2e"
@@ -52,7 +61,8 @@ SHOTS = {"material": ARTIFACTS / "cura_gradient_material_color.png",
          "single": ARTIFACTS / "cura_single_material_color.png",
          "raft": ARTIFACTS / "cura_raft_material_color.png",
          "yellow_blue": ARTIFACTS / "cura_yellow_blue_material_color.png",
-         "yellow_blue_middle": ARTIFACTS / "cura_yellow_blue_material_color_layer99.png"}
+         "yellow_blue_middle": ARTIFACTS / "cura_yellow_blue_material_color_layer99.png",
+         "two_cubes": ARTIFACTS / "cura_two_cubes_mixing_report.png"}
 # the 3D view in the 1600 x 1000 screenshots: below the stage menu, right of the mix legend (whose swatches
 # carry the channel colours), left of the print settings panel
 VIEW_ROWS, VIEW_COLS = slice(170, 900), slice(260, 1040)
@@ -330,8 +340,9 @@ def is_green(rgb):
 def yellow_blue(tmp_path_factory, package):
     work = tmp_path_factory.mktemp("cura_yellow_blue")
     job = {"name": "cura_yellow_blue", "machine": "mixengine_makerpi_m2030x",
+           # no chamber (the printer's default is an estimated 30 mm³): one mix per layer, the gradient's own
            "global": {"mixing_mode": "gradient", "mixing_gradient_start": 0, "mixing_gradient_end": 100,
-                      "mixing_channel_colors": YELLOW_BLUE},
+                      "mixing_channel_colors": YELLOW_BLUE, "mixing_chamber_volume": 0},
            "models": [{"path": box(work / "cube20.stl", (20, 20, 20))}], "plugin_status": "MixEngine",
            "gcode_output": str(work / "gcode.json"), "preview": True,
            "screenshots": [{"path": str(SHOTS["yellow_blue"]), "layer_view_type": 0, "layer": None},
@@ -354,6 +365,14 @@ def test_cura_shows_the_predicted_colour_of_every_line(yellow_blue):
     assert all(written.values()) and preview["distinct_colours"] == len({c for w in written.values() for c in w})
     channels = yellow_blue["status"]["plugin_status_end"]["legend"]["channels"]
     assert channels == [{"name": "A", "color": "#ffff00"}, {"name": "B", "color": "#0000ff"}]
+
+
+def test_a_gradient_changes_no_mix_inside_a_layer_and_says_so(yellow_blue):
+    """The mixing report's message after a Z gradient: how much of the surface comes out right, and no purge."""
+    texts = [t for t in yellow_blue["status"]["visible_messages"] if "Of the visible surface" in t]
+    assert len(texts) == 1, yellow_blue["status"]["visible_messages"]
+    assert texts[0].endswith("<br>No purge: the mix does not change inside a layer."), texts[0]
+    assert yellow_blue["status"]["plugin_status_end"]["mixing_report"]["message"] == texts[0]
 
 
 def test_a_yellow_to_blue_gradient_is_green_in_the_middle_of_cura_layer_view(yellow_blue, engine, report):
@@ -419,6 +438,82 @@ def test_yellow_to_blue_in_cura_runs_yellow_green_blue_from_bottom_to_top(yellow
            f"top third {numpy.median(top):.0f}")
 
 
+# ---- two cubes at different ratios: the mixing report in one Cura message (issue 26) ------------------------
+MATERIALS = Path("/usr/share/cura/resources/materials")
+
+
+def material_density(material_id):
+    """The density (g/cm³) in the fdm_materials file of the material Cura used (read here, not by the plugin)."""
+    text = (MATERIALS / f"{material_id}.xml.fdm_material").read_text()
+    return float(re.search(r"<density>([\d.]+)</density>", text).group(1))
+
+
+def outer_wall_colour(chunk, mesh):
+    """The ;PREDICTED_COLOR: in force where `mesh`'s outer wall starts in a layer's chunk (or the first one
+    written inside it)."""
+    colour, current_mesh, feature = None, None, None
+    for line in chunk.splitlines():
+        if line.startswith(";MESH:"):
+            current_mesh = line[6:]
+        elif line.startswith(";TYPE:"):
+            feature = line[6:]
+        elif line.startswith(";PREDICTED_COLOR:"):
+            colour = line[17:].strip().lower()
+        elif current_mesh == mesh and feature == "WALL-OUTER" and line.startswith("G1") and colour:
+            return colour
+    raise AssertionError(f"no outer wall of {mesh}")
+
+
+@pytest.fixture(scope="module")
+def two_cubes(tmp_path_factory, package):
+    """Two 20 mm cubes loaded one after the other (Cura places the second beside the first), per-model
+    mixing_ratio 1:0 and 0:1, a 40 mm³ chamber in 3 stages, yellow and blue."""
+    work = tmp_path_factory.mktemp("cura_two_cubes")
+    job = {"name": "cura_two_cubes", "machine": "mixengine_makerpi_m2030x",
+           "global": {"mixing_mode": "dual", "mixing_chamber_volume": 40, "mixing_chamber_stages": 3,
+                      "mixing_channel_colors": YELLOW_BLUE},
+           "models": [{"path": box(work / "left.stl", (20, 20, 20)), "settings": {"mixing_ratio": "1:0"}},
+                      {"path": box(work / "right.stl", (20, 20, 20)), "settings": {"mixing_ratio": "0:1"}}],
+           "plugin_status": "MixEngine", "gcode_output": str(work / "gcode.json"), "preview": True,
+           "screenshots": [{"path": str(SHOTS["two_cubes"]), "layer_view_type": 0, "layer": None}],
+           "camera": {"position": [-40, 250, 220], "look_at": [35, 0, -10]}}
+    summary, status, fixture = run_cura(job, work, package)
+    assert summary["backend_state"] == "Done"
+    chunks = json.loads((work / "gcode.json").read_text())["chunks"]
+    return {"status": status, "fixture": fixture, "chunks": chunks}
+
+
+def test_two_cubes_apart_show_the_purge_and_the_one_at_a_time_hint(two_cubes, report):
+    """After the slice, one Cura message says what the engine's ;MIXING.* header says: the purge in mm³ and in
+    grams (the density of Cura's material) and that printing the cubes one at a time would remove the changes."""
+    status, chunks = two_cubes["status"], two_cubes["chunks"]
+    objects = two_cubes["fixture"]["objects"]
+    assert sorted(o["settings"]["mixing_ratio"] for o in objects) == ["0:1", "1:0"]  # per model, as Cura sent it
+    written = dict(re.findall(r"^;MIXING\.([A-Z0-9_.]+):(.*)$", chunks[0], re.M))  # the G-code prefix
+    purge, changes = float(written["PURGE_MM3"]), int(written["CHANGES"])
+    assert purge > 0 and changes > 0 and "the models stand apart" in written["HINT"], written
+    density = material_density(two_cubes["fixture"]["material"])
+    texts = [t for t in status["visible_messages"] if "Purge:" in t]
+    assert len(texts) == 1, status["visible_messages"]
+    text = texts[0]
+    assert f"Purge: {purge:.0f} mm³ ({purge * density / 1000:.1f} g) for {changes} changes of mix inside layers." \
+        in text
+    assert ("printing them one at a time (Special Modes → Print Sequence → One at a Time) would remove the "
+            f"{changes} changes of mix") in text
+    mixing = status["plugin_status_end"]["mixing_report"]
+    assert mixing["state"] == "shown" and mixing["visible"] and mixing["density"] == density, mixing
+    # the plugin's words for this G-code (Cura's Message turns the line breaks into <br>)
+    assert text == mixing["message"] == MixReport.messageText(MixReport.read(chunks), density).replace("\n", "<br>")
+    # the Preview behind the message: the yellow cube, and the blue one in the colour the engine predicts for its
+    # outer wall (blue with what the chamber still holds of yellow)
+    top = [c for c in chunks if c.startswith(";LAYER:")][-1]
+    wall = outer_wall_colour(top, "right.stl")
+    image = screenshot(SHOTS["two_cubes"])
+    yellow, blue = len(pixels_of(image, "#ffff00")[0]), len(pixels_of(image, wall)[0])
+    assert yellow > 2000 and blue > 2000, (yellow, blue, wall)
+    report(f"Cura e2e two cubes: {SHOTS['two_cubes']}; the message:\n" + text.replace("<br>", "\n"))
+
+
 # ---- five channels, multi-stop: the CMYK+W mixer (Marlin M165) ----------------------------------------------
 CMYKW_STOPS = "0=1:0:0:0:0; 30=0:1:0:0:0; 60=0:0:1:0:0; 80=0:0:0:1:0; 100=0:0:0:0:1"  # C, M, Y, K, W
 
@@ -458,8 +553,10 @@ def test_raft_under_a_gradient_shows_in_the_preview_with_filament_a(tmp_path, pa
     CuraEngine numbers them) with mixing_raft_ratio (filament A), Cura's layer view holds every layer, and
     the Material Color screenshot shows the raft, 15 mm wider than the cube on each side, in channel A's colour."""
     job = {"name": "cura_raft", "machine": "mixengine_makerpi_m2030x",
+           # no chamber (the printer's default is an estimated 30 mm³), so the raft's layers are filament A alone
            "global": {"mixing_mode": "gradient", "mixing_gradient_start": 0, "mixing_gradient_end": 100,
-                      "mixing_channel_colors": f"{CHANNEL_A},{CHANNEL_B}", "adhesion_type": "raft"},
+                      "mixing_channel_colors": f"{CHANNEL_A},{CHANNEL_B}", "adhesion_type": "raft",
+                      "mixing_chamber_volume": 0},
            "models": [{"path": box(tmp_path / "cube20.stl", (20, 20, 20))}], "plugin_status": "MixEngine",
            "gcode_output": str(tmp_path / "gcode.json"), "preview": True,
            "screenshots": [{"path": str(SHOTS["raft"]), "layer_view_type": 0}], "camera": CAMERA}
@@ -511,6 +608,9 @@ def test_single_colour_print_stays_one_colour_and_unsupported_settings_are_named
     texts = [t for t in status["visible_messages"] if "MixEngine does not act on" in t]
     assert len(texts) == 1 and "Wire Printing" in texts[0] and "wire printing is not built" in texts[0], texts
     assert [row[0] for row in end["not_honoured"]] == ["wireframe_enabled"]
+    # no mixing report in a single-colour print, so no message about it
+    assert end["mixing_report"]["state"] == "not a mixing slice" and not end["mixing_report"]["visible"]
+    assert not [t for t in status["visible_messages"] if "Of the visible surface" in t]
 
 
 # ---- the orientation menu item on the dual-nozzle printer ------------------------------------------------

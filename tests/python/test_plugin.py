@@ -232,7 +232,8 @@ def test_package_layout(package):
     assert plugin["api"] == 7 and plugin["supported_sdk_versions"] == ["7.9.0"]
     for name in ("__init__.py", "MixEngineExtension.py", "SettingsInjector.py", "OrientAction.py",
                  "MixPreview.py", "MixGCode.py", "MixColours.py", "LayerRecolour.py", "qml/MixLegend.qml",
-                 "NotHonoured.py", "SettingsNotice.py", "settings/mixengine/not_honoured.json",
+                 "NotHonoured.py", "SettingsNotice.py", "MixReport.py", "MixReportNotice.py",
+                 "settings/mixengine/not_honoured.json",
                  "settings/mixengine/mixing.def.json", "settings/mixengine/orientation.def.json",
                  "settings/definitions/mixengine_makerpi_m2030x.def.json",
                  "settings/extruders/mixengine_makerpi_m2030x_extruder_0.def.json"):
