@@ -315,12 +315,17 @@ std::string sequenceHint(const MixingGroup& group, const std::vector<std::vector
             if (!apart)
                 return "";
         }
+    char cost[96];
+    if (report.purge_mm3 > 0.5)
+        std::snprintf(cost, sizeof cost, " and the %.0f mm3 of purge", report.purge_mm3);
+    else
+        std::snprintf(cost, sizeof cost, " (%.0f mm3 of them left unpurged)", report.unpurged_mm3);
     char text[320];
     std::snprintf(
         text, sizeof text,
         "mixing: the models stand apart: printing them one at a time (print_sequence one_at_a_time) would "
-        "remove the %d changes of mix and the %.0f mm3 of purge",
-        report.changes, report.purge_mm3);
+        "remove the %d changes of mix%s",
+        report.changes, cost);
     return text;
 }
 
