@@ -95,46 +95,6 @@ std::string pathData(const Paths& paths, const Frame& frame, bool closed) {
     return d.str();
 }
 
-/// 1, 2 or 5 × 10^k mm, about a fifth of the drawing's width (as layerToSvg's).
-double scaleBarMm(double width_mm) {
-    const double target = std::max(width_mm / 5.0, 0.001);
-    const double decade = std::pow(10.0, std::floor(std::log10(target)));
-    for (double factor : {5.0, 2.0, 1.0}) {
-        if (factor * decade <= target)
-            return factor * decade;
-    }
-    return decade;
-}
-
-void writeScaleBar(std::ostringstream& svg, double x, double y, double width, double stroke) {
-    const double bar = scaleBarMm(width);
-    svg << "<g stroke=\"black\" stroke-width=\"" << stroke << "\">"
-        << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x + bar << "\" y2=\"" << y << "\"/>"
-        << "<line x1=\"" << x << "\" y1=\"" << y - 4 * stroke << "\" x2=\"" << x << "\" y2=\""
-        << y + 4 * stroke << "\"/>"
-        << "<line x1=\"" << x + bar << "\" y1=\"" << y - 4 * stroke << "\" x2=\"" << x + bar << "\" y2=\""
-        << y + 4 * stroke << "\"/></g>\n";
-    svg << "<text x=\"" << x + bar + 8 * stroke << "\" y=\"" << y + 3 * stroke << "\" font-size=\""
-        << 12 * stroke << "\">" << bar << " mm</text>\n";
-}
-
-std::string escapeXml(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '&')
-            out += "&amp;";
-        else if (c == '"')
-            out += "&quot;";
-        else
-            out += c;
-    }
-    return out;
-}
-
 void writeRuns(std::ostringstream& svg, const ColouredLayer& printed, const std::vector<Rgb8>& colors,
                const Frame& frame) {
     svg << "<g class=\"extrusions\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
@@ -163,7 +123,7 @@ void writeCaptions(std::ostringstream& svg, const SlicedLayer& layer, const Colo
                    const SvgOptions& options, const Frame& frame) {
     const double margin = std::max(options.margin_mm, 0.0);
     const double stroke = frame.stroke;
-    writeScaleBar(svg, margin, frame.drawing_height + 12 * stroke, frame.width - 2 * margin, stroke);
+    writeSvgScaleBar(svg, margin, frame.drawing_height + 12 * stroke, frame.width - 2 * margin, stroke);
     svg << "<text x=\"" << margin << "\" y=\"" << frame.drawing_height + 32 * stroke << "\" font-size=\""
         << 12 * stroke << "\">" << escapeXml(options.caption) << (options.caption.empty() ? "" : " — ")
         << "print z " << micronsToMm(layer.print_z) << " mm, cut z " << micronsToMm(layer.slice_z) << " mm, "

@@ -71,6 +71,10 @@ std::string pathData(const Paths& paths, coord_um left_um, coord_um top_um, bool
     return d.str();
 }
 
+}  // namespace
+
+namespace {
+
 /// 1, 2 or 5 × 10^k mm, about a fifth of the drawing's width.
 double scaleBarMm(double width_mm) {
     const double target = std::max(width_mm / 5.0, 0.001);
@@ -82,7 +86,9 @@ double scaleBarMm(double width_mm) {
     return decade;
 }
 
-void writeScaleBar(std::ostringstream& svg, double x_mm, double y_mm, double width_mm, double stroke_mm) {
+}  // namespace
+
+void writeSvgScaleBar(std::ostringstream& svg, double x_mm, double y_mm, double width_mm, double stroke_mm) {
     const double bar = scaleBarMm(width_mm);
     svg << "<g stroke=\"black\" stroke-width=\"" << stroke_mm << "\">"
         << "<line x1=\"" << x_mm << "\" y1=\"" << y_mm << "\" x2=\"" << x_mm + bar << "\" y2=\"" << y_mm
@@ -118,8 +124,6 @@ std::string escapeXml(const std::string& text) {
     return out;
 }
 
-}  // namespace
-
 std::string layersToJson(const std::vector<SlicedLayer>& layers, const std::vector<std::string>& mesh_names) {
     nlohmann::json doc;
     doc["meshes"] = mesh_names;
@@ -152,7 +156,7 @@ std::string layerToSvg(const SlicedLayer& layer, const SvgOptions& options) {
     svg << "<path d=\"" << pathData(layer.open_polylines, left, top, false)
         << "\" fill=\"none\" stroke=\"red\" "
         << "stroke-width=\"" << 2 * stroke << "\"/>\n";
-    writeScaleBar(svg, margin, drawing_height + 12 * stroke, width - 2 * margin, stroke);
+    writeSvgScaleBar(svg, margin, drawing_height + 12 * stroke, width - 2 * margin, stroke);
     svg << "<text x=\"" << margin << "\" y=\"" << drawing_height + 32 * stroke << "\" font-size=\""
         << 12 * stroke << "\">" << escapeXml(options.caption) << (options.caption.empty() ? "" : " — ")
         << "print z " << micronsToMm(layer.print_z) << " mm, cut z " << micronsToMm(layer.slice_z) << " mm, "

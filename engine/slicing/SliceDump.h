@@ -10,6 +10,7 @@
 // layerToSvg — one layer as a standalone SVG document in millimetres (y up as in the printer):
 //   outlines filled with fill-rule evenodd so holes show, open polylines stroked in red, a scale
 //   bar of a round length in mm and a caption with the heights. An empty layer gives a 10 mm frame.
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,10 @@ struct SvgOptions {
 };
 
 std::string layerToSvg(const SlicedLayer& layer, const SvgOptions& options = {});
+
+/// The parts of layerToSvg that other drawings share: a scale bar of 1, 2 or 5 × 10^k mm (about a fifth of
+/// `width_mm`) at (x_mm, y_mm) with its label, and text made safe for XML (<, >, &, ").
+void writeSvgScaleBar(std::ostringstream& svg, double x_mm, double y_mm, double width_mm, double stroke_mm);
+std::string escapeXml(const std::string& text);
 
 }  // namespace mixengine
