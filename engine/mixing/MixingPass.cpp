@@ -11,6 +11,7 @@
 #include "mixing/MixSchedule.h"
 #include "mixing/PaintSchedule.h"
 #include "mixing/RegionSplit.h"
+#include "toolpaths/FeatureStyle.h"
 
 namespace mixengine {
 namespace {
@@ -293,8 +294,11 @@ TransitionSettings transitionSettings(const Settings& global, const ChamberSpec&
             t.line_width_um = global.lengthMicrons(key);
             break;
         }
-    if (global.has("speed_prime_tower") && global.real("speed_prime_tower") > 0)
+    if (global.has("speed_prime_tower") && global.real("speed_prime_tower") > 0) {
         t.speed_mm_s = global.real("speed_prime_tower");
+        // as every feature: speed_print_layer_0 on the first layer, ramping up over speed_slowdown_layers
+        t.speed_at = [&global](int layer) { return layerSpeed(global, "speed_prime_tower", layer); };
+    }
     return t;
 }
 

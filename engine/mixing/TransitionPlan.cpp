@@ -259,7 +259,7 @@ std::optional<LayerTower> layerTower(const PrintPlan& plan, std::size_t l,
     PlanStep extrude;
     extrude.kind = PlanStep::Kind::Extrude;
     extrude.feature = Feature::PrimeTower;
-    extrude.speed_mm_s = settings.speed_mm_s;
+    extrude.speed_mm_s = settings.speed_at ? settings.speed_at(plan.layers[l].index) : settings.speed_mm_s;
     extrude.width_um = tower->shape.line_width_um;
     return LayerTower{TowerCursor(towerPath(tower->shape, plan.layers[l].index), tower->shape.line_width_um,
                                   thicknessOf(plan, l)),

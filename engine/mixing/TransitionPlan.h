@@ -13,6 +13,7 @@
 //
 // The planned volumes are exact in the model: nothing is over-extruded on the part, and a purge is
 // never more than the model needs (plus the tower's excess in layers that need less than its square).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@ struct TransitionSettings {
     TowerSite site;          ///< the print's own rectangle is filled in from the plan
     coord_um line_width_um = 400;
     double speed_mm_s = 30;  ///< the tower's print speed
+    /// The tower's speed on a layer (by ;LAYER: number), e.g. slower on the first layers; empty: speed_mm_s
+    std::function<double(int layer_number)> speed_at;
 };
 
 struct TransitionReport {

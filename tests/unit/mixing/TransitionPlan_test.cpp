@@ -139,6 +139,26 @@ TEST(MixingTransitionPlan, WithoutATowerTheUnpurgedVolumeIsReported) {
     EXPECT_GT(report.unpurged_mm3, 2 * 60.0);
 }
 
+TEST(MixingTransitionPlan, TheTowerPrintsAtItsLayersSpeed) {
+    Built b = twoRegions(3, 1);
+    TransitionSettings s = settings();
+    s.speed_at = [](int layer) { return layer == 0 ? 20.0 : 55.0; };
+    planTransitions(b.plan, b.targets, s);
+    for (const PlannedLayer& layer : b.plan.layers) {
+        Feature feature = Feature::Fill;
+        int tower_moves = 0;
+        for (const PlanStep& step : layer.steps) {
+            if (step.kind == PlanStep::Kind::SetFeature)
+                feature = step.feature;
+            if (step.kind == PlanStep::Kind::Extrude && feature == Feature::PrimeTower) {
+                EXPECT_EQ(step.speed_mm_s, layer.index == 0 ? 20.0 : 55.0) << layer.index;
+                ++tower_moves;
+            }
+        }
+        EXPECT_GT(tower_moves, 0) << layer.index;
+    }
+}
+
 TEST(MixingPurgeTower, StandsClearOfThePrintOnThePlate) {
     TowerSite site;
     site.plate_max = {100'000, 100'000};
