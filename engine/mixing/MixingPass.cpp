@@ -333,6 +333,16 @@ std::string sequenceHint(const MixingGroup& group, const std::vector<std::vector
     return text;
 }
 
+/// Whether the chamber, as earlier groups left it, must change before this group's first visible extrusion.
+bool firstChangeNeeded(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
+                       const Chamber& incoming, double tolerance) {
+    for (const std::vector<StepTarget>& layer : targets)
+        for (const StepTarget& t : layer)
+            if (t.visible && t.mix >= 0)
+                return incoming.volumeToReach(plan.mixes[static_cast<std::size_t>(t.mix)], tolerance) > 0;
+    return false;
+}
+
 bool anyBands(const std::vector<ScopeSchedule>& meshes) {
     return std::any_of(meshes.begin(), meshes.end(),
                        [](const ScopeSchedule& s) { return s.bands != nullptr; });
@@ -387,21 +397,26 @@ MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
 
     const std::vector<std::vector<int>> regions = paintedRegions(plan, group, schedules.meshes);
     std::vector<std::vector<StepTarget>> targets = targetMixes(plan, schedules, regions);
-    if (!report.chamber.ideal() && mixChangesInLayers(targets)) {
+    std::optional<Chamber> fresh;
+    std::optional<Chamber>& chamber = group.chamber ? *group.chamber : fresh;
+    const std::optional<Chamber> incoming = chamber;  // what the groups printed before left in it
+    const bool starts_changed = incoming && firstChangeNeeded(plan, targets, *incoming, report.tolerance);
+    if (!report.chamber.ideal() && (mixChangesInLayers(targets) || starts_changed)) {
         report.planned = true;
         // a band's own error (at most a quarter of the tolerance, mixing/FieldBands.h) leaves the rest to the
         // chamber
         const double planned_tolerance =
             anyBands(schedules.meshes) ? 0.75 * report.tolerance : report.tolerance;
-        report.transitions = planTransitions(
-            plan, targets, transitionSettings(*group.settings, report.chamber, planned_tolerance));
+        TransitionSettings settings = transitionSettings(*group.settings, report.chamber, planned_tolerance);
+        settings.incoming = incoming;
+        settings.keep_clear = group.printed_before;
+        report.transitions = planTransitions(plan, targets, settings);
         report.sequence_hint = sequenceHint(group, regions, report.transitions);
         for (const std::string& warning : report.transitions.warnings)
             log.warning(warning);
     } else {
         delayShift(plan, targets, report.chamber.volume_mm3);
     }
-    std::optional<Chamber> chamber;
     report.visible = predictOutlet(plan, targets, chamber, report.chamber, report.tolerance, colors);
     warnAboutFields(group, schedules.meshes, report, log);
     return report;

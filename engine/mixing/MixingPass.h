@@ -17,12 +17,15 @@
 // chamber delay then shifts all of them alike.
 // In single mode (the default) the plan is left untouched: no mixes, every step's mix stays -1.
 // Bad mixing settings throw InputError (mixing/MixingSettings.h) before anything is written.
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/Log.h"
 #include "geometry/Point.h"
 #include "mesh/Mesh.h"
+#include "mixing/ChamberModel.h"
 #include "mixing/MixingReport.h"
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
@@ -44,6 +47,11 @@ struct MixingMesh {
 struct MixingGroup {
     const Settings* settings = nullptr;  ///< the group's: non-mesh extrusions, dialect, chamber volume
     std::vector<MixingMesh> meshes;      ///< index = PlanStep::mesh_index of the plan's SetMesh steps
+    /// What the chamber holds from the groups printed before (print_sequence one_at_a_time), updated by
+    /// assignMixes; null or empty: a chamber full of this group's first mix.
+    std::optional<Chamber>* chamber = nullptr;
+    /// The XY rectangle of everything printed before this group, kept clear by the purge tower (empty: none).
+    std::optional<std::pair<Point2, Point2>> printed_before;
 };
 
 /// Returns what a user needs to trust the print (mixing/MixingReport.h; `mixing` false in single mode).

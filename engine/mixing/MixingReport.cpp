@@ -1,5 +1,6 @@
 #include "mixing/MixingReport.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace mixengine {
@@ -42,6 +43,9 @@ void MixingReport::add(const MixingReport& group) {
     transitions.purge_mm3 += group.transitions.purge_mm3;
     transitions.needed_mm3 += group.transitions.needed_mm3;
     transitions.unpurged_mm3 += group.transitions.unpurged_mm3;
+    transitions.full_change_mm3 = std::max(transitions.full_change_mm3, group.transitions.full_change_mm3);
+    if (!transitions.tower)
+        transitions.tower = group.transitions.tower;
     transitions.looser_needed_mm3 += group.transitions.looser_needed_mm3;
     visible.add(group.visible);
     if (sequence_hint.empty())

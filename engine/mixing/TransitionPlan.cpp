@@ -56,9 +56,10 @@ coord_um thicknessOf(const PrintPlan& plan, std::size_t l) {
 /// Per layer, the volume the changes need beyond what flows through the chamber anyway (the layers as
 /// ordered, commands as commandsOf); the chamber pushed as if each purge happened where it is needed.
 std::vector<double> neededPerLayer(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
-                                   const ChamberSpec& spec, double tolerance) {
+                                   const ChamberSpec& spec, double tolerance,
+                                   const std::optional<Chamber>& incoming) {
     std::vector<double> needed(plan.layers.size(), 0.0);
-    std::optional<Chamber> chamber;
+    std::optional<Chamber> chamber = incoming;
     for (std::size_t l = 0; l < plan.layers.size(); ++l) {
         const PlannedLayer& layer = plan.layers[l];
         const std::vector<int> commands = commandsOf(layer, targets[l]);
@@ -182,6 +183,13 @@ std::optional<TowerPlan> sizeTower(const PrintPlan& plan, const std::vector<doub
     coord_um side = std::max<coord_um>(mmToMicrons(5.0), mmToMicrons(std::sqrt(worst_mm2)) + w);
     side = (side + w - 1) / w * w;
     printBounds(plan, settings.site);
+    if (settings.keep_clear) {
+        const auto& [lo, hi] = *settings.keep_clear;
+        settings.site.print_min = {std::min(settings.site.print_min.X, lo.X),
+                                   std::min(settings.site.print_min.Y, lo.Y)};
+        settings.site.print_max = {std::max(settings.site.print_max.X, hi.X),
+                                   std::max(settings.site.print_max.Y, hi.Y)};
+    }
     const std::optional<Point2> corner = placeTower(settings.site, side);
     if (!corner) {
         report.warnings.push_back("mixing: no room on the build plate for a purge tower of " +
@@ -315,15 +323,17 @@ TransitionReport planTransitions(PrintPlan& plan, std::vector<std::vector<StepTa
             if (t.visible)
                 last_mix = t.mix;
     }
-    const std::vector<double> needed = neededPerLayer(plan, targets, settings.chamber, settings.tolerance);
+    const std::vector<double> needed =
+        neededPerLayer(plan, targets, settings.chamber, settings.tolerance, settings.incoming);
     for (double v : needed)
         report.needed_mm3 += v;
-    for (double v : neededPerLayer(plan, targets, settings.chamber, 2 * settings.tolerance))
+    for (double v :
+         neededPerLayer(plan, targets, settings.chamber, 2 * settings.tolerance, settings.incoming))
         report.looser_needed_mm3 += v;
     const std::optional<TowerPlan> tower = sizeTower(plan, needed, settings, report);
     if (tower)
         report.tower = tower->shape;
-    std::optional<Chamber> chamber;
+    std::optional<Chamber> chamber = settings.incoming;
     for (std::size_t l = 0; l < plan.layers.size(); ++l)
         planLayer(plan, l, targets[l], tower, settings, chamber, report);
     return report;

@@ -14,7 +14,9 @@
 // The planned volumes are exact in the model: nothing is over-extruded on the part, and a purge is
 // never more than the model needs (plus the tower's excess in layers that need less than its square).
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mixing/ChamberModel.h"
@@ -28,6 +30,10 @@ struct TransitionSettings {
     double tolerance = 0.1;  ///< mixing_transition_tolerance (shareDistance)
     bool tower = true;       ///< mixing_purge_tower_enable
     TowerSite site;          ///< the print's own rectangle is filled in from the plan
+    std::optional<Chamber>
+        incoming;  ///< the chamber as earlier groups left it (empty: full of the first mix)
+    std::optional<std::pair<Point2, Point2>>
+        keep_clear;  ///< printed before (one at a time): the tower avoids it
     coord_um line_width_um = 400;
     double speed_mm_s = 30;  ///< the tower's print speed
     /// The tower's speed on a layer (by ;LAYER: number), e.g. slower on the first layers; empty: speed_mm_s

@@ -117,7 +117,8 @@ void extendBounds(PrintSummary& summary, const WrittenLayers& written) {
 /// The mixing stage's view of the group: each mesh's height span as printed, i.e. lifted by the
 /// raft (toolpaths/RaftLayout.h) like the layers whose z the schedules are read at.
 MixingGroup mixingInput(const Scene& scene, const SceneGroup& group) {
-    MixingGroup input{&group.settings, {}};
+    MixingGroup input;
+    input.settings = &group.settings;
     const coord_um lift = raftLayout(group.settings, &scene.machine.extruders).modelLiftUm(1);
     for (const SceneMesh& m : group.meshes) {
         const AABB3 box = m.mesh.bounds();
@@ -365,7 +366,8 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     state.head = {first.lengthMicrons("layer_start_x"), first.lengthMicrons("layer_start_y")};
 
     GCodeOutput output;
-    MixingReport mixing;  // every group's, added up
+    MixingReport mixing;                   // every group's, added up
+    std::optional<Chamber> chamber_state;  // what the mixing chamber holds after the groups printed so far
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
     output.summary.max = {INT64_MIN, INT64_MIN, INT64_MIN};
     const std::vector<std::string> verbatim =
@@ -400,7 +402,12 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         } else {
             planGroup(scene, group, sliced, threads, state, log, plan, {}, on_counted);
         }
-        mixing.add(assignMixes(plan, mixingInput(scene, group), log));
+        MixingGroup mixing_input = mixingInput(scene, group);
+        mixing_input.chamber = &chamber_state;
+        if (output.summary.min.x <= output.summary.max.x)  // the tower keeps clear of what is printed already
+            mixing_input.printed_before = std::pair{Point2{output.summary.min.x, output.summary.min.y},
+                                                    Point2{output.summary.max.x, output.summary.max.y}};
+        mixing.add(assignMixes(plan, mixing_input, log));
         model_layers += modelLayers(plan);
         next_index = renumber(plan, next_index, first_group);
         if (on_plan)

@@ -334,3 +334,36 @@ def test_x_gradient_bands_follow_the_field(models, tmp_path, report):
            f"field; purge {purge:.0f} mm3 = {purge / model:.1f}x the model's {model:.0f} mm3; pictures: "
            f"{tmp_path / 'bar_outer_walls.png'}, {tmp_path / 'bar.png'}")
     assert fraction >= 0.90
+
+
+def test_one_at_a_time_carries_the_chamber_from_object_to_object(models, tmp_path, report):
+    """The two cubes as two mesh groups (print_sequence one_at_a_time, `--next`, as Cura sends them): the second
+    cube starts with the first cube's mix in the chamber, and its walls still leave within 0.1 of its own."""
+    out = tmp_path / "sequence.gcode"
+    proc = helpers.mixengine("slice", "-j", PROFILE, *[w for s in CHAMBER for w in ("-s", s)], "-s", "mixing_mode=dual",
+                             "-s", "print_sequence=one_at_a_time", "-s", f"mixing_channel_colors={YELLOW_BLUE}",
+                             "-l", models["left"], "-s", "mixing_ratio=1:0", "--next", "-l", models["right"], "-s",
+                             "mixing_ratio=0:1", "-o", out)
+    assert proc.returncode == 0, proc.stderr
+    replayed = replay(read_mixing_gcode(out, "eb_axes").moves, DIAMETER_MM, VOLUME_MM3, STAGES)
+    asked = halves_asked(replayed)
+    second = [r for r in replayed if r.extruding and r.move.feature == "WALL-OUTER" and asked(r.move) == B]
+    within = sum(r.length for r in second if share_distance(r.outlet, B) <= TOLERANCE)
+    total = sum(r.length for r in second)
+    # the engine knows what the chamber holds when the second cube starts: its predicted colours there are the
+    # replay's (the chamber carried over from the first group, not a fresh one full of B)
+    extruding = [r for r in replayed if r.extruding]
+    colours = predicted_colours(out)
+    assert len(colours) == len(extruding)
+    start = 1 + max(i for i, r in enumerate(extruding) if "left" in r.move.mesh)  # the second group's first move
+    worst = 0
+    for r, written in list(zip(extruding, colours))[start:start + 40:2]:
+        # the engine colours mixes at 1/1000 of a share (near pure yellow 1/1000 of blue moves the colour 7/255)
+        share_b = round(r.outlet[1] / sum(r.outlet), 3)
+        got = [int(written[i:i + 2], 16) for i in (1, 3, 5)]
+        worst = max(worst, min(max(abs(g - e) for g, e in zip(got, mix_colour(f"{1 - b:.3f}:{b:.3f}")))
+                               for b in {max(0.0, share_b - 0.001), share_b, min(1.0, share_b + 0.001)}))
+    report(f"chamber one at a time: the second cube's outer walls {100 * within / total:.1f} % within {TOLERANCE} "
+           f"of B after the first cube's A; its first moves' ;PREDICTED_COLOR: within {worst}/255 of the replay")
+    assert within >= 0.95 * total
+    assert worst <= 3
