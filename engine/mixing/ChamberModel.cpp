@@ -15,8 +15,14 @@ std::vector<double> poissonWeights(double tau, int count) {
         return w;
     }
     const double log_tau = std::log(tau);
-    for (int i = 0; i < count; ++i)
-        w[static_cast<std::size_t>(i)] = std::exp(-tau + i * log_tau - std::lgamma(i + 1.0));
+    double log_w = -tau;  // log of e^(−τ) τ^i / i!, term by term
+    for (int i = 0; i < count; ++i) {
+        if (i > 0)
+            log_w += log_tau - std::log(static_cast<double>(i));
+        w[static_cast<std::size_t>(i)] = std::exp(log_w);
+        if (i > tau && log_w < -40)
+            break;  // past the mode and below 1e-17: the rest are smaller still (left 0)
+    }
     return w;
 }
 
@@ -85,10 +91,18 @@ MixVector Chamber::push(const MixVector& inlet, double volume_mm3) {
     for (int j = 0; j < n; ++j)
         for (int c = 0; c < channels_; ++c)
             left_delta[c] += d[static_cast<std::size_t>(j)][c] * p[static_cast<std::size_t>(n - 1 - j)] / tau;
+    // Poisson weights past the mode that fell below 1e-17 add nothing: a short push (τ ≪ 1, most extrusions)
+    // mixes each tank with its few neighbours upstream only, so a long chain costs O(N), not O(N²).
+    int reach = n - 1;
+    for (int i = static_cast<int>(tau) + 1; i < n; ++i)
+        if (w[static_cast<std::size_t>(i)] < 1e-17) {
+            reach = i;
+            break;
+        }
     for (int k = n - 1; k >= 0; --k) {
         MixVector next;
         next.channels = channels_;
-        for (int j = 0; j <= k; ++j)
+        for (int j = std::max(0, k - reach); j <= k; ++j)
             for (int c = 0; c < channels_; ++c)
                 next[c] += d[static_cast<std::size_t>(j)][c] * w[static_cast<std::size_t>(k - j)];
         tanks_[static_cast<std::size_t>(k)] = scaled(inlet, next, 1.0, channels_);
