@@ -213,6 +213,8 @@ def _purge(report, density):
         return None
     changes = report.changes
     if not report.purge_mm3 and not changes:
+        if report.looser_mm3 is not None:  # planned: the mix changes inside layers, hidden extrusions absorb it
+            return "No purge: the hidden extrusions (infill, inner walls, support, raft) absorb every change of mix."
         return "No purge: the mix does not change inside a layer."
     what = "%d change%s of mix inside layers" % (changes, "" if changes == 1 else "s") if changes else None
     if report.purge_mm3:

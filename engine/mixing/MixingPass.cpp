@@ -238,17 +238,21 @@ std::vector<std::vector<StepTarget>> targetMixes(PrintPlan& plan, const GroupSch
     return targets;
 }
 
-/// Whether some layer's visible extrusions ask for more than one mix.
+/// Whether some layer that shows a visible extrusion asks for more than one mix: two models, painted regions,
+/// or support, raft or shield in another mix than the model beside them.
 bool mixChangesInLayers(const std::vector<std::vector<StepTarget>>& targets) {
     for (const std::vector<StepTarget>& layer : targets) {
         int first = -1;
+        bool visible = false, several = false;
         for (const StepTarget& t : layer) {
-            if (!t.visible)
+            if (t.mix < 0)
                 continue;
-            if (first >= 0 && t.mix != first)
-                return true;
+            visible = visible || t.visible;
+            several = several || (first >= 0 && t.mix != first);
             first = t.mix;
         }
+        if (visible && several)
+            return true;
     }
     return false;
 }

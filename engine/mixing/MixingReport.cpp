@@ -84,7 +84,11 @@ std::vector<std::string> MixingReport::summaryLines() const {
         " of the visible surface (outer walls, skin) leaves the nozzle within dE00 3 of its colour, " +
         percent(visible.within_share_mm, visible.visible_mm) + " within " + fixed(tolerance, 3) +
         " of its mix; worst: " + worstText(visible.worst));
-    if (planned) {
+    if (planned && transitions.changes == 0) {
+        lines.push_back(
+            "mixing: the mixes inside layers needed no purge: the hidden extrusions (infill, inner "
+            "walls, support, raft) absorbed every change");
+    } else if (planned) {
         std::string purge = "mixing: " + std::to_string(transitions.changes) +
                             " changes of mix inside layers (" +
                             std::to_string(transitions.layers_with_changes) + " layers); purge " +

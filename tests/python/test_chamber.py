@@ -367,3 +367,20 @@ def test_one_at_a_time_carries_the_chamber_from_object_to_object(models, tmp_pat
            f"of B after the first cube's A; its first moves' ;PREDICTED_COLOR: within {worst}/255 of the replay")
     assert within >= 0.95 * total
     assert worst <= 3
+
+
+def test_support_in_another_mix_does_not_smear_the_model(corpus, tmp_path, report):
+    """The knot in B with support (mixing_support_ratio 1: filament A) and a 40 mm³ chamber: support shares the
+    model's layers, so the changes are planned — the support, hidden, absorbs them — and the model's outer walls
+    leave the nozzle in B (without planning, 26 % of them did)."""
+    out = tmp_path / "knot.gcode"
+    proc = helpers.mixengine("slice", "-j", PROFILE, *[w for s in CHAMBER for w in ("-s", s)], "-s", "mixing_mode=dual",
+                             "-s", "mixing_ratio=0:1", "-s", "support_enable=true", "-s",
+                             f"mixing_channel_colors={YELLOW_BLUE}", "-l", corpus("knot2"), "-o", out)
+    assert proc.returncode == 0, proc.stderr
+    replayed = replay(read_mixing_gcode(out, "eb_axes").moves, DIAMETER_MM, VOLUME_MM3, STAGES)
+    assert any(r.extruding and r.move.feature == "SUPPORT" for r in replayed)
+    fraction, length = outer_wall_fraction(replayed, lambda move: B, TOLERANCE)
+    report(f"chamber knot with support: {100 * fraction:.1f} % of {length:.0f} mm outer wall within {TOLERANCE} of B; "
+           f"purge {purge_volume(replayed):.0f} mm3")
+    assert fraction >= 0.95

@@ -289,3 +289,19 @@ def test_one_message_per_mixing_slice_in_cura_python():
     assert unknown["density"] is None and unknown["visible"] == [MixReport.messageText(MixReport.read(TWO_CUBES))]
     assert steps["two materials"]["density"] is None and len(steps["two materials"]["visible"]) == 1
     assert steps["no G-code"]["visible"] == [] and steps["no G-code"]["state"] == "not a mixing slice"
+
+
+def test_changes_absorbed_by_hidden_extrusions_need_no_purge():
+    """Support beside a model in another mix (the knot with support, issue 26): the changes are planned (the
+    looser-tolerance line is there) and the hidden extrusions absorb them all."""
+    absorbed = """;MIXING.CHAMBER:40.0 mm3 in 3 stages
+;MIXING.VISIBLE_WITHIN_DE00_3:100.0%
+;MIXING.VISIBLE_WITHIN_TOLERANCE:100.0% (0.100)
+;MIXING.WORST:dE00 0.0 (share off by 0.000) at layer 0 X121.46 Y102.05 WALL-OUTER
+;MIXING.PURGE_MM3:0.0
+;MIXING.CHANGES:0
+;MIXING.PURGE_MM3_AT_TOLERANCE_0.200:0.0 (needed at 0.100: 0.0)
+"""
+    text = MixReport.messageText(MixReport.read(absorbed), PLA)
+    assert text.endswith("\nNo purge: the hidden extrusions (infill, inner walls, support, raft) absorb every change "
+                         "of mix."), text
