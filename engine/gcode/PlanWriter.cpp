@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "gcode/NumberFormat.h"
+#include "mixing/ColorSpace.h"
 
 namespace mixengine {
 namespace {
@@ -68,13 +69,6 @@ TimeFeature timeFeature(Feature feature) {
         default:
             return TimeFeature::None;
     }
-}
-
-/// {255, 128, 0} → "#ff8000".
-std::string hexColor(const std::array<std::uint8_t, 3>& rgb) {
-    char text[8];
-    std::snprintf(text, sizeof text, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
-    return text;
 }
 
 /// cool_lift_head (planning/Cooling.h), written as CuraEngine 4.13 writes it.
@@ -176,7 +170,7 @@ void writeLayer(const PlannedLayer& layer, int number, const PlanTables& tables,
             step.outlet_color != outlet_color) {
             outlet_color = step.outlet_color;
             gcode.comment("PREDICTED_COLOR:" +
-                          hexColor(tables.outlet_colors[static_cast<std::size_t>(outlet_color)]));
+                          hexOf(tables.outlet_colors[static_cast<std::size_t>(outlet_color)]));
         }
         writeStep(step, layer.z, tables, params, gcode, out);
     }

@@ -37,10 +37,10 @@ std::vector<double> gammaP(const std::vector<double>& weights) {
     return p;
 }
 
-MixVector scaled(const MixVector& base, const MixVector& delta, double factor, int channels) {
+MixVector plus(const MixVector& base, const MixVector& delta, int channels) {
     MixVector out = base;
     for (int c = 0; c < channels; ++c)
-        out[c] = base[c] + factor * delta[c];
+        out[c] = base[c] + delta[c];
     return out;
 }
 
@@ -105,19 +105,19 @@ MixVector Chamber::push(const MixVector& inlet, double volume_mm3) {
         for (int j = std::max(0, k - reach); j <= k; ++j)
             for (int c = 0; c < channels_; ++c)
                 next[c] += d[static_cast<std::size_t>(j)][c] * w[static_cast<std::size_t>(k - j)];
-        tanks_[static_cast<std::size_t>(k)] = scaled(inlet, next, 1.0, channels_);
+        tanks_[static_cast<std::size_t>(k)] = plus(inlet, next, channels_);
     }
-    return scaled(inlet, left_delta, 1.0, channels_);
+    return plus(inlet, left_delta, channels_);
 }
 
 double Chamber::volumeToReach(const MixVector& inlet, double tolerance) const {
-    if (spec_.ideal() || shareDistance(outlet(), inlet) <= tolerance) {
-        bool settled = true;  // the outlet only stays close when no tank upstream is farther off
-        for (const MixVector& tank : tanks_)
-            settled = settled && shareDistance(tank, inlet) <= tolerance;
-        if (settled || spec_.ideal())
-            return 0;
-    }
+    // settled: every tank within the tolerance (the outlet only stays close when none upstream is farther
+    // off)
+    const bool settled = std::all_of(tanks_.begin(), tanks_.end(), [&](const MixVector& tank) {
+        return shareDistance(tank, inlet) <= tolerance;
+    });
+    if (spec_.ideal() || settled)
+        return 0;
     // Bisection on the volume: the outlet of a chain whose tanks all lie on one side converges
     // monotonically; mixed histories may overshoot once, so the search asks for the outlet to be within
     // the tolerance at the found volume and a quarter chamber later.

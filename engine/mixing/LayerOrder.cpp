@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "mixing/ChamberModel.h"
+#include "mixing/StepContext.h"
 
 namespace mixengine {
 namespace {
@@ -12,8 +13,7 @@ struct Segment {
     std::size_t begin = 0, end = 0;  ///< steps [begin, end)
     int mix = -1;
     bool visible = false;
-    std::optional<Point2> start;                           ///< where the head is before its first step
-    int mesh_step = -1, feature_step = -1, fan_step = -1;  ///< markers in force at `begin` (−1: none)
+    StepContext before;  ///< the markers in force and the head's place at `begin`
 };
 
 bool reorderable(const PlannedLayer& layer) {
@@ -24,11 +24,6 @@ bool reorderable(const PlannedLayer& layer) {
             return false;
     }
     return true;
-}
-
-bool moves(const PlanStep& step) {
-    return step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude ||
-           step.kind == PlanStep::Kind::LiftHead;
 }
 
 /// The segments of the steps before `tail` (the first step after the last extrusion). A segment
@@ -44,7 +39,7 @@ std::vector<Segment> segmentsOf(const PlannedLayer& layer, const std::vector<Ste
         if (!segments.empty() && segments.back().mix == t.mix && segments.back().visible == t.visible)
             segments.back().end = i + 1;
         else
-            segments.push_back({begin, i + 1, t.mix, t.visible, std::nullopt, -1, -1, -1});
+            segments.push_back({begin, i + 1, t.mix, t.visible, {}});
         begin = i + 1;
     }
     return segments;
@@ -52,26 +47,12 @@ std::vector<Segment> segmentsOf(const PlannedLayer& layer, const std::vector<Ste
 
 /// The markers and start of a segment, recorded where its lead-in begins.
 void fixLeadIns(const PlannedLayer& layer, std::vector<Segment>& segments) {
-    std::optional<Point2> head;
-    int mesh = -1, feature = -1, fan = -1;
+    StepContext context;
     std::size_t next = 0;
     for (std::size_t i = 0; i < layer.steps.size() && next < segments.size(); ++i) {
-        while (next < segments.size() && segments[next].begin == i) {
-            segments[next].start = head;
-            segments[next].mesh_step = mesh;
-            segments[next].feature_step = feature;
-            segments[next].fan_step = fan;
-            ++next;
-        }
-        const PlanStep& step = layer.steps[i];
-        if (step.kind == PlanStep::Kind::SetMesh)
-            mesh = static_cast<int>(i);
-        if (step.kind == PlanStep::Kind::SetFeature)
-            feature = static_cast<int>(i);
-        if (step.kind == PlanStep::Kind::SetFan)
-            fan = static_cast<int>(i);
-        if (moves(step))
-            head = step.to;
+        for (; next < segments.size() && segments[next].begin == i; ++next)
+            segments[next].before = context;
+        context.advance(layer.steps[i]);
     }
 }
 
@@ -137,27 +118,15 @@ const PlanStep* travelTemplate(const PlannedLayer& layer) {
 /// Whether the segment's first move is a travel (it then needs no travel to its start).
 bool startsWithTravel(const PlannedLayer& layer, const Segment& segment) {
     for (std::size_t i = segment.begin; i < segment.end; ++i)
-        if (moves(layer.steps[i]))
+        if (movesHead(layer.steps[i]))
             return layer.steps[i].kind == PlanStep::Kind::Travel;
     return false;
 }
 
-/// The steps that let a segment print out of its original order.
-void leadIn(const PlannedLayer& layer, const Segment& segment, const PlanStep& travel, OrderedLayer& out) {
-    for (int marker : {segment.mesh_step, segment.feature_step, segment.fan_step}) {
-        if (marker < 0)
-            continue;
-        out.steps.push_back(layer.steps[static_cast<std::size_t>(marker)]);
-        out.targets.emplace_back();
-    }
-    if (!segment.start)
-        return;  // it starts with a travel of its own (orderByMix checks)
-    PlanStep go = travel;
-    go.to = *segment.start;
-    go.retract = true;
-    go.prime_first = false;
-    out.steps.push_back(go);
-    out.targets.emplace_back();
+/// The steps that let a segment print out of its original order: the markers in force where it began and
+/// a retracting travel there (none when the segment starts with a travel of its own; orderByMix checks).
+void leadIn(const Segment& segment, const PlanStep& travel, OrderedLayer& out) {
+    out.targets.resize(out.targets.size() + segment.before.resumeInto(travel, out.steps));
 }
 
 }  // namespace
@@ -188,9 +157,9 @@ OrderedLayer orderByMix(const PlannedLayer& layer, const std::vector<StepTarget>
         const Segment& s = segments[order[k]];
         const bool in_place = k == 0 ? order[k] == 0 : order[k] == order[k - 1] + 1;
         if (!in_place) {
-            if (!s.start && !startsWithTravel(layer, s))
+            if (!s.before.head() && !startsWithTravel(layer, s))
                 return {layer.steps, targets, false};
-            leadIn(layer, s, *travel, out);
+            leadIn(s, *travel, out);
             out.reordered = true;
         }
         out.steps.insert(out.steps.end(), layer.steps.begin() + static_cast<std::ptrdiff_t>(s.begin),

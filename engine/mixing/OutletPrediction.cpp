@@ -3,6 +3,8 @@
 #include <cmath>
 #include <map>
 
+#include "mixing/StepContext.h"
+
 namespace mixengine {
 namespace {
 
@@ -24,15 +26,10 @@ class ColorCache {
                 rounded[c] = static_cast<double>(key[static_cast<std::size_t>(c)]) / 1000.0;
             const Lab lab = model_.predictLab(rounded);
             const Rgb rgb = model_.space().srgbOf(lab);
-            int color = -1;
-            for (std::size_t i = 0; i < plan_.outlet_colors.size() && color < 0; ++i)
-                if (plan_.outlet_colors[i] == rgb)
-                    color = static_cast<int>(i);
-            if (color < 0) {
-                color = static_cast<int>(plan_.outlet_colors.size());
+            const auto [known, added] = colors_.emplace(rgb, static_cast<int>(plan_.outlet_colors.size()));
+            if (added)
                 plan_.outlet_colors.push_back(rgb);
-            }
-            it = index_.emplace(key, std::pair{color, lab}).first;
+            it = index_.emplace(key, std::pair{known->second, lab}).first;
         }
         return it->second;
     }
@@ -41,6 +38,7 @@ class ColorCache {
     const PigmentModel& model_;
     PrintPlan& plan_;
     std::map<MixKey, std::pair<int, Lab>> index_;
+    std::map<Rgb, int> colors_;  ///< index of each distinct colour in plan.outlet_colors
 };
 
 /// Where a visible extrusion is.
@@ -93,8 +91,7 @@ VisibleReport predictOutlet(PrintPlan& plan, const std::vector<std::vector<StepT
             if (step.kind == PlanStep::Kind::SetMesh)
                 mesh = step.mesh_index;
             const std::optional<Point2> from = head;
-            if (step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude ||
-                step.kind == PlanStep::Kind::LiftHead)
+            if (movesHead(step))
                 head = step.to;
             if (step.kind != PlanStep::Kind::Extrude || step.mix < 0)
                 continue;

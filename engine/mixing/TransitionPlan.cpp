@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mixing/StepContext.h"
+
 namespace mixengine {
 namespace {
 
@@ -97,33 +99,6 @@ void printBounds(const PrintPlan& plan, TowerSite& site) {
             }
 }
 
-/// The markers in force and the head position just before step `at` of `steps`.
-struct Resume {
-    std::vector<PlanStep> markers;
-    std::optional<Point2> head;
-};
-
-Resume resumeAt(const std::vector<PlanStep>& steps, std::size_t at) {
-    const PlanStep *mesh = nullptr, *feature = nullptr, *fan = nullptr;
-    Resume r;
-    for (std::size_t k = 0; k < at; ++k) {
-        const PlanStep& s = steps[k];
-        if (s.kind == PlanStep::Kind::SetMesh)
-            mesh = &s;
-        if (s.kind == PlanStep::Kind::SetFeature)
-            feature = &s;
-        if (s.kind == PlanStep::Kind::SetFan)
-            fan = &s;
-        if (s.kind == PlanStep::Kind::Travel || s.kind == PlanStep::Kind::Extrude ||
-            s.kind == PlanStep::Kind::LiftHead)
-            r.head = s.to;
-    }
-    for (const PlanStep* m : {mesh, feature, fan})
-        if (m)
-            r.markers.push_back(*m);
-    return r;
-}
-
 /// One layer's tower visits.
 struct LayerTower {
     TowerCursor cursor;
@@ -144,15 +119,10 @@ void visitTower(LayerTower& tower, double volume_mm3, int mix, const std::vector
     out.push_back(feature);
     tower.extrude.mix = mix;
     tower.cursor.emit(volume_mm3, tower.travel, tower.extrude, out);
-    const Resume resume = resumeAt(steps, at);
-    out.insert(out.end(), resume.markers.begin(), resume.markers.end());
-    if (resume.head) {
-        PlanStep back = tower.travel;
-        back.to = *resume.head;
-        back.retract = true;
-        back.prime_first = false;
-        out.push_back(back);
-    }
+    StepContext before;
+    for (std::size_t k = 0; k < at; ++k)
+        before.advance(steps[k]);
+    before.resumeInto(tower.travel, out);
 }
 
 const PlanStep* firstTravel(const PlannedLayer& layer) {
@@ -258,6 +228,14 @@ int nextCommand(const std::vector<int>& commands, std::size_t k) {
     return -1;
 }
 
+/// The last commanded mix of a layer (−1: none).
+int lastCommand(const std::vector<int>& commands) {
+    for (std::size_t j = commands.size(); j-- > 0;)
+        if (commands[j] >= 0)
+            return commands[j];
+    return -1;
+}
+
 std::optional<LayerTower> layerTower(const PrintPlan& plan, std::size_t l,
                                      const std::optional<TowerPlan>& tower,
                                      const TransitionSettings& settings) {
@@ -295,7 +273,7 @@ void planLayer(PrintPlan& plan, std::size_t l, std::vector<StepTarget>& targets,
             step.mix = commands[k];
         w.push(step, targets[k]);
     }
-    const int last = nextCommand(std::vector<int>(commands.rbegin(), commands.rend()), 0);
+    const int last = lastCommand(commands);
     if (here && here->cursor.volumeLeftMm3() > 1e-6 && last >= 0) {
         std::vector<PlanStep> visit;
         visitTower(*here, here->cursor.volumeLeftMm3(), last, w.out, w.out.size(), visit);
