@@ -58,6 +58,23 @@ TEST(MixingChamberModel, WhatLeavesDuringAPushIsTheAverageOfTheOutlet) {
     EXPECT_NEAR(chamber.push(kB, total)[1], integral / total, 1e-7);
 }
 
+TEST(MixingChamberModel, WhatLeavesAMixedChamberIsTheAverageOfItsOutlet) {
+    // From a chamber whose tanks differ (part way through a change), the average of a push is the mean of
+    // the outlet over the push: the trapezoid rule over 20000 small pushes of the same chamber.
+    Chamber whole({40, 3}, kA);
+    whole.push(kB, 25);
+    Chamber small = whole;
+    const double total = 30;
+    const int n = 20000;
+    double integral = 0, before = small.outlet()[1];
+    for (int i = 0; i < n; ++i) {
+        small.push(kA, total / n);
+        integral += (before + small.outlet()[1]) / 2 * (total / n);
+        before = small.outlet()[1];
+    }
+    EXPECT_NEAR(whole.push(kA, total)[1], integral / total, 1e-7);
+}
+
 TEST(MixingChamberModel, AFullChangeToATenthNeedsSeventyOneCubicMillimetres) {
     // e^-t (1 + t + t²/2) = 0.1 at t = 5.3223 tank volumes of 40/3 mm³ (issue 26: "about 71 mm³").
     EXPECT_NEAR(fullChangeVolumeMm3({40, 3}, 0.1), 70.964, 0.02);
