@@ -24,7 +24,8 @@ double largestSlope(const std::vector<GradientStop>& stops) {
 
 }  // namespace
 
-FieldBands::FieldBands(const MeshMixing& mixing, const Mesh& mesh, double tolerance) : axis_(mixing.axis) {
+FieldBands::FieldBands(const MeshMixing& mixing, const Mesh& mesh, double tolerance)
+    : axis_(mixing.axis), stops_(mixing.stops) {
     const AABB3 box = mesh.bounds();
     if (axis_ == GradientAxis::Radial) {
         centre_ = {(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
@@ -37,13 +38,13 @@ FieldBands::FieldBands(const MeshMixing& mixing, const Mesh& mesh, double tolera
     }
     extent_um_ = std::max(extent_um_, 1.0);
     // stop heights → microns along the axis
-    const double um_per_unit = mixing.unit == HeightUnit::Percent ? extent_um_ / 100.0 : 1000.0;
-    const double slope = largestSlope(mixing.stops) / um_per_unit;  // share per micron
+    um_per_unit_ = mixing.unit == HeightUnit::Percent ? extent_um_ / 100.0 : 1000.0;
+    const double slope = largestSlope(mixing.stops) / um_per_unit_;  // share per micron
     band_um_ = slope > 0 ? std::max(kMinBandUm, tolerance / 2 / slope) : extent_um_;
     const int count = std::max(1, static_cast<int>(std::ceil(extent_um_ / band_um_ - 1e-9)));
     for (int b = 0; b < count; ++b) {
         const double middle_um = std::min(extent_um_, (b + 0.5) * band_um_);
-        mixes_.push_back(mixAtHeight(mixing.stops, middle_um / um_per_unit));
+        mixes_.push_back(mixAtHeight(mixing.stops, middle_um / um_per_unit_));
     }
 }
 
@@ -52,6 +53,10 @@ double FieldBands::coordinateMm(const Point3& p) const {
         return distanceUm(centre_, {p.x, p.y}) / 1000.0;
     return ((axis_ == GradientAxis::X ? static_cast<double>(p.x) : static_cast<double>(p.y)) - low_um_) /
            1000.0;
+}
+
+std::optional<MixVector> FieldBands::exactMixAt(const Point3& p) const {
+    return mixAtHeight(stops_, coordinateMm(p) * 1000.0 / um_per_unit_);
 }
 
 int FieldBands::regionAt(const Point3& p) const {

@@ -28,6 +28,8 @@ class FieldBands : public RegionField {
     FieldBands(const MeshMixing& mixing, const Mesh& mesh, double tolerance);
 
     int regionAt(const Point3& p) const override;
+    /// The field itself at `p` (the stops at its coordinate), not rounded to a band.
+    std::optional<MixVector> exactMixAt(const Point3& p) const override;
     int bands() const { return static_cast<int>(mixes_.size()); }
     const MixVector& bandMix(int band) const { return mixes_[static_cast<std::size_t>(band)]; }
     double bandWidthMm() const { return band_um_ / 1000.0; }
@@ -40,6 +42,8 @@ class FieldBands : public RegionField {
     Point2 centre_{0, 0};   ///< radial: the vertical centre axis
     double extent_um_ = 0;  ///< the model's extent along the axis
     double band_um_ = 1000;
+    double um_per_unit_ = 1000;  ///< the stops' unit (percent of the extent or mm) in microns
+    std::vector<GradientStop> stops_;
     std::vector<MixVector> mixes_;
 };
 
