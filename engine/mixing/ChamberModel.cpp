@@ -6,7 +6,23 @@
 namespace mixengine {
 namespace {
 
-/// e^(−τ) τ^i / i! for i = 0..count−1 (the Poisson weights), in log space so no term overflows.
+MixVector plus(const MixVector& base, const MixVector& delta, int channels) {
+    MixVector out = base;
+    for (int c = 0; c < channels; ++c)
+        out[c] = base[c] + delta[c];
+    return out;
+}
+
+MixVector difference(const MixVector& a, const MixVector& b, int channels) {
+    MixVector d;
+    d.channels = channels;
+    for (int c = 0; c < channels; ++c)
+        d[c] = a[c] - b[c];
+    return d;
+}
+
+}  // namespace
+
 std::vector<double> poissonWeights(double tau, int count) {
     std::vector<double> w(static_cast<std::size_t>(count), 0.0);
     if (tau <= 0) {
@@ -26,7 +42,6 @@ std::vector<double> poissonWeights(double tau, int count) {
     return w;
 }
 
-/// P(n, τ) = 1 − Σ_{i<n} e^(−τ) τ^i / i!, for n = 1..count, from the Poisson weights.
 std::vector<double> gammaP(const std::vector<double>& weights) {
     std::vector<double> p(weights.size());
     double below = 0;
@@ -36,23 +51,6 @@ std::vector<double> gammaP(const std::vector<double>& weights) {
     }
     return p;
 }
-
-MixVector plus(const MixVector& base, const MixVector& delta, int channels) {
-    MixVector out = base;
-    for (int c = 0; c < channels; ++c)
-        out[c] = base[c] + delta[c];
-    return out;
-}
-
-MixVector difference(const MixVector& a, const MixVector& b, int channels) {
-    MixVector d;
-    d.channels = channels;
-    for (int c = 0; c < channels; ++c)
-        d[c] = a[c] - b[c];
-    return d;
-}
-
-}  // namespace
 
 double shareDistance(const MixVector& a, const MixVector& b) {
     double worst = 0;

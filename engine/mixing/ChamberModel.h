@@ -23,6 +23,13 @@ struct ChamberSpec {
     bool ideal() const { return volume_mm3 <= 0; }
 };
 
+/// e^(−τ) τ^i / i! for i = 0..count−1 (the Poisson weights of a push of τ tank volumes); past the mode,
+/// weights below 1e-17 are left 0. Computed in log space so no term overflows.
+std::vector<double> poissonWeights(double tau, int count);
+/// P(n, τ) = 1 − Σ_{i<n} e^(−τ) τ^i / i! (the regularised lower incomplete gamma function) for
+/// n = 1..weights.size(), from poissonWeights(τ, …): element n − 1 is P(n, τ).
+std::vector<double> gammaP(const std::vector<double>& weights);
+
 /// max_c |a_c − b_c|.
 double shareDistance(const MixVector& a, const MixVector& b);
 
