@@ -47,6 +47,8 @@ class Chamber {
     /// (shareDistance) of `inlet`; 0 when it already is. Precise to 0.01 mm³.
     double volumeToReach(const MixVector& inlet, double tolerance) const;
     const ChamberSpec& spec() const { return spec_; }
+    /// The tanks' contents, from the inlet to the nozzle.
+    const std::vector<MixVector>& tanks() const { return tanks_; }
 
   private:
     ChamberSpec spec_;

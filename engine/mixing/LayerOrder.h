@@ -29,6 +29,9 @@ namespace mixengine {
 struct StepTarget {
     int mix = -1;
     bool visible = false;
+    /// A continuous field's own mix here (index into PrintPlan::mixes; mixing/RegionField.h exactMixAt),
+    /// of which `mix` is the band's approximation; −1: `mix` is meant
+    int exact = -1;
 };
 
 struct OrderedLayer {

@@ -11,6 +11,7 @@
 #include "mixing/MixSchedule.h"
 #include "mixing/PaintSchedule.h"
 #include "mixing/RegionSplit.h"
+#include "mixing/StepContext.h"
 #include "toolpaths/FeatureStyle.h"
 
 namespace mixengine {
@@ -23,6 +24,11 @@ struct ScopeSchedule {
     coord_um top_um = 0;
     MeshPaint paint;                    ///< color mode, painted 3MF faces: regions and their solved colours
     std::unique_ptr<FieldBands> bands;  ///< gradient along x, y or radial: its bands (the regions)
+
+    /// What divides the mesh into regions: its paint or its bands (null: neither).
+    const RegionField* field() const {
+        return paint.regions ? static_cast<const RegionField*>(paint.regions.get()) : bands.get();
+    }
 };
 
 struct MixLess {
@@ -104,10 +110,7 @@ std::vector<std::vector<int>> paintedRegions(PrintPlan& plan, const MixingGroup&
     std::vector<PaintedMesh> painted;
     bool any = false;
     for (std::size_t m = 0; m < meshes.size(); ++m) {
-        const RegionField* field = meshes[m].paint.regions
-                                       ? static_cast<const RegionField*>(meshes[m].paint.regions.get())
-                                       : meshes[m].bands.get();
-        painted.push_back({field, group.meshes[m].lift_um});
+        painted.push_back({meshes[m].field(), group.meshes[m].lift_um});
         any = any || painted.back().regions;
     }
     if (!any)
@@ -347,11 +350,6 @@ bool firstChangeNeeded(const PrintPlan& plan, const std::vector<std::vector<Step
     return false;
 }
 
-bool anyBands(const std::vector<ScopeSchedule>& meshes) {
-    return std::any_of(meshes.begin(), meshes.end(),
-                       [](const ScopeSchedule& s) { return s.bands != nullptr; });
-}
-
 /// One warning per model whose field (x, y or radial) the chamber cannot follow without purging.
 void warnAboutFields(const MixingGroup& group, const std::vector<ScopeSchedule>& meshes,
                      const MixingReport& report, Log& log) {
@@ -363,17 +361,66 @@ void warnAboutFields(const MixingGroup& group, const std::vector<ScopeSchedule>&
         const auto it = report.visible.by_mesh.find(static_cast<int>(m));
         const VisibleFigure figure = it == report.visible.by_mesh.end() ? VisibleFigure{} : it->second;
         const double whole = figure.visible_mm > 0 ? figure.visible_mm : 1.0;
-        char text[400];
+        const double within = figure.within_share_mm / whole;
+        if (report.transitions.purge_mm3 <= 0 && within >= 0.98)
+            continue;  // the chamber follows it unaided
+        char text[480];
         std::snprintf(
             text, sizeof text,
-            "': its %s gradient changes faster than the mixing chamber can follow (%d bands of %.1f mm in "
-            "a layer): the print purges %.0f mm3 for it and the bands of the other models, and %.1f %% of "
-            "its visible surface leaves the nozzle within %.2f of its band's mix (%.1f %% within dE00 3 of "
-            "it)",
+            "': its %s gradient changes faster than the mixing chamber can follow (%d bands of %.1f mm "
+            "in a layer, the chamber commanded ahead of the field): the print purges %.0f mm3 for it "
+            "and the fields of the other models, and %.1f %% of its visible surface leaves the nozzle "
+            "within %.2f of the field (%.1f %% within dE00 3 of it)%s",
             axisName(meshes[m].mixing.axis), meshes[m].bands->bands(), meshes[m].bands->bandWidthMm(),
-            report.transitions.purge_mm3, 100.0 * figure.within_share_mm / whole, report.tolerance,
-            100.0 * figure.within_de_mm / whole);
+            report.transitions.purge_mm3, 100.0 * within, report.tolerance,
+            100.0 * figure.within_de_mm / whole,
+            within < 0.9 ? "; more volume per layer (thicker layers, more walls or infill) lets the "
+                           "chamber follow it"
+                         : "");
         log.warning("mixing: '" + group.meshes[m].name + text);
+    }
+}
+
+/// A mix rounded to 1/1000 of each share (the last channel takes the rest), so near-equal field values
+/// share one entry of the plan's mixes.
+MixVector roundedMix(const MixVector& mix) {
+    MixVector out = mix;
+    double rest = 1.0;
+    for (int c = 0; c + 1 < mix.channels; ++c) {
+        out[c] = std::clamp(std::round(mix[c] * 1000.0) / 1000.0, 0.0, rest);
+        rest -= out[c];
+    }
+    out[mix.channels - 1] = std::max(0.0, rest);
+    return out;
+}
+
+/// StepTarget::exact of every visible extrusion of a mesh whose field is continuous: the field's own mix
+/// at the middle of the move, mid-layer, in the mesh's frame (as mixing/RegionSplit.h looks regions up).
+void markExactTargets(PrintPlan& plan, const MixingGroup& group, const std::vector<ScopeSchedule>& meshes,
+                      std::vector<std::vector<StepTarget>>& targets) {
+    MixTable table(plan.mixes);
+    for (std::size_t l = 0; l < plan.layers.size(); ++l) {
+        const PlannedLayer& layer = plan.layers[l];
+        const coord_um mid_layer = layer.z - (layer.thickness > 0 ? layer.thickness / 2 : 100);
+        Point2 at{};
+        const RegionField* field = nullptr;
+        coord_um lift_um = 0;
+        for (std::size_t i = 0; i < layer.steps.size(); ++i) {
+            const PlanStep& step = layer.steps[i];
+            if (step.kind == PlanStep::Kind::SetMesh) {
+                const bool ours =
+                    step.mesh_index >= 0 && static_cast<std::size_t>(step.mesh_index) < meshes.size();
+                field = ours ? meshes[static_cast<std::size_t>(step.mesh_index)].field() : nullptr;
+                lift_um = ours ? group.meshes[static_cast<std::size_t>(step.mesh_index)].lift_um : 0;
+            }
+            if (step.kind == PlanStep::Kind::Extrude && field && targets[l][i].visible && step.rise_um == 0) {
+                const Point3 mid{(at.X + step.to.X) / 2, (at.Y + step.to.Y) / 2, mid_layer - lift_um};
+                if (const std::optional<MixVector> exact = field->exactMixAt(mid))
+                    targets[l][i].exact = table.indexOf(roundedMix(*exact));
+            }
+            if (movesHead(step))
+                at = step.to;
+        }
     }
 }
 
@@ -401,17 +448,14 @@ MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
 
     const std::vector<std::vector<int>> regions = paintedRegions(plan, group, schedules.meshes);
     std::vector<std::vector<StepTarget>> targets = targetMixes(plan, schedules, regions);
+    markExactTargets(plan, group, schedules.meshes, targets);
     std::optional<Chamber> fresh;
     std::optional<Chamber>& chamber = group.chamber ? *group.chamber : fresh;
     const std::optional<Chamber> incoming = chamber;  // what the groups printed before left in it
     const bool starts_changed = incoming && firstChangeNeeded(plan, targets, *incoming, report.tolerance);
     if (!report.chamber.ideal() && (mixChangesInLayers(targets) || starts_changed)) {
         report.planned = true;
-        // a band's own error (at most a quarter of the tolerance, mixing/FieldBands.h) leaves the rest to the
-        // chamber
-        const double planned_tolerance =
-            anyBands(schedules.meshes) ? 0.75 * report.tolerance : report.tolerance;
-        TransitionSettings settings = transitionSettings(*group.settings, report.chamber, planned_tolerance);
+        TransitionSettings settings = transitionSettings(*group.settings, report.chamber, report.tolerance);
         settings.incoming = incoming;
         settings.keep_clear = group.printed_before;
         report.transitions = planTransitions(plan, targets, settings);

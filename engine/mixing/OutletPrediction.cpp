@@ -102,14 +102,15 @@ VisibleReport predictOutlet(PrintPlan& plan, const std::vector<std::vector<StepT
             const auto [color, out_lab] = colors.of(out);
             step.outlet_color = color;
             const StepTarget& t = targets[l][k];
-            if (!t.visible || t.mix < 0 || !from)
+            const int wanted = t.exact >= 0 ? t.exact : t.mix;  // a continuous field: its own value
+            if (!t.visible || wanted < 0 || !from)
                 continue;
-            auto it = asked.find(t.mix);
+            auto it = asked.find(wanted);
             if (it == asked.end())
-                it =
-                    asked.emplace(t.mix, model.predictLab(plan.mixes[static_cast<std::size_t>(t.mix)])).first;
+                it = asked.emplace(wanted, model.predictLab(plan.mixes[static_cast<std::size_t>(wanted)]))
+                         .first;
             measure({layer.index, step.to, feature, mesh}, distanceMm(*from, step.to), it->second, out_lab,
-                    shareDistance(out, plan.mixes[static_cast<std::size_t>(t.mix)]), tolerance, report);
+                    shareDistance(out, plan.mixes[static_cast<std::size_t>(wanted)]), tolerance, report);
         }
     }
     return report;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mixing/LeadPlan.h"
 #include "mixing/TowerVisits.h"
 
 namespace mixengine {
@@ -191,6 +192,10 @@ TransitionReport planTransitions(PrintPlan& plan, std::vector<std::vector<StepTa
         for (const StepTarget& t : targets[l])
             if (t.visible)
                 last_mix = t.mix;
+    }
+    if (asksForField(targets)) {  // a continuous field: lead the chamber (mixing/LeadPlan.h)
+        planLeading(plan, targets, settings, report);
+        return report;
     }
     const std::vector<double> needed =
         neededPerLayer(plan, targets, settings.chamber, settings.tolerance, settings.incoming);

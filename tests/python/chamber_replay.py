@@ -231,6 +231,36 @@ def render_side_view(replayed, colors, path, feature="WALL-OUTER", px_per_mm=20,
     return width, height
 
 
+def render_top_view(replayed, colors, path, layer, feature="SKIN", px_per_mm=10, asked=None):
+    """A picture of layer `layer`'s `feature` lines seen from above (X right, Y up), coloured by the outlet
+    mix; with `asked`, a second panel on the right shows the asked mix. Returns (width, height)."""
+    lines = [r for r in replayed if r.extruding and r.move.feature == feature and r.move.layer == layer]
+    if not lines:
+        raise ValueError(f"no {feature} extrusions on layer {layer} to draw")
+    xs = [x for r in lines for x in (r.move.start[0], r.move.end[0])]
+    ys = [y for r in lines for y in (r.move.start[1], r.move.end[1])]
+    x0, y0 = min(xs) - 1.0, min(ys) - 1.0
+    panel_w = math.ceil((max(xs) + 1.0 - x0) * px_per_mm)
+    height = math.ceil((max(ys) + 1.0 - y0) * px_per_mm)
+    panels = 2 if asked else 1
+    width = panels * panel_w + (panels - 1) * px_per_mm
+    image = [[(255, 255, 255)] * width for _ in range(height)]
+    for r in lines:
+        (sx, sy), (ex, ey) = r.move.start, r.move.end
+        shades = [(0, blend(colors, r.outlet))]
+        if asked:
+            shades.append((panel_w + px_per_mm, blend(colors, asked(r.move))))
+        samples = max(1, math.ceil(r.length * px_per_mm * 2))
+        for k in range(samples + 1):
+            t = k / samples
+            col = min(panel_w - 1, int((sx + (ex - sx) * t - x0) * px_per_mm))
+            row = height - 1 - min(height - 1, int((sy + (ey - sy) * t - y0) * px_per_mm))
+            for offset, rgb in shades:
+                image[row][col + offset] = rgb
+    _write_png(path, width, height, image)
+    return width, height
+
+
 def _write_png(path, width, height, image):
     raw = b"".join(b"\x00" + bytes(v for rgb in row for v in rgb) for row in image)
 

@@ -1,0 +1,272 @@
+#include "mixing/LeadPlan.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+#include "mixing/LeadCommands.h"
+#include "mixing/TowerVisits.h"
+
+namespace mixengine {
+namespace {
+
+constexpr double kPurgePieceMm3 = 2.0;  ///< a purge is planned in pieces of this much, one command each
+constexpr std::array<double, 7> kLadder = {0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0};  ///< full changes per layer
+constexpr double kGoal = 0.98;  ///< the visible share within the tolerance a purge aims for
+constexpr int kIterations = 250;
+
+const MixVector& askedOf(const PrintPlan& plan, const StepTarget& t) {
+    return plan.mixes[static_cast<std::size_t>(t.exact >= 0 ? t.exact : t.mix)];
+}
+
+/// Whether a layer's extrusions ask for more than one mix (or follow a field).
+bool layerChanges(const std::vector<StepTarget>& targets) {
+    int first = -1;
+    for (const StepTarget& t : targets) {
+        if (t.visible && t.exact >= 0)
+            return true;
+        if (t.mix >= 0 && first >= 0 && t.mix != first)
+            return true;
+        if (t.mix >= 0)
+            first = t.mix;
+    }
+    return false;
+}
+
+/// Where a layer's sweep turns: before its last run of visible extrusions in one mix (the next layer
+/// starts with that mix), after the extrusion before it; the first extrusion when none is visible.
+std::size_t turnOf(const std::vector<PlanStep>& steps, const std::vector<StepTarget>& targets) {
+    std::size_t first_extrusion = steps.size();
+    int run_mix = -1;
+    for (std::size_t k = steps.size(); k-- > 0;) {
+        if (steps[k].kind != PlanStep::Kind::Extrude)
+            continue;
+        first_extrusion = k;
+        const bool in_run = targets[k].visible && (run_mix < 0 || targets[k].mix == run_mix);
+        if (!in_run && run_mix >= 0)
+            return k + 1;
+        if (in_run)
+            run_mix = targets[k].mix;
+    }
+    return first_extrusion;
+}
+
+/// The cells of a layer's extrusions, with `purge_mm3` of purge in pieces where its sweep turns.
+void appendLayer(const PrintPlan& plan, std::size_t l, const std::vector<StepTarget>& targets,
+                 double purge_mm3, std::vector<FlowCell>& cells) {
+    const std::vector<PlanStep>& steps = plan.layers[l].steps;
+    const std::size_t turn = purge_mm3 > 0 ? turnOf(steps, targets) : steps.size();
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        for (double left = k == turn ? purge_mm3 : 0; left > 1e-9; left -= kPurgePieceMm3)
+            cells.push_back({std::min(left, kPurgePieceMm3), 0, {}});
+        if (steps[k].kind != PlanStep::Kind::Extrude)
+            continue;
+        const StepTarget& t = targets[k];
+        const bool asked = t.visible && (t.mix >= 0 || t.exact >= 0);
+        cells.push_back(
+            {steps[k].volume_mm3, asked ? steps[k].volume_mm3 : 0, asked ? askedOf(plan, t) : MixVector{}});
+    }
+}
+
+/// The chamber before the first cell: as earlier groups left it, or full of the first asked mix.
+std::vector<MixVector> startingTanks(const PrintPlan& plan,
+                                     const std::vector<std::vector<StepTarget>>& targets,
+                                     const TransitionSettings& settings) {
+    if (settings.incoming)
+        return settings.incoming->tanks();
+    for (std::size_t l = 0; l < plan.layers.size(); ++l)
+        for (std::size_t k = 0; k < targets[l].size(); ++k)
+            if (plan.layers[l].steps[k].kind == PlanStep::Kind::Extrude && targets[l][k].mix >= 0)
+                return std::vector<MixVector>(static_cast<std::size_t>(std::max(1, settings.chamber.stages)),
+                                              askedOf(plan, targets[l][k]));
+    return {};
+}
+
+/// The share of the asked volume whose outlet is within `tolerance`, for each of `tolerances`.
+std::array<double, 2> withinShares(const std::vector<FlowCell>& cells, const std::vector<MixVector>& outlets,
+                                   double tolerance) {
+    double asked = 0, within = 0, loose = 0;
+    for (std::size_t k = 0; k < cells.size(); ++k) {
+        if (cells[k].weight <= 0)
+            continue;
+        const double off = shareDistance(outlets[k], cells[k].asked);
+        asked += cells[k].weight;
+        within += off <= tolerance ? cells[k].weight : 0;
+        loose += off <= 2 * tolerance ? cells[k].weight : 0;
+    }
+    return asked > 0 ? std::array<double, 2>{within / asked, loose / asked} : std::array<double, 2>{1, 1};
+}
+
+/// The plan's facts the ladder is tried on.
+struct Sweep {
+    const PrintPlan& plan;
+    const std::vector<std::vector<StepTarget>>& targets;
+    const TransitionSettings& settings;
+    std::vector<MixVector> tanks;
+    std::vector<bool> purges;  ///< per layer: a tower visit (up to the last layer that changes)
+    double full_change_mm3 = 0;
+    double usual_thickness_mm = 0.1;
+
+    std::vector<double> purgePerLayer(double changes) const {
+        std::vector<double> out(plan.layers.size(), 0.0);
+        for (std::size_t l = 0; l < out.size(); ++l)
+            if (purges[l])
+                out[l] = changes * full_change_mm3 * micronsToMm(thicknessOf(plan, l)) / usual_thickness_mm;
+        return out;
+    }
+    std::array<double, 2> tryPurge(const std::vector<double>& purge) const {
+        std::vector<FlowCell> cells;
+        for (std::size_t l = 0; l < plan.layers.size(); ++l)
+            appendLayer(plan, l, targets[l], purge[l], cells);
+        const LeadSettings lead{settings.chamber, settings.tolerance / 2, kIterations};
+        const std::vector<MixVector> commands =
+            leadCommands(cells, tanks, leadingGuess(cells, settings.chamber.volume_mm3, tanks.front()), lead);
+        return withinShares(cells, outletsOf(cells, tanks, commands, settings.chamber), settings.tolerance);
+    }
+};
+
+Sweep sweepOf(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
+              const TransitionSettings& settings, double full_change_mm3) {
+    Sweep sweep{plan, targets, settings, startingTanks(plan, targets, settings), {}, full_change_mm3, 0.1};
+    sweep.purges.assign(plan.layers.size(), false);
+    std::vector<double> thickness_mm;
+    for (std::size_t l = plan.layers.size(); l-- > 0;) {
+        const bool changes = layerChanges(targets[l]);
+        sweep.purges[l] = changes || (l + 1 < plan.layers.size() && sweep.purges[l + 1]);
+        if (changes)
+            thickness_mm.push_back(micronsToMm(thicknessOf(plan, l)));
+    }
+    if (!thickness_mm.empty()) {
+        std::nth_element(thickness_mm.begin(), thickness_mm.begin() + thickness_mm.size() / 2,
+                         thickness_mm.end());
+        sweep.usual_thickness_mm = std::max(0.01, thickness_mm[thickness_mm.size() / 2]);
+    }
+    return sweep;
+}
+
+/// The rung of the ladder chosen for each of the tolerance and twice it.
+std::array<double, 2> chooseRungs(const Sweep& sweep) {
+    std::array<std::array<double, 2>, kLadder.size()> shares{};
+    std::array<double, 2> best{0, 0};
+    for (std::size_t r = 0; r < kLadder.size(); ++r) {
+        shares[r] = sweep.tryPurge(sweep.purgePerLayer(kLadder[r]));
+        for (int i = 0; i < 2; ++i)
+            best[static_cast<std::size_t>(i)] =
+                std::max(best[static_cast<std::size_t>(i)], shares[r][static_cast<std::size_t>(i)]);
+        if (shares[r][0] >= kGoal)
+            break;  // the tolerance's goal is met: so is twice it; no more purge is needed
+    }
+    // the tolerance: the goal, or within 2 points of the best the ladder reaches; twice the tolerance: the
+    // rung that leaves as much within it as the chosen rung leaves within the tolerance
+    std::array<double, 2> chosen{kLadder.back(), kLadder.back()};
+    std::size_t at = kLadder.size() - 1;
+    for (std::size_t r = 0; r < kLadder.size(); ++r)
+        if (shares[r][0] >= std::min(kGoal, best[0] - 0.02)) {
+            at = r;
+            break;
+        }
+    chosen[0] = kLadder[at];
+    for (std::size_t r = 0; r <= at; ++r)
+        if (shares[r][1] >= shares[at][0]) {
+            chosen[1] = kLadder[r];
+            break;
+        }
+    return chosen;
+}
+
+/// Layer l with a visit of the whole tower square where its sweep turns.
+void insertVisit(PrintPlan& plan, std::size_t l, LayerTower& tower, std::vector<StepTarget>& targets,
+                 TransitionReport& report) {
+    std::vector<PlanStep>& steps = plan.layers[l].steps;
+    const std::size_t at = turnOf(steps, targets);
+    if (at >= steps.size())
+        return;
+    std::vector<PlanStep> visit;
+    visitTower(tower, tower.cursor.volumeLeftMm3(), -1, steps, at, visit);
+    for (const PlanStep& s : visit)
+        report.purge_mm3 += s.kind == PlanStep::Kind::Extrude ? s.volume_mm3 : 0;
+    steps.insert(steps.begin() + static_cast<std::ptrdiff_t>(at), visit.begin(), visit.end());
+    targets.insert(targets.begin() + static_cast<std::ptrdiff_t>(at), visit.size(), StepTarget{});
+    plan.layers[l].layer_change_retract_step = -1;
+}
+
+/// Distinct commands, each stored once in the plan (rounded to 1/1000 of a share).
+class CommandTable {
+  public:
+    explicit CommandTable(std::vector<MixVector>& mixes) : mixes_(mixes) {}
+    int indexOf(const MixVector& mix) {
+        std::array<long, kMaxMixChannels> key{};
+        MixVector rounded = mix;
+        double rest = 1.0;
+        for (int c = 0; c + 1 < mix.channels; ++c) {
+            key[static_cast<std::size_t>(c)] = std::lround(std::clamp(mix[c], 0.0, 1.0) * 1000.0);
+            rounded[c] = std::min(rest, key[static_cast<std::size_t>(c)] / 1000.0);
+            rest -= rounded[c];
+        }
+        rounded[mix.channels - 1] = std::max(0.0, rest);
+        auto [it, added] = index_.emplace(key, static_cast<int>(mixes_.size()));
+        if (added)
+            mixes_.push_back(rounded);
+        return it->second;
+    }
+
+  private:
+    std::vector<MixVector>& mixes_;
+    std::map<std::array<long, kMaxMixChannels>, int> index_;
+};
+
+/// The commands over the print as it will be written, into every extrusion's PlanStep::mix.
+void setCommands(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets, const Sweep& sweep) {
+    std::vector<FlowCell> cells;
+    for (std::size_t l = 0; l < plan.layers.size(); ++l)
+        appendLayer(plan, l, targets[l], 0, cells);
+    const LeadSettings lead{sweep.settings.chamber, sweep.settings.tolerance / 2, 2 * kIterations};
+    const std::vector<MixVector> commands =
+        leadCommands(cells, sweep.tanks,
+                     leadingGuess(cells, sweep.settings.chamber.volume_mm3, sweep.tanks.front()), lead);
+    CommandTable table(plan.mixes);
+    std::size_t cell = 0;
+    for (PlannedLayer& layer : plan.layers)
+        for (PlanStep& step : layer.steps)
+            if (step.kind == PlanStep::Kind::Extrude)
+                step.mix = table.indexOf(commands[cell++]);
+}
+
+}  // namespace
+
+bool asksForField(const std::vector<std::vector<StepTarget>>& targets) {
+    for (const std::vector<StepTarget>& layer : targets)
+        for (const StepTarget& t : layer)
+            if (t.visible && t.exact >= 0)
+                return true;
+    return false;
+}
+
+void planLeading(PrintPlan& plan, std::vector<std::vector<StepTarget>>& targets,
+                 const TransitionSettings& settings, TransitionReport& report) {
+    const Sweep sweep = sweepOf(plan, targets, settings, report.full_change_mm3);
+    if (sweep.tanks.empty())
+        return;
+    const std::array<double, 2> rungs = chooseRungs(sweep);
+    const std::vector<double> needed = sweep.purgePerLayer(rungs[0]);
+    for (std::size_t l = 0; l < needed.size(); ++l) {
+        report.needed_mm3 += needed[l];
+        const bool changes = layerChanges(targets[l]);
+        report.changes += changes ? 1 : 0;
+        report.layers_with_changes += changes ? 1 : 0;
+    }
+    for (double v : sweep.purgePerLayer(rungs[1]))
+        report.looser_needed_mm3 += v;
+    const std::optional<TowerPlan> tower = sizeTower(plan, needed, settings, report);
+    if (tower)
+        report.tower = tower->shape;
+    else
+        report.unpurged_mm3 = report.needed_mm3;
+    for (std::size_t l = 0; l < plan.layers.size(); ++l)
+        if (std::optional<LayerTower> here = layerTower(plan, l, tower, settings))
+            insertVisit(plan, l, *here, targets[l], report);
+    setCommands(plan, targets, sweep);
+}
+
+}  // namespace mixengine
