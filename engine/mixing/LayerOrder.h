@@ -32,6 +32,9 @@ struct StepTarget {
     /// A continuous field's own mix here (index into PrintPlan::mixes; mixing/RegionField.h exactMixAt),
     /// of which `mix` is the band's approximation; −1: `mix` is meant
     int exact = -1;
+    /// A hidden extrusion asking for its model's core mix (mixing_core_ratio): wished for, never at the
+    /// cost of the visible surface
+    bool core = false;
 };
 
 struct OrderedLayer {

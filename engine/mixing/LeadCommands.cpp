@@ -152,19 +152,19 @@ std::vector<MixVector> unflatten(const std::vector<double>& flat, int channels) 
 /// The problem in flat arrays: weights normalised to a mean of 1 over the asked cells.
 struct Problem {
     const ChamberOperator& chamber;
-    std::vector<double> tanks, asked, weight;
+    std::vector<double> tanks, asked, weight, margin;  ///< margin: per cell
     int channels;
-    double margin;
 
     /// ∂ loss / ∂ outlet for every cell and channel.
     std::vector<double> errors(const std::vector<double>& outlets) const {
         std::vector<double> e(outlets.size(), 0.0);
         for (std::size_t i = 0; i < e.size(); ++i) {
-            const double w = weight[i / static_cast<std::size_t>(channels)];
-            if (w <= 0)
+            const std::size_t cell = i / static_cast<std::size_t>(channels);
+            if (weight[cell] <= 0)
                 continue;
+            const double w = weight[cell];
             const double d = outlets[i] - asked[i];
-            const double over = std::abs(d) - margin;
+            const double over = std::abs(d) - margin[cell];
             if (over > 0)
                 e[i] = 2.0 * w * (d > 0 ? over : -over);
         }
@@ -209,11 +209,12 @@ std::vector<MixVector> leadCommands(const std::vector<FlowCell>& cells, const st
         return start;
     const int channels = tanks.front().channels;
     const ChamberOperator op(cells, settings.chamber, channels);
-    Problem problem{op, flatten(tanks, channels), {}, {}, channels, settings.margin};
+    Problem problem{op, flatten(tanks, channels), {}, {}, {}, channels};
     double total = 0;
     int asked = 0;
     for (const FlowCell& cell : cells) {
         problem.weight.push_back(cell.weight);
+        problem.margin.push_back(cell.margin >= 0 ? cell.margin : settings.margin);
         total += cell.weight;
         asked += cell.weight > 0 ? 1 : 0;
         for (int c = 0; c < channels; ++c)

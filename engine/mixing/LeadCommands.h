@@ -26,8 +26,9 @@ namespace mixengine {
 
 struct FlowCell {
     double volume_mm3 = 0;
-    double weight = 0;  ///< how much its outlet counts (its volume, say); 0: free
-    MixVector asked;    ///< the mix it should leave the nozzle in (read when weight > 0)
+    double weight = 0;   ///< how much its outlet counts (its volume, say); 0: free
+    MixVector asked;     ///< the mix it should leave the nozzle in (read when weight > 0)
+    double margin = -1;  ///< share distance it may be off at no cost; < 0: LeadSettings::margin
 };
 
 struct LeadSettings {

@@ -15,6 +15,10 @@ constexpr double kPurgePieceMm3 = 2.0;  ///< a purge is planned in pieces of thi
 constexpr std::array<double, 7> kLadder = {0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0};  ///< full changes per layer
 constexpr double kGoal = 0.98;  ///< the visible share within the tolerance a purge aims for
 constexpr int kIterations = 250;
+/// A core cell's weight per mm³ against a visible one's: the core's mix is wished for, the visible
+/// surface's is what counts
+constexpr double kCoreWeight = 0.002;
+constexpr double kShellMargin = 0.0;  ///< a visible cell's margin in a print with a core
 
 const MixVector& askedOf(const PrintPlan& plan, const StepTarget& t) {
     return plan.mixes[static_cast<std::size_t>(t.exact >= 0 ? t.exact : t.mix)];
@@ -31,6 +35,24 @@ bool layerChanges(const std::vector<StepTarget>& targets) {
         if (t.mix >= 0)
             first = t.mix;
     }
+    return false;
+}
+
+/// An extrusion's cell: a visible one asks for its mix (the field's own where there is one), a core one
+/// wishes for the core's; others are free. `core`: the print has a core (visible cells keep closer).
+FlowCell cellOf(const PrintPlan& plan, const PlanStep& step, const StepTarget& t, bool core) {
+    if (t.visible && (t.mix >= 0 || t.exact >= 0))
+        return {step.volume_mm3, step.volume_mm3, askedOf(plan, t), core ? kShellMargin : -1};
+    if (t.core && t.mix >= 0)
+        return {step.volume_mm3, kCoreWeight * step.volume_mm3, askedOf(plan, t), 0};
+    return {step.volume_mm3, 0, {}, -1};
+}
+
+bool anyCore(const std::vector<std::vector<StepTarget>>& targets) {
+    for (const std::vector<StepTarget>& layer : targets)
+        for (const StepTarget& t : layer)
+            if (t.core)
+                return true;
     return false;
 }
 
@@ -54,7 +76,7 @@ std::size_t turnOf(const std::vector<PlanStep>& steps, const std::vector<StepTar
 
 /// The cells of a layer's extrusions, with `purge_mm3` of purge in pieces where its sweep turns.
 void appendLayer(const PrintPlan& plan, std::size_t l, const std::vector<StepTarget>& targets,
-                 double purge_mm3, std::vector<FlowCell>& cells) {
+                 double purge_mm3, bool core, std::vector<FlowCell>& cells) {
     const std::vector<PlanStep>& steps = plan.layers[l].steps;
     const std::size_t turn = purge_mm3 > 0 ? turnOf(steps, targets) : steps.size();
     for (std::size_t k = 0; k < steps.size(); ++k) {
@@ -62,10 +84,7 @@ void appendLayer(const PrintPlan& plan, std::size_t l, const std::vector<StepTar
             cells.push_back({std::min(left, kPurgePieceMm3), 0, {}});
         if (steps[k].kind != PlanStep::Kind::Extrude)
             continue;
-        const StepTarget& t = targets[k];
-        const bool asked = t.visible && (t.mix >= 0 || t.exact >= 0);
-        cells.push_back(
-            {steps[k].volume_mm3, asked ? steps[k].volume_mm3 : 0, asked ? askedOf(plan, t) : MixVector{}});
+        cells.push_back(cellOf(plan, steps[k], targets[k], core));
     }
 }
 
@@ -107,6 +126,7 @@ struct Sweep {
     std::vector<bool> purges;  ///< per layer: a tower visit (up to the last layer that changes)
     double full_change_mm3 = 0;
     double usual_thickness_mm = 0.1;
+    bool core = false;  ///< some hidden extrusion wishes for a core mix
 
     std::vector<double> purgePerLayer(double changes) const {
         std::vector<double> out(plan.layers.size(), 0.0);
@@ -118,7 +138,7 @@ struct Sweep {
     std::array<double, 2> tryPurge(const std::vector<double>& purge) const {
         std::vector<FlowCell> cells;
         for (std::size_t l = 0; l < plan.layers.size(); ++l)
-            appendLayer(plan, l, targets[l], purge[l], cells);
+            appendLayer(plan, l, targets[l], purge[l], core, cells);
         const LeadSettings lead{settings.chamber, settings.tolerance / 2, kIterations};
         const std::vector<MixVector> commands =
             leadCommands(cells, tanks, leadingGuess(cells, settings.chamber.volume_mm3, tanks.front()), lead);
@@ -128,7 +148,8 @@ struct Sweep {
 
 Sweep sweepOf(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
               const TransitionSettings& settings, double full_change_mm3) {
-    Sweep sweep{plan, targets, settings, startingTanks(plan, targets, settings), {}, full_change_mm3, 0.1};
+    Sweep sweep{plan, targets,         settings, startingTanks(plan, targets, settings),
+                {},   full_change_mm3, 0.1,      anyCore(targets)};
     sweep.purges.assign(plan.layers.size(), false);
     std::vector<double> thickness_mm;
     for (std::size_t l = plan.layers.size(); l-- > 0;) {
@@ -220,7 +241,7 @@ class CommandTable {
 void setCommands(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets, const Sweep& sweep) {
     std::vector<FlowCell> cells;
     for (std::size_t l = 0; l < plan.layers.size(); ++l)
-        appendLayer(plan, l, targets[l], 0, cells);
+        appendLayer(plan, l, targets[l], 0, sweep.core, cells);
     const LeadSettings lead{sweep.settings.chamber, sweep.settings.tolerance / 2, 2 * kIterations};
     const std::vector<MixVector> commands =
         leadCommands(cells, sweep.tanks,
@@ -238,7 +259,7 @@ void setCommands(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& ta
 bool asksForField(const std::vector<std::vector<StepTarget>>& targets) {
     for (const std::vector<StepTarget>& layer : targets)
         for (const StepTarget& t : layer)
-            if (t.visible && t.exact >= 0)
+            if ((t.visible && t.exact >= 0) || t.core)
                 return true;
     return false;
 }

@@ -169,6 +169,12 @@ struct GroupSchedules {
     MixVector raft;
     MixVector support;
 
+    /// A model's mixing_core_ratio (empty for other scopes and models without one).
+    std::optional<MixVector> coreOf(int scope) const {
+        const bool mesh = scope >= 0 && static_cast<std::size_t>(scope) < meshes.size();
+        return mesh ? meshes[static_cast<std::size_t>(scope)].mixing.core : std::nullopt;
+    }
+
     MixVector mixOf(int scope, int region, coord_um layer_z) const {
         if (scope == kRaftScope)
             return raft;
@@ -236,6 +242,11 @@ std::vector<std::vector<StepTarget>> targetMixes(PrintPlan& plan, const GroupSch
             if (added)
                 it->second = table.indexOf(schedules.mixOf(scope, region, layer.z));
             t.mix = it->second;
+            const std::optional<MixVector> core = schedules.coreOf(scope);
+            if (core && !t.visible) {  // a colour shell over a plain core (mixing_core_ratio)
+                t.mix = table.indexOf(*core);
+                t.core = true;
+            }
         }
     }
     return targets;

@@ -282,6 +282,8 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, co
     m.mode = output.mode;
     if (!output.enabled())
         return m;
+    if (const std::string core = textOf(scope, "mixing_core_ratio"); !trimmed(core).empty())
+        m.core = parseMixRatio("mixing_core_ratio", core, output.channels);
     if (scope.has("mixing_mode"))
         m.mode = parseMode(scope);       // a model's own mode (e.g. a cutting mesh's region)
     if (m.mode == MixingMode::Single) {  // within a mixed print: the first filament alone

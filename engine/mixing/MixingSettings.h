@@ -25,6 +25,7 @@
 //                           not in RGB). Takes precedence over mixing_gradient_stops when set.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -68,6 +69,9 @@ struct MeshMixing {
     std::vector<GradientStop> stops;  ///< gradient mode: at least one, heights non-decreasing
     MixVector fixed;                  ///< dual and color mode
     std::vector<SolvedColor> colors;  ///< color mode: the target; gradient colours: one per stop
+    /// mixing_core_ratio: the mix its hidden extrusions (infill, inner walls, hidden skin) ask for; empty:
+    /// off
+    std::optional<MixVector> core;
 };
 
 /// The printer-level part (mode, dialect, channels, resolution, tool). Checks the channel count

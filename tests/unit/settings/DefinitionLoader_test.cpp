@@ -184,7 +184,7 @@ TEST(DefinitionLoader, CustomDefinitionOnTheSearchPath) {
     // mixing_raft_ratio, mixing_support_ratio (issue 15), the colour keys of issue 18 (target, gradient,
     // paint), the chamber's stages, transition tolerance and purge tower (issue 26) and the gradient axis
     // (issue 27).
-    EXPECT_EQ(set.settings.size(), 606U);
+    EXPECT_EQ(set.settings.size(), 607U);
     EXPECT_NE(set.find("mixing_mode"), nullptr);
     EXPECT_NE(set.find("dual_orientation_optimize"), nullptr);
     ASSERT_EQ(set.extruders.size(), 2U);
