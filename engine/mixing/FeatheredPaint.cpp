@@ -77,30 +77,30 @@ const FeatheredPaint::PairBands& FeatheredPaint::pairOf(int low, int high) const
     return pairs_[static_cast<std::size_t>(low * n + high)];
 }
 
-double FeatheredPaint::gapUm(const std::array<double, 3>& p, const std::array<double, 3>& direction, double t,
-                             int own, int other) const {
-    const std::array<double, 3> q = {p[0] + t * direction[0], p[1] + t * direction[1],
-                                     p[2] + t * direction[2]};
-    const std::array<double, 2> d = regions_.distancesToRegionsUm(q, own, other);
+double FeatheredPaint::gapUm(const Ray& ray, double t) const {
+    const std::array<double, 3> q = {ray.from[0] + t * ray.direction[0], ray.from[1] + t * ray.direction[1],
+                                     ray.from[2] + t * ray.direction[2]};
+    // the distances at the ray's start plus the way from it bound those at q (and skip far triangles)
+    const std::array<double, 2> d =
+        regions_.distancesToRegionsUm(q, ray.own, ray.other, {ray.own_um + t + 1, ray.other_um + t + 1});
     if (!std::isfinite(d[1]))
         return -kFar;  // no other paint near: on own's side
     return std::isfinite(d[0]) ? d[0] - d[1] : kFar;
 }
 
-double FeatheredPaint::crossingAlongUm(const std::array<double, 3>& p, const std::array<double, 3>& direction,
-                                       double limit_um, int own, int other) const {
+double FeatheredPaint::crossingAlongUm(const Ray& ray, double limit_um) const {
     // The boundary on the ray: where the gap (own's distance − other's) turns from negative to ≥ 0, bracketed
     // to kPrecisionUm. False position, each point followed by a probe just across it (so a linear gap, as
     // from flat faces, is bracketed in two evaluations); a bisection whenever a step did not halve the
     // bracket (a gap that only touches zero, or a side without paint in reach).
     double lo = 0, hi = limit_um;
-    double g_lo = gapUm(p, direction, lo, own, other), g_hi = gapUm(p, direction, hi, own, other);
+    double g_lo = ray.own_um - ray.other_um, g_hi = gapUm(ray, hi);
     if (g_lo >= 0)
         return 0;  // on the boundary already
     if (g_hi < 0)
         return limit_um;
     const auto narrow = [&](double t) {
-        const double g = gapUm(p, direction, t, own, other);
+        const double g = gapUm(ray, t);
         (g < 0 ? lo : hi) = t;
         (g < 0 ? g_lo : g_hi) = g;
         return g < 0;
@@ -123,19 +123,22 @@ double FeatheredPaint::crossingAlongUm(const std::array<double, 3>& p, const std
 }
 
 double FeatheredPaint::boundaryDistanceUm(const Point3& p, const NearestRegions& nearest) const {
-    const std::array<double, 3> from = toArray(p);
-    const int own = nearest.own.region, other = nearest.other.region;
+    Ray ray;
+    ray.from = toArray(p);
+    ray.own = nearest.own.region;
+    ray.other = nearest.other.region;
+    ray.own_um = nearest.own.distance_um;
+    ray.other_um = nearest.other.distance_um;
     const double half_um = blend_um_ / 2;
-    std::array<double, 3> direction{};
-    if (unitDirection(nearest.own.point_um, nearest.other.point_um, direction)) {
-        const double along = crossingAlongUm(from, direction, half_um, own, other);
+    if (unitDirection(nearest.own.point_um, nearest.other.point_um, ray.direction)) {
+        const double along = crossingAlongUm(ray, half_um);
         if (along < half_um)
             return along;
     }
     // a and b (nearly) coincide, or the boundary is not that way: towards b itself
-    if (!unitDirection(from, nearest.other.point_um, direction))
+    if (!unitDirection(ray.from, nearest.other.point_um, ray.direction))
         return 0;  // on the other region's painted surface: at the boundary
-    return crossingAlongUm(from, direction, half_um, own, other);
+    return crossingAlongUm(ray, half_um);
 }
 
 FeatheredPaint::Place FeatheredPaint::placeOf(const Point3& p) const {

@@ -63,10 +63,14 @@ class FeatheredPaint : public RegionField {
 
     const PairBands& pairOf(int low, int high) const;
     double boundaryDistanceUm(const Point3& p, const NearestRegions& nearest) const;
-    double gapUm(const std::array<double, 3>& p, const std::array<double, 3>& direction, double t, int own,
-                 int other) const;
-    double crossingAlongUm(const std::array<double, 3>& p, const std::array<double, 3>& direction,
-                           double limit_um, int own, int other) const;
+    /// A ray searched for the boundary between `own` and `other`, and their distances at its start.
+    struct Ray {
+        std::array<double, 3> from{}, direction{};
+        int own = -1, other = -1;
+        double own_um = 0, other_um = 0;
+    };
+    double gapUm(const Ray& ray, double t) const;
+    double crossingAlongUm(const Ray& ray, double limit_um) const;
 };
 
 /// The mix a + (b − a)·w, channel by channel.

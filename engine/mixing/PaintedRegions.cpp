@@ -232,29 +232,34 @@ NearestRegions PaintedRegions::nearestRegions(const Point3& point) const {
         return found;
     found.own = nearestIn(cell, p, depth_um_, [](int) { return true; });
     const int own = found.own.region;
+    if (own < 0)
+        return found;  // unpainted (or no paint within the depth): no other region is looked for
     found.other = nearestIn(cell, p, reach_um_, [own](int r) { return r >= 0 && r != own; });
     return found;
 }
 
-std::array<double, 2> PaintedRegions::distancesToRegionsUm(const std::array<double, 3>& p_um, int a,
-                                                           int b) const {
+std::array<double, 2> PaintedRegions::distancesToRegionsUm(const std::array<double, 3>& p_um, int a, int b,
+                                                           std::array<double, 2> bound_um) const {
     constexpr double kNone = std::numeric_limits<double>::infinity();
-    std::array<double, 2> best = {kNone, kNone};
+    const double limit = reach_um_ * reach_um_ * (1 + 1e-12);
+    std::array<double, 2> best{};
+    for (int k = 0; k < 2; ++k)
+        best[k] = std::min(limit, bound_um[k] * bound_um[k] * (1 + 1e-12));
+    const std::array<double, 2> start = best;
     std::size_t cell = 0;
     if (!cellOf(p_um.data(), cell))
-        return best;
-    const double limit = reach_um_ * reach_um_ * (1 + 1e-12);
+        return {kNone, kNone};
     for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
         const int region = region_[cell_items_[k]];
         if (region != a && region != b)
             continue;
         const Triangle& t = triangles_[cell_items_[k]];
         double& slot = best[region == a ? 0 : 1];
-        if (squaredToBox(p_um.data(), t.lo, t.hi) < std::min(slot, limit))
+        if (squaredToBox(p_um.data(), t.lo, t.hi) < slot)
             slot = std::min(slot, squaredDistanceToTriangle(p_um.data(), t.a, t.b, t.c));
     }
-    for (double& d : best)
-        d = d <= limit ? std::sqrt(d) : kNone;
+    for (int k = 0; k < 2; ++k)
+        best[k] = best[k] < start[k] ? std::sqrt(best[k]) : kNone;
     return best;
 }
 

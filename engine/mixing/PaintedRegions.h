@@ -39,12 +39,17 @@ class PaintedRegions : public RegionField {
 
     /// The region at `p` (microns, the mesh's frame), −1 for none.
     int regionAt(const Point3& p) const override;
-    /// `p`'s own region (regionAt's; own.region −1 for none) and the nearest triangle painted with another
-    /// region (not unpainted) within the depth plus the extra reach.
+    /// `p`'s own region (regionAt's; own.region −1 for none) and, when that is painted, the nearest triangle
+    /// painted with another region (not unpainted) within the depth plus the extra reach.
     NearestRegions nearestRegions(const Point3& p) const;
     /// The distances from `p_um` to the nearest triangles of regions `a` and `b` (in that order) within the
-    /// depth plus the extra reach; +∞ for a region with none so near.
-    std::array<double, 2> distancesToRegionsUm(const std::array<double, 3>& p_um, int a, int b) const;
+    /// depth plus the extra reach; +∞ for a region with none so near. `bound_um`: upper bounds the caller
+    /// knows (a nearby point's distance plus the way from it), which let far triangles be skipped; a
+    /// region with no triangle within its bound is +∞ too.
+    std::array<double, 2> distancesToRegionsUm(const std::array<double, 3>& p_um, int a, int b,
+                                               std::array<double, 2> bound_um = {kUnbounded,
+                                                                                 kUnbounded}) const;
+    static constexpr double kUnbounded = 1e300;
     int regionCount() const { return region_count_; }
 
   private:
