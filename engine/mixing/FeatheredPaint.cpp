@@ -130,7 +130,12 @@ double FeatheredPaint::boundaryDistanceUm(const Point3& p, const NearestRegions&
     ray.own_um = nearest.own.distance_um;
     ray.other_um = nearest.other.distance_um;
     const double half_um = blend_um_ / 2;
-    if (unitDirection(nearest.own.point_um, nearest.other.point_um, ray.direction)) {
+    // across the boundary from a: the other region's point nearest a (not p's, which may be any of
+    // several equally near)
+    const double reach_um = regions_.reachUm();
+    const NearestPaint across =
+        regions_.nearestOf(ray.other, nearest.own.point_um.data(), reach_um * reach_um);
+    if (across.region >= 0 && unitDirection(nearest.own.point_um, across.point_um, ray.direction)) {
         const double along = crossingAlongUm(ray, half_um);
         if (along < half_um)
             return along;

@@ -12,11 +12,11 @@
 // change of at most half the transition tolerance (share distance) and at least 0.5 mm wide, its mix
 // the blend at the step's middle.
 //
-// The distance to the boundary: from p's nearest own triangle point a and nearest other-region point
-// b, the boundary is searched (to half a micron) along the ray from p in the direction a→b (exact for
-// a painted face split by a straight edge, and for opposite faces), or where that ray does not reach it
-// within blend/2, along p→b. (d_other − d_own) / 2, a lower bound of that distance, skips the search
-// for points clearly outside the blend zone.
+// The distance to the boundary: from p's nearest own triangle point a, the other region's point b′
+// nearest a and p's nearest other-region point b, the boundary is searched (to 4 µm) along the ray from
+// p in the direction a→b′ (exact for a painted face split by a straight edge, and for opposite faces),
+// or where that ray does not reach it within blend/2, along p→b. (d_other − d_own) / 2, a lower bound of that
+// distance, skips the search for points clearly outside the blend zone.
 #include <optional>
 #include <vector>
 

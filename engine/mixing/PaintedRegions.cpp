@@ -105,8 +105,8 @@ PaintedRegions::PaintedRegions(const Mesh& mesh, std::vector<int> face_region, c
                                    static_cast<double>(p.z)};
             for (int d = 0; d < 3; ++d) {
                 corners[k][d] = xyz[d];
-                lo[d] = std::min(lo[d], xyz[d] - reach_um_);
-                hi[d] = std::max(hi[d], xyz[d] + reach_um_);
+                lo[d] = std::min(lo[d], xyz[d] - depth_um_);
+                hi[d] = std::max(hi[d], xyz[d] + depth_um_);
             }
         }
         for (int d = 0; d < 3; ++d) {
@@ -118,26 +118,57 @@ PaintedRegions::PaintedRegions(const Mesh& mesh, std::vector<int> face_region, c
     if (triangles_.empty())
         return;
     const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-    cell_um_ = std::max({reach_um_, extent / kMaxCellsPerAxis, 1.0});
+    cell_um_ = std::max({depth_um_, extent / kMaxCellsPerAxis, 1.0});
     for (int d = 0; d < 3; ++d) {
         origin_[d] = lo[d];
         dims_[d] = std::max(1, static_cast<int>(std::ceil((hi[d] - lo[d]) / cell_um_)));
     }
     fillGrid();
+    buildTrees();
+}
+
+void PaintedRegions::buildTrees() {
+    std::vector<std::vector<TriangleTree::Corners>> corners(static_cast<std::size_t>(region_count_));
+    region_faces_.assign(static_cast<std::size_t>(region_count_), {});
+    for (std::size_t f = 0; f < triangles_.size(); ++f) {
+        if (region_[f] < 0)
+            continue;
+        const Triangle& t = triangles_[f];
+        corners[static_cast<std::size_t>(region_[f])].push_back(
+            {t.a[0], t.a[1], t.a[2], t.b[0], t.b[1], t.b[2], t.c[0], t.c[1], t.c[2]});
+        region_faces_[static_cast<std::size_t>(region_[f])].push_back(static_cast<int>(f));
+    }
+    for (std::vector<TriangleTree::Corners>& region : corners)
+        region_trees_.emplace_back(std::move(region));
+}
+
+NearestPaint PaintedRegions::nearestOf(int region, const double p[3], double limit_sq) const {
+    NearestPaint nearest;
+    if (region < 0 || region >= static_cast<int>(region_trees_.size()))
+        return nearest;
+    const TriangleTree& tree = region_trees_[static_cast<std::size_t>(region)];
+    const auto [d, index] = tree.nearest(p, limit_sq);
+    if (index < 0)
+        return nearest;
+    const TriangleTree::Corners& t = tree.triangle(index);
+    nearest.region = region;
+    nearest.distance_um =
+        std::sqrt(squaredDistanceToTriangle(p, &t[0], &t[3], &t[6], nearest.point_um.data()));
+    return nearest;
 }
 
 void PaintedRegions::fillGrid() {
     const std::size_t cells = static_cast<std::size_t>(dims_[0]) * static_cast<std::size_t>(dims_[1]) *
                               static_cast<std::size_t>(dims_[2]);
     std::vector<std::uint32_t> count(cells + 1, 0);
-    // Two passes over the triangles' reach-expanded boxes: count per cell, then fill (CSR layout).
+    // Two passes over the triangles' depth-expanded boxes: count per cell, then fill (CSR layout).
     for (int pass = 0; pass < 2; ++pass) {
         for (std::size_t i = 0; i < triangles_.size(); ++i) {
             const Triangle& t = triangles_[i];
             double box_lo[3], box_hi[3];
             for (int d = 0; d < 3; ++d) {
-                box_lo[d] = std::min({t.a[d], t.b[d], t.c[d]}) - reach_um_;
-                box_hi[d] = std::max({t.a[d], t.b[d], t.c[d]}) + reach_um_;
+                box_lo[d] = std::min({t.a[d], t.b[d], t.c[d]}) - depth_um_;
+                box_hi[d] = std::max({t.a[d], t.b[d], t.c[d]}) + depth_um_;
             }
             int first[3], last[3];
             cellRange(box_lo, box_hi, first, last);
@@ -186,15 +217,11 @@ bool PaintedRegions::cellOf(const double p[3], std::size_t& cell) const {
     return true;
 }
 
-template <typename Accept>
-NearestPaint PaintedRegions::nearestIn(std::size_t cell, const double p[3], double limit_um,
-                                       Accept accept) const {
+NearestPaint PaintedRegions::nearestIn(std::size_t cell, const double p[3], double limit_um) const {
     double best = limit_um * limit_um * (1 + 1e-12);  // a point at the limit is still reached
     std::uint32_t found = 0;
     bool any = false;
     for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-        if (!accept(region_[cell_items_[k]]))
-            continue;
         const Triangle& t = triangles_[cell_items_[k]];
         if (squaredToBox(p, t.lo, t.hi) >= best)
             continue;  // cannot be nearer
@@ -220,7 +247,7 @@ int PaintedRegions::regionAt(const Point3& point) const {
     std::size_t cell = 0;
     if (!cellOf(p, cell))
         return -1;
-    return nearestIn(cell, p, depth_um_, [](int) { return true; }).region;
+    return nearestIn(cell, p, depth_um_).region;
 }
 
 NearestRegions PaintedRegions::nearestRegions(const Point3& point) const {
@@ -230,37 +257,34 @@ NearestRegions PaintedRegions::nearestRegions(const Point3& point) const {
     std::size_t cell = 0;
     if (!cellOf(p, cell))
         return found;
-    found.own = nearestIn(cell, p, depth_um_, [](int) { return true; });
+    found.own = nearestIn(cell, p, depth_um_);
     const int own = found.own.region;
     if (own < 0)
         return found;  // unpainted (or no paint within the depth): no other region is looked for
-    found.other = nearestIn(cell, p, reach_um_, [own](int r) { return r >= 0 && r != own; });
+    double limit_sq = reach_um_ * reach_um_ * (1 + 1e-12);
+    for (int r = 0; r < region_count_; ++r) {
+        const NearestPaint candidate = r == own ? NearestPaint{} : nearestOf(r, p, limit_sq);
+        if (candidate.region >= 0) {  // nearer than every region before it
+            found.other = candidate;
+            limit_sq = candidate.distance_um * candidate.distance_um;
+        }
+    }
     return found;
 }
 
 std::array<double, 2> PaintedRegions::distancesToRegionsUm(const std::array<double, 3>& p_um, int a, int b,
                                                            std::array<double, 2> bound_um) const {
-    constexpr double kNone = std::numeric_limits<double>::infinity();
-    const double limit = reach_um_ * reach_um_ * (1 + 1e-12);
-    std::array<double, 2> best{};
-    for (int k = 0; k < 2; ++k)
-        best[k] = std::min(limit, bound_um[k] * bound_um[k] * (1 + 1e-12));
-    const std::array<double, 2> start = best;
-    std::size_t cell = 0;
-    if (!cellOf(p_um.data(), cell))
-        return {kNone, kNone};
-    for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
-        const int region = region_[cell_items_[k]];
-        if (region != a && region != b)
-            continue;
-        const Triangle& t = triangles_[cell_items_[k]];
-        double& slot = best[region == a ? 0 : 1];
-        if (squaredToBox(p_um.data(), t.lo, t.hi) < slot)
-            slot = std::min(slot, squaredDistanceToTriangle(p_um.data(), t.a, t.b, t.c));
+    const double reach_sq = reach_um_ * reach_um_ * (1 + 1e-12);
+    const int regions[2] = {a, b};
+    std::array<double, 2> distance{};
+    for (int k = 0; k < 2; ++k) {
+        const double bound_sq = bound_um[static_cast<std::size_t>(k)] * bound_um[static_cast<std::size_t>(k)];
+        const NearestPaint nearest =
+            nearestOf(regions[k], p_um.data(), std::min(reach_sq, bound_sq * (1 + 1e-12)));
+        distance[static_cast<std::size_t>(k)] =
+            nearest.region >= 0 ? nearest.distance_um : std::numeric_limits<double>::infinity();
     }
-    for (int k = 0; k < 2; ++k)
-        best[k] = best[k] < start[k] ? std::sqrt(best[k]) : kNone;
-    return best;
+    return distance;
 }
 
 }  // namespace mixengine

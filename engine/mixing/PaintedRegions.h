@@ -3,9 +3,10 @@
 // surface triangle when that triangle is painted and no farther than the depth (mixing_paint_depth);
 // otherwise to no region (the object's own colour). So paint is carried inward from the painted
 // surface by the depth, and where two paints meet inside, the boundary is the set of points as far
-// from the one as from the other. Lookups go through a uniform grid of cells (at least the reach wide,
-// at most 96 per axis) listing the triangles within the reach of each cell: the depth, plus the width
-// of a feathered edge (mixing_paint_blend, mixing/FeatheredPaint.h) when one is asked for.
+// from the one as from the other. Lookups go through a uniform grid of cells (at least the depth wide,
+// at most 96 per axis) listing the triangles within the depth of each cell; the queries of feathered
+// edges (mixing_paint_blend, mixing/FeatheredPaint.h) for the nearest triangle of a given region, up
+// to the depth plus an extra reach, through a tree per region (mixing/TriangleTree.h).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "geometry/Point.h"
 #include "mesh/Mesh.h"
 #include "mixing/RegionField.h"
+#include "mixing/TriangleTree.h"
 
 namespace mixengine {
 
@@ -50,7 +52,11 @@ class PaintedRegions : public RegionField {
                                                std::array<double, 2> bound_um = {kUnbounded,
                                                                                  kUnbounded}) const;
     static constexpr double kUnbounded = 1e300;
+    /// The nearest triangle of painted `region` to `p` (microns) closer than sqrt(`limit_sq`); region −1
+    /// when there is none.
+    NearestPaint nearestOf(int region, const double p[3], double limit_sq) const;
     int regionCount() const { return region_count_; }
+    double reachUm() const { return reach_um_; }
 
   private:
     struct Triangle {
@@ -67,15 +73,18 @@ class PaintedRegions : public RegionField {
     int dims_[3] = {0, 0, 0};
     std::vector<std::uint32_t> cell_start_;  ///< CSR: triangles of cell i are [start[i], start[i+1])
     std::vector<std::uint32_t> cell_items_;
+    std::vector<TriangleTree> region_trees_;      ///< per painted region, with an extra reach only
+    std::vector<std::vector<int>> region_faces_;  ///< per painted region: the tree's triangle → face
 
     void fillGrid();
+    void buildTrees();
+
     bool cellRange(const double lo[3], const double hi[3], int first[3], int last[3]) const;
     std::size_t cellIndex(int x, int y, int z) const;
     /// The grid cell holding `p`, or false outside the grid.
     bool cellOf(const double p[3], std::size_t& cell) const;
-    /// The nearest triangle in `cell` to `p` whose region passes `accept`, no farther than `limit_um`.
-    template <typename Accept>
-    NearestPaint nearestIn(std::size_t cell, const double p[3], double limit_um, Accept accept) const;
+    /// The nearest triangle in `cell` to `p` (painted or not), no farther than `limit_um`.
+    NearestPaint nearestIn(std::size_t cell, const double p[3], double limit_um) const;
 };
 
 /// Squared distance from `p` to the triangle (a, b, c), all in the same unit.
