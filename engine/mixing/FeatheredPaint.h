@@ -7,16 +7,17 @@
 // own scheduled colour) the edge stays hard.
 //
 // As a gradient along an axis (mixing/FieldBands.h), the blend is cut into bands that the splitter
-// (mixing/RegionSplit.h) and the transition planner see as regions: band r < regions() is region r's
-// interior with its own mix; each pair of regions gets steps across its blend zone, a step holding a
-// change of at most half the transition tolerance (share distance) and at least 0.5 mm wide, its mix
-// the blend at the step's middle.
+// (mixing/RegionSplit.h) and the transition planner see as regions: band r below the number of regions
+// is region r's interior with its own mix; each pair of regions (every pair, whether or not the two
+// meet) gets steps across its blend zone, a step holding a change of at most half the transition
+// tolerance (share distance) and at least 0.5 mm wide, its mix the blend at the step's middle.
+// exactMixAt gives the blend itself, for the planner that leads the chamber through continuous fields.
 //
 // The distance to the boundary: from p's nearest own triangle point a, the other region's point b′
 // nearest a and p's nearest other-region point b, the boundary is searched (to 4 µm) along the ray from
 // p in the direction a→b′ (exact for a painted face split by a straight edge, and for opposite faces),
-// or where that ray does not reach it within blend/2, along p→b. (d_other − d_own) / 2, a lower bound of that
-// distance, skips the search for points clearly outside the blend zone.
+// or where that ray does not reach it within blend/2, along p→b. (d_other − d_own) / 2, a lower bound
+// of that distance, skips the search for points clearly outside the blend zone.
 #include <optional>
 #include <vector>
 
