@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "mixing/ChamberDelay.h"
+#include "mixing/FeatheredPaint.h"
 #include "mixing/FieldBands.h"
 #include "mixing/LayerOrder.h"
 #include "mixing/MixSchedule.h"
@@ -24,10 +25,15 @@ struct ScopeSchedule {
     coord_um top_um = 0;
     MeshPaint paint;                    ///< color mode, painted 3MF faces: regions and their solved colours
     std::unique_ptr<FieldBands> bands;  ///< gradient along x, y or radial: its bands (the regions)
+    std::unique_ptr<FeatheredPaint> feathered;  ///< painted with mixing_paint_blend: its bands (the regions)
 
-    /// What divides the mesh into regions: its paint or its bands (null: neither).
+    /// What divides the mesh into regions: its feathered paint, its paint or its bands (null: none).
     const RegionField* field() const {
-        return paint.regions ? static_cast<const RegionField*>(paint.regions.get()) : bands.get();
+        if (feathered)
+            return feathered.get();
+        if (paint.regions)
+            return paint.regions.get();
+        return bands.get();
     }
 };
 
@@ -79,6 +85,21 @@ const char* axisName(GradientAxis axis) {
     }
 }
 
+/// Feathered paint's bands, when the mesh is painted with a blend (mixing_paint_blend > 0).
+void featherPaint(ScopeSchedule& s, const std::string& name, double tolerance, Log& log) {
+    if (!s.paint.regions || s.paint.blend_um <= 0)
+        return;
+    std::vector<MixVector> mixes;
+    for (const SolvedColor& color : s.paint.colors)
+        mixes.push_back(color.solution.mix);
+    s.feathered =
+        std::make_unique<FeatheredPaint>(*s.paint.regions, std::move(mixes), s.paint.blend_um, tolerance);
+    char text[160];
+    std::snprintf(text, sizeof text, "': painted edges feathered over %.2f mm in %d bands",
+                  s.feathered->blendMm(), s.feathered->bands());
+    log.info("mixing: '" + name + text);
+}
+
 std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingOutput& output,
                                          const PigmentModel* colors, double tolerance, Log& log) {
     std::vector<ScopeSchedule> schedules;
@@ -91,6 +112,7 @@ std::vector<ScopeSchedule> meshSchedules(const MixingGroup& group, const MixingO
             s.paint =
                 paintOf(*m.mesh, *m.settings, parseChannelColors(*group.settings, output.channels), *colors);
             s.mixing.colors.insert(s.mixing.colors.end(), s.paint.colors.begin(), s.paint.colors.end());
+            featherPaint(s, m.name, tolerance, log);
         }
         if (s.mixing.mode == MixingMode::Gradient && s.mixing.axis != GradientAxis::Z && m.mesh) {
             s.bands = std::make_unique<FieldBands>(s.mixing, *m.mesh, tolerance);
@@ -182,8 +204,11 @@ struct GroupSchedules {
             return support;
         if (region >= 0) {
             const ScopeSchedule& mesh = meshes[static_cast<std::size_t>(scope)];
-            return mesh.bands ? mesh.bands->bandMix(region)
-                              : mesh.paint.colors[static_cast<std::size_t>(region)].solution.mix;
+            if (mesh.bands)
+                return mesh.bands->bandMix(region);
+            if (mesh.feathered)
+                return mesh.feathered->bandMix(region);
+            return mesh.paint.colors[static_cast<std::size_t>(region)].solution.mix;
         }
         const bool own = scope >= 0 && static_cast<std::size_t>(scope) < meshes.size();
         return scheduledMix(own ? meshes[static_cast<std::size_t>(scope)] : nonmesh, layer_z);

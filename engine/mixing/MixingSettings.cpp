@@ -24,44 +24,38 @@ constexpr DialectEntry kDialects[] = {
 };
 
 /// Defaults in code: the values of settings/mixengine/mixing.def.json.
+struct DefaultEntry {
+    std::string_view key;
+    const char* value;
+};
+constexpr DefaultEntry kDefaults[] = {
+    {"mixing_mode", "single"},
+    {"mixing_dialect", "eb_axes"},
+    {"mixing_channels", "2"},
+    {"mixing_resolution", "100"},
+    {"mixing_tool", "0"},
+    {"mixing_klipper_stepper", "mixing_b"},
+    {"mixing_gradient_unit", "percent"},
+    {"mixing_gradient_axis", "z"},
+    {"mixing_gradient_start", "0"},
+    {"mixing_gradient_end", "100"},
+    {"mixing_ratio", "0.5:0.5"},
+    {"mixing_raft_ratio", "1"},
+    {"mixing_support_ratio", "1"},
+    {"mixing_chamber_volume", "0"},
+    {"mixing_paint_blend", "0"},
+    {"mixing_chamber_stages", "3"},
+    {"mixing_transition_tolerance", "0.1"},
+    {"mixing_purge_tower_enable", "true"},
+    {"mixing_channel_colors", "#f2c500,#e0408a,#00a3e0,#262626,#f4f4f4"},
+    {"mixing_target_color", "#808080"},
+};
+
 const char* defaultText(std::string_view key) {
-    if (key == "mixing_mode")
-        return "single";
-    if (key == "mixing_dialect")
-        return "eb_axes";
-    if (key == "mixing_channels")
-        return "2";
-    if (key == "mixing_resolution")
-        return "100";
-    if (key == "mixing_tool")
-        return "0";
-    if (key == "mixing_klipper_stepper")
-        return "mixing_b";
-    if (key == "mixing_gradient_unit")
-        return "percent";
-    if (key == "mixing_gradient_axis")
-        return "z";
-    if (key == "mixing_gradient_start")
-        return "0";
-    if (key == "mixing_gradient_end")
-        return "100";
-    if (key == "mixing_ratio")
-        return "0.5:0.5";
-    if (key == "mixing_raft_ratio" || key == "mixing_support_ratio")
-        return "1";
-    if (key == "mixing_chamber_volume")
-        return "0";
-    if (key == "mixing_chamber_stages")
-        return "3";
-    if (key == "mixing_transition_tolerance")
-        return "0.1";
-    if (key == "mixing_purge_tower_enable")
-        return "true";
-    if (key == "mixing_channel_colors")
-        return "#f2c500,#e0408a,#00a3e0,#262626,#f4f4f4";
-    if (key == "mixing_target_color")
-        return "#808080";
-    return "";  // mixing_gradient_stops, mixing_gradient_colors
+    for (const DefaultEntry& entry : kDefaults)
+        if (entry.key == key)
+            return entry.value;
+    return "";  // mixing_gradient_stops, mixing_gradient_colors, mixing_core_ratio
 }
 
 std::string textOf(const Settings& s, std::string_view key) {

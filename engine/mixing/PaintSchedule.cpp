@@ -1,5 +1,6 @@
 #include "mixing/PaintSchedule.h"
 
+#include <cmath>
 #include <map>
 #include <string>
 
@@ -28,6 +29,17 @@ Rgb colorOfCode(std::uint32_t code, const std::vector<Rgb>& extruder_colors, con
     return extruder_colors[extruder - 1];
 }
 
+/// mixing_paint_blend in microns (0 when not set).
+coord_um blendOf(const Settings& scope) {
+    if (!scope.has("mixing_paint_blend"))
+        return 0;
+    const double blend_mm = parseReal("mixing_paint_blend", scope.text("mixing_paint_blend"));
+    if (!(blend_mm >= 0) || !std::isfinite(blend_mm))
+        throw InputError("setting 'mixing_paint_blend': " + scope.text("mixing_paint_blend") +
+                         " mm is not a width of 0 or more");
+    return static_cast<coord_um>(std::llround(blend_mm * 1000.0));
+}
+
 }  // namespace
 
 MeshPaint paintOf(const Mesh& mesh, const Settings& scope, const std::vector<Rgb>& channel_colors,
@@ -40,6 +52,7 @@ MeshPaint paintOf(const Mesh& mesh, const Settings& scope, const std::vector<Rgb
     if (!(depth_mm > 0))
         throw InputError("setting 'mixing_paint_depth': " + scope.text("mixing_paint_depth") +
                          " mm is not above 0");
+    paint.blend_um = blendOf(scope);
     const std::vector<Rgb> extruder_colors = paintColors(scope, channel_colors);
     std::map<Rgb, int> region_of;
     std::vector<int> face_region;
@@ -55,8 +68,8 @@ MeshPaint paintOf(const Mesh& mesh, const Settings& scope, const std::vector<Rgb
             paint.colors.push_back({color, solveColor(model, color)});
         face_region.push_back(it->second);
     }
-    paint.regions = std::make_unique<PaintedRegions>(mesh, std::move(face_region),
-                                                     static_cast<coord_um>(std::llround(depth_mm * 1000.0)));
+    paint.regions = std::make_unique<PaintedRegions>(
+        mesh, std::move(face_region), static_cast<coord_um>(std::llround(depth_mm * 1000.0)), paint.blend_um);
     return paint;
 }
 

@@ -183,8 +183,8 @@ TEST(DefinitionLoader, CustomDefinitionOnTheSearchPath) {
     // fdmprinter's settings, the custom key and MixEngine's own (settings/mixengine/*.def.json): 596 before
     // mixing_raft_ratio, mixing_support_ratio (issue 15), the colour keys of issue 18 (target, gradient,
     // paint), the chamber's stages, transition tolerance and purge tower (issue 26) and the gradient axis
-    // (issue 27).
-    EXPECT_EQ(set.settings.size(), 607U);
+    // (issue 27), the painted edges' blend and the core's ratio (issue 27).
+    EXPECT_EQ(set.settings.size(), 608U);
     EXPECT_NE(set.find("mixing_mode"), nullptr);
     EXPECT_NE(set.find("dual_orientation_optimize"), nullptr);
     ASSERT_EQ(set.extruders.size(), 2U);
