@@ -12,8 +12,9 @@ namespace mixengine {
 namespace {
 
 constexpr double kPurgePieceMm3 = 2.0;  ///< a purge is planned in pieces of this much, one command each
-constexpr std::array<double, 7> kLadder = {0, 0.25, 0.5, 0.75, 1.0, 1.5, 2.0};  ///< full changes per layer
-constexpr double kGoal = 0.98;  ///< the visible share within the tolerance a purge aims for
+constexpr int kRungsPerChange = 8;      ///< the purge per layer is tried in eighths of a full change
+constexpr int kTopRung = 16;            ///< … up to two full changes
+constexpr double kGoal = 0.98;          ///< the visible share within the tolerance a purge aims for
 constexpr int kIterations = 250;
 /// A core cell's weight per mm³ against a visible one's: the core's mix is wished for, the visible
 /// surface's is what counts
@@ -74,14 +75,95 @@ std::size_t turnOf(const std::vector<PlanStep>& steps, const std::vector<StepTar
     return first_extrusion;
 }
 
-/// The cells of a layer's extrusions, with `purge_mm3` of purge in pieces where its sweep turns.
-void appendLayer(const PrintPlan& plan, std::size_t l, const std::vector<StepTarget>& targets,
-                 double purge_mm3, bool core, std::vector<FlowCell>& cells) {
-    const std::vector<PlanStep>& steps = plan.layers[l].steps;
-    const std::size_t turn = purge_mm3 > 0 ? turnOf(steps, targets) : steps.size();
+/// Where in a layer the purge goes: where its sweep turns (a field graded across the whole layer, whose
+/// ends the chamber must reach), halfway through its change of mix (the change is at one place), or
+/// spread over every change between the runs of its visible bands, each piece in proportion to the
+/// step (a feathered edge between two wide regions: the purge lets the chamber sweep the edge's steps
+/// with the visible lines between them).
+enum class PurgeSite { Turn, MidChange, Spread };
+
+/// A place for a purge (before step `at`) and the share of the layer's purge it takes.
+struct PurgePlace {
+    std::size_t at = 0;
+    double share = 1.0;
+};
+
+/// Halfway through the layer's change: after the extrusion before the visible one at which the share
+/// distance walked along its visible extrusions passes half its total (turnOf when it does not change).
+std::size_t midChangeOf(const PrintPlan& plan, const std::vector<PlanStep>& steps,
+                        const std::vector<StepTarget>& targets) {
+    auto walk = [&](double stop_at) -> std::pair<double, std::size_t> {
+        double walked = 0;
+        const MixVector* before = nullptr;
+        std::size_t after_previous = steps.size();
+        for (std::size_t k = 0; k < steps.size(); ++k) {
+            if (steps[k].kind != PlanStep::Kind::Extrude)
+                continue;
+            if (targets[k].visible && targets[k].mix >= 0) {
+                const MixVector& asked = askedOf(plan, targets[k]);
+                const double step = before ? shareDistance(asked, *before) : 0;
+                if (before && walked + step >= stop_at)
+                    return {walked, after_previous};
+                walked += step;
+                before = &asked;
+            }
+            after_previous = k + 1;
+        }
+        return {walked, steps.size()};
+    };
+    const double total = walk(1e300).first;
+    return total > 1e-9 ? walk(total / 2).second : turnOf(steps, targets);
+}
+
+/// Spread: before each visible extrusion whose band differs from the visible one before it, after the
+/// extrusion before it, in proportion to the difference (the turn alone when the layer does not change).
+std::vector<PurgePlace> spreadOf(const PrintPlan& plan, const std::vector<PlanStep>& steps,
+                                 const std::vector<StepTarget>& targets) {
+    std::vector<PurgePlace> places;
+    double total = 0;
+    int before = -1;
+    std::size_t after_previous = steps.size();
     for (std::size_t k = 0; k < steps.size(); ++k) {
-        for (double left = k == turn ? purge_mm3 : 0; left > 1e-9; left -= kPurgePieceMm3)
-            cells.push_back({std::min(left, kPurgePieceMm3), 0, {}});
+        if (steps[k].kind != PlanStep::Kind::Extrude)
+            continue;
+        if (targets[k].visible && targets[k].mix >= 0) {
+            const double step = before < 0
+                                    ? 0
+                                    : shareDistance(plan.mixes[static_cast<std::size_t>(targets[k].mix)],
+                                                    plan.mixes[static_cast<std::size_t>(before)]);
+            if (step > 0) {
+                places.push_back({after_previous, step});
+                total += step;
+            }
+            before = targets[k].mix;
+        }
+        after_previous = k + 1;
+    }
+    if (total <= 0)
+        return {{turnOf(steps, targets), 1.0}};
+    for (PurgePlace& place : places)
+        place.share /= total;
+    return places;
+}
+
+std::vector<PurgePlace> placesOf(const PrintPlan& plan, const std::vector<PlanStep>& steps,
+                                 const std::vector<StepTarget>& targets, PurgeSite site) {
+    if (site == PurgeSite::Spread)
+        return spreadOf(plan, steps, targets);
+    return {{site == PurgeSite::Turn ? turnOf(steps, targets) : midChangeOf(plan, steps, targets), 1.0}};
+}
+
+/// The cells of a layer's extrusions, with `purge_mm3` of purge in pieces at its places.
+void appendLayer(const PrintPlan& plan, std::size_t l, const std::vector<StepTarget>& targets,
+                 double purge_mm3, bool core, PurgeSite site, std::vector<FlowCell>& cells) {
+    const std::vector<PlanStep>& steps = plan.layers[l].steps;
+    const std::vector<PurgePlace> places =
+        purge_mm3 > 0 ? placesOf(plan, steps, targets, site) : std::vector<PurgePlace>{};
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < steps.size(); ++k) {
+        for (; next < places.size() && places[next].at == k; ++next)
+            for (double left = purge_mm3 * places[next].share; left > 1e-9; left -= kPurgePieceMm3)
+                cells.push_back({std::min(left, kPurgePieceMm3), 0, {}});
         if (steps[k].kind != PlanStep::Kind::Extrude)
             continue;
         cells.push_back(cellOf(plan, steps[k], targets[k], core));
@@ -127,6 +209,7 @@ struct Sweep {
     double full_change_mm3 = 0;
     double usual_thickness_mm = 0.1;
     bool core = false;  ///< some hidden extrusion wishes for a core mix
+    PurgeSite site = PurgeSite::Turn;
 
     std::vector<double> purgePerLayer(double changes) const {
         std::vector<double> out(plan.layers.size(), 0.0);
@@ -138,7 +221,7 @@ struct Sweep {
     std::array<double, 2> tryPurge(const std::vector<double>& purge) const {
         std::vector<FlowCell> cells;
         for (std::size_t l = 0; l < plan.layers.size(); ++l)
-            appendLayer(plan, l, targets[l], purge[l], core, cells);
+            appendLayer(plan, l, targets[l], purge[l], core, site, cells);
         const LeadSettings lead{settings.chamber, settings.tolerance / 2, kIterations};
         const std::vector<MixVector> commands =
             leadCommands(cells, tanks, leadingGuess(cells, settings.chamber.volume_mm3, tanks.front()), lead);
@@ -166,49 +249,84 @@ Sweep sweepOf(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>&
     return sweep;
 }
 
-/// The rung of the ladder chosen for each of the tolerance and twice it.
-std::array<double, 2> chooseRungs(const Sweep& sweep) {
-    std::array<std::array<double, 2>, kLadder.size()> shares{};
-    std::array<double, 2> best{0, 0};
-    for (std::size_t r = 0; r < kLadder.size(); ++r) {
-        shares[r] = sweep.tryPurge(sweep.purgePerLayer(kLadder[r]));
-        for (int i = 0; i < 2; ++i)
-            best[static_cast<std::size_t>(i)] =
-                std::max(best[static_cast<std::size_t>(i)], shares[r][static_cast<std::size_t>(i)]);
-        if (shares[r][0] >= kGoal)
-            break;  // the tolerance's goal is met: so is twice it; no more purge is needed
+/// The site that leaves the most of the visible surface within the tolerance at one full change a layer.
+PurgeSite chooseSite(Sweep sweep) {
+    PurgeSite best = PurgeSite::Turn;
+    double best_share = -1;
+    for (PurgeSite site : {PurgeSite::Turn, PurgeSite::MidChange, PurgeSite::Spread}) {
+        sweep.site = site;
+        const double share = sweep.tryPurge(sweep.purgePerLayer(1.0))[0];
+        if (share > best_share + 1e-9) {
+            best = site;
+            best_share = share;
+        }
     }
-    // the tolerance: the goal, or within 2 points of the best the ladder reaches; twice the tolerance: the
-    // rung that leaves as much within it as the chosen rung leaves within the tolerance
-    std::array<double, 2> chosen{kLadder.back(), kLadder.back()};
-    std::size_t at = kLadder.size() - 1;
-    for (std::size_t r = 0; r < kLadder.size(); ++r)
-        if (shares[r][0] >= std::min(kGoal, best[0] - 0.02)) {
-            at = r;
-            break;
-        }
-    chosen[0] = kLadder[at];
-    for (std::size_t r = 0; r <= at; ++r)
-        if (shares[r][1] >= shares[at][0]) {
-            chosen[1] = kLadder[r];
-            break;
-        }
-    return chosen;
+    return best;
 }
 
-/// Layer l with a visit of the whole tower square where its sweep turns.
-void insertVisit(PrintPlan& plan, std::size_t l, LayerTower& tower, std::vector<StepTarget>& targets,
-                 TransitionReport& report) {
-    std::vector<PlanStep>& steps = plan.layers[l].steps;
-    const std::size_t at = turnOf(steps, targets);
-    if (at >= steps.size())
-        return;
-    std::vector<PlanStep> visit;
-    visitTower(tower, tower.cursor.volumeLeftMm3(), -1, steps, at, visit);
-    for (const PlanStep& s : visit)
-        report.purge_mm3 += s.kind == PlanStep::Kind::Extrude ? s.volume_mm3 : 0;
-    steps.insert(steps.begin() + static_cast<std::ptrdiff_t>(at), visit.begin(), visit.end());
-    targets.insert(targets.begin() + static_cast<std::ptrdiff_t>(at), visit.size(), StepTarget{});
+/// The shares within the tolerance and twice it at each rung tried (rung r: r / kRungsPerChange full
+/// changes per layer), each tried once.
+class Ladder {
+  public:
+    explicit Ladder(const Sweep& sweep) : sweep_(sweep) {}
+    const std::array<double, 2>& at(int rung) {
+        auto [it, added] = tried_.emplace(rung, std::array<double, 2>{});
+        if (added)
+            it->second = sweep_.tryPurge(sweep_.purgePerLayer(static_cast<double>(rung) / kRungsPerChange));
+        return it->second;
+    }
+    /// The lowest rung in [lo, hi] whose share `which` reaches `goal` (hi when none), by bisection — more
+    /// purge never leaves less within the tolerance.
+    int lowest(int lo, int hi, std::size_t which, double goal) {
+        while (lo < hi) {
+            const int mid = (lo + hi) / 2;
+            (at(mid)[which] >= goal ? hi : lo) = mid + (at(mid)[which] >= goal ? 0 : 1);
+        }
+        return hi;
+    }
+
+  private:
+    const Sweep& sweep_;
+    std::map<int, std::array<double, 2>> tried_;
+};
+
+/// The purge per layer, in full changes, chosen for the tolerance and for twice it. The tolerance: the
+/// least that leaves kGoal of the visible surface within it, or within 2 points of what two full changes
+/// leave when that is less; twice the tolerance: the least that leaves as much within it.
+std::array<double, 2> chooseRungs(const Sweep& sweep) {
+    Ladder ladder(sweep);
+    const double goal = ladder.at(0)[0] >= kGoal ? kGoal : std::min(kGoal, ladder.at(kTopRung)[0] - 0.02);
+    const int rung = ladder.lowest(0, kTopRung, 0, goal);
+    const int loose = ladder.lowest(0, rung, 1, ladder.at(rung)[0]);
+    return {static_cast<double>(rung) / kRungsPerChange, static_cast<double>(loose) / kRungsPerChange};
+}
+
+/// Layer l with visits of the whole tower square at the purge's places, each its share of the square.
+void insertVisits(PrintPlan& plan, std::size_t l, LayerTower& tower, std::vector<StepTarget>& targets,
+                  PurgeSite site, TransitionReport& report) {
+    const std::vector<PlanStep> steps = std::move(plan.layers[l].steps);
+    const std::vector<PurgePlace> places = placesOf(plan, steps, targets, site);
+    const double square_mm3 = tower.cursor.volumeLeftMm3();
+    std::vector<PlanStep> out;
+    std::vector<StepTarget> out_targets;
+    std::size_t next = 0;
+    for (std::size_t k = 0; k <= steps.size(); ++k) {
+        for (; next < places.size() && places[next].at == k; ++next) {
+            const bool last = next + 1 == places.size();
+            const std::size_t before = out.size();
+            visitTower(tower, last ? tower.cursor.volumeLeftMm3() : square_mm3 * places[next].share, -1,
+                       steps, k, out);
+            for (std::size_t i = before; i < out.size(); ++i)
+                report.purge_mm3 += out[i].kind == PlanStep::Kind::Extrude ? out[i].volume_mm3 : 0;
+            out_targets.resize(out.size());
+        }
+        if (k < steps.size()) {
+            out.push_back(steps[k]);
+            out_targets.push_back(targets[k]);
+        }
+    }
+    plan.layers[l].steps = std::move(out);
+    targets = std::move(out_targets);
     plan.layers[l].layer_change_retract_step = -1;
 }
 
@@ -241,7 +359,7 @@ class CommandTable {
 void setCommands(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets, const Sweep& sweep) {
     std::vector<FlowCell> cells;
     for (std::size_t l = 0; l < plan.layers.size(); ++l)
-        appendLayer(plan, l, targets[l], 0, sweep.core, cells);
+        appendLayer(plan, l, targets[l], 0, sweep.core, sweep.site, cells);
     const LeadSettings lead{sweep.settings.chamber, sweep.settings.tolerance / 2, 2 * kIterations};
     const std::vector<MixVector> commands =
         leadCommands(cells, sweep.tanks,
@@ -266,9 +384,10 @@ bool asksForField(const std::vector<std::vector<StepTarget>>& targets) {
 
 void planLeading(PrintPlan& plan, std::vector<std::vector<StepTarget>>& targets,
                  const TransitionSettings& settings, TransitionReport& report) {
-    const Sweep sweep = sweepOf(plan, targets, settings, report.full_change_mm3);
+    Sweep sweep = sweepOf(plan, targets, settings, report.full_change_mm3);
     if (sweep.tanks.empty())
         return;
+    sweep.site = chooseSite(sweep);
     const std::array<double, 2> rungs = chooseRungs(sweep);
     const std::vector<double> needed = sweep.purgePerLayer(rungs[0]);
     for (std::size_t l = 0; l < needed.size(); ++l) {
@@ -286,7 +405,7 @@ void planLeading(PrintPlan& plan, std::vector<std::vector<StepTarget>>& targets,
         report.unpurged_mm3 = report.needed_mm3;
     for (std::size_t l = 0; l < plan.layers.size(); ++l)
         if (std::optional<LayerTower> here = layerTower(plan, l, tower, settings))
-            insertVisit(plan, l, *here, targets[l], report);
+            insertVisits(plan, l, *here, targets[l], sweep.site, report);
     setCommands(plan, targets, sweep);
 }
 

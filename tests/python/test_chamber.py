@@ -360,21 +360,22 @@ def visible_share(replayed, asked, tolerance):
     return good / total
 
 
-def test_a_field_the_chamber_cannot_follow_is_reported_truly(models, tmp_path, report):
-    """At 0.1 mm layers the bar's layers hold half the volume, and a 40 mm³ chamber cannot sweep the field
-    and back within them (the optimal commands of an independent solver left 39 % of the outer walls
-    within 0.1 at a purge of 1x the model). The slice says so: one warning naming the model with the
-    visible figure and what would help, and the header's figure is what the replay finds."""
+def test_x_gradient_at_thin_layers_is_followed_and_reported_truly(models, tmp_path, report):
+    """The same bar at the profile's 0.1 mm layers: half the volume per layer for the same sweep of the
+    field, so the purge goes between the bands' visible runs (the chamber sweeps the field with the walls
+    in between). The outer walls still leave the nozzle within 0.1 of the field; the header's visible
+    figure is the one the independent replay finds."""
     bar = box_stl(tmp_path / "bar.stl", 60, 12, 10)
     replayed, warnings, header = slice_field(tmp_path, "bar01", bar, "x", "-s", "layer_height=0.1")
-    assert len(warnings) == 1 and "bar.stl" in warnings[0] and "more volume per layer" in warnings[0], warnings
+    assert len(warnings) == 1 and "bar.stl" in warnings[0], warnings
+    fraction, length = outer_wall_fraction(replayed, bar_field(replayed), TOLERANCE)
     claimed = float(header["VISIBLE_WITHIN_TOLERANCE"].split("%")[0]) / 100
     replayed_share = visible_share(replayed, bar_field(replayed), TOLERANCE)
-    report(f"chamber x gradient bar, 0.1 mm layers: the header claims {100 * claimed:.1f} % of the visible surface "
-           f"within {TOLERANCE}, the replay finds {100 * replayed_share:.1f} %; purge "
-           f"{purge_volume(replayed) / model_volume(replayed):.2f}x the model")
-    assert abs(claimed - replayed_share) <= 0.03
-    assert claimed < 0.9
+    report(f"chamber x gradient bar, 0.1 mm layers: {100 * fraction:.1f} % of {length:.0f} mm outer wall within "
+           f"{TOLERANCE} of the field; the header claims {100 * claimed:.1f} % of the visible surface, the replay "
+           f"finds {100 * replayed_share:.1f} %; purge {purge_volume(replayed) / model_volume(replayed):.2f}x the model")
+    assert fraction >= 0.90
+    assert abs(claimed - replayed_share) <= 0.02
 
 
 def disc_stl(path, diameter_mm, height_mm, sections=128):

@@ -94,6 +94,13 @@ def test_negative_blend_is_an_error_naming_the_key(box, tmp_path):
 
 
 def test_feathered_edge_through_a_chamber(box, tmp_path, report):
+    """Through a 40 mm³ chamber in 3 stages the feathered edge's outer walls leave the nozzle within 0.1 of
+    the ramp (≥ 95 % of their length): the planner spreads the purge over the edge's band steps and leads
+    the chamber across them. It purges no more than the same box with a hard edge (one full change a
+    layer) plus a quarter."""
+    hard = tmp_path / "hard.gcode"
+    slice_makerpi(box, hard, *COLOUR, "mixing_chamber_volume=40", "mixing_chamber_stages=3")
+    hard_purge = purge_volume(replay(read_mixing_gcode(hard, "eb_axes").moves, DIAMETER_MM, 40.0, 3))
     out = tmp_path / "chamber.gcode"
     slice_makerpi(box, out, *COLOUR, "mixing_chamber_volume=40", "mixing_chamber_stages=3",
                   f"mixing_paint_blend={BLEND_MM:g}")
@@ -105,6 +112,8 @@ def test_feathered_edge_through_a_chamber(box, tmp_path, report):
     coloured = sum(px != (255, 255, 255) for row in rows for px in zip(row[::3], row[1::3], row[2::3]))
     fraction, length = outer_wall_fraction(replayed, asked, TOLERANCE)
     report(f"feathered paint, {BLEND_MM:g} mm blend, 40 mm3 chamber in 3 stages: {100 * fraction:.1f} % of "
-           f"{length:.0f} mm outer wall within {TOLERANCE} of the ramp, purge {purge_volume(replayed):.0f} mm3; "
-           f"side view (outlet | asked): {picture}")
+           f"{length:.0f} mm outer wall within {TOLERANCE} of the ramp, purge {purge_volume(replayed):.0f} mm3 "
+           f"(hard edge: {hard_purge:.0f} mm3); side view (outlet | asked): {picture}")
     assert coloured > width * height / 4
+    assert fraction >= 0.95
+    assert purge_volume(replayed) <= 1.25 * hard_purge
