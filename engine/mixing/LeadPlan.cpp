@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "mixing/LeadCommands.h"
@@ -18,7 +19,7 @@ constexpr double kGoal = 0.98;          ///< the visible share within the tolera
 constexpr int kIterations = 250;
 /// A core cell's weight per mm³ against a visible one's: the core's mix is wished for, the visible
 /// surface's is what counts
-constexpr double kCoreWeight = 0.002;
+constexpr double kCoreWeight = 0.0005;
 constexpr double kShellMargin = 0.0;  ///< a visible cell's margin in a print with a core
 
 const MixVector& askedOf(const PrintPlan& plan, const StepTarget& t) {
@@ -39,14 +40,44 @@ bool layerChanges(const std::vector<StepTarget>& targets) {
     return false;
 }
 
+/// A core (mixing_core_ratio) in a chamber: the chamber changes to the core's mix and back inside a layer
+/// without touching the visible surface only where the layer's hidden extrusions hold two full changes
+/// and more (`room_mm3`); elsewhere the core follows the shell.
+struct CoreRule {
+    bool any = false;
+    double room_mm3 = 0;
+};
+
+double hiddenVolumeMm3(const std::vector<PlanStep>& steps, const std::vector<StepTarget>& targets) {
+    double hidden = 0;
+    for (std::size_t k = 0; k < steps.size(); ++k)
+        if (steps[k].kind == PlanStep::Kind::Extrude && !targets[k].visible)
+            hidden += steps[k].volume_mm3;
+    return hidden;
+}
+
+/// How a layer's extrusions become cells.
+struct CellRules {
+    bool print_has_core = false;  ///< visible cells keep as close as they can (no margin)
+    bool core_wished = false;     ///< this layer's core cells wish for the core's mix
+};
+
 /// An extrusion's cell: a visible one asks for its mix (the field's own where there is one), a core one
-/// wishes for the core's; others are free. `core`: the print has a core (visible cells keep closer).
-FlowCell cellOf(const PrintPlan& plan, const PlanStep& step, const StepTarget& t, bool core) {
+/// wishes for the core's where the layer allows; others are free.
+FlowCell cellOf(const PrintPlan& plan, const PlanStep& step, const StepTarget& t, CellRules rules) {
     if (t.visible && (t.mix >= 0 || t.exact >= 0))
-        return {step.volume_mm3, step.volume_mm3, askedOf(plan, t), core ? kShellMargin : -1};
-    if (t.core && t.mix >= 0)
+        return {step.volume_mm3, step.volume_mm3, askedOf(plan, t), rules.print_has_core ? kShellMargin : -1};
+    if (t.core && t.mix >= 0 && rules.core_wished)
         return {step.volume_mm3, kCoreWeight * step.volume_mm3, askedOf(plan, t), 0};
     return {step.volume_mm3, 0, {}, -1};
+}
+
+/// The first guess: led by the visible cells alone (a core's wish would pull it off the surface).
+std::vector<MixVector> guessOf(std::vector<FlowCell> cells, double lead_mm3, const MixVector& fallback) {
+    for (FlowCell& cell : cells)
+        if (cell.weight < 0.5 * cell.volume_mm3)
+            cell.weight = 0;
+    return leadingGuess(cells, lead_mm3, fallback);
 }
 
 bool anyCore(const std::vector<std::vector<StepTarget>>& targets) {
@@ -155,8 +186,9 @@ std::vector<PurgePlace> placesOf(const PrintPlan& plan, const std::vector<PlanSt
 
 /// The cells of a layer's extrusions, with `purge_mm3` of purge in pieces at its places.
 void appendLayer(const PrintPlan& plan, std::size_t l, const std::vector<StepTarget>& targets,
-                 double purge_mm3, bool core, PurgeSite site, std::vector<FlowCell>& cells) {
+                 double purge_mm3, const CoreRule& core, PurgeSite site, std::vector<FlowCell>& cells) {
     const std::vector<PlanStep>& steps = plan.layers[l].steps;
+    const CellRules rules{core.any, core.any && hiddenVolumeMm3(steps, targets) >= core.room_mm3};
     const std::vector<PurgePlace> places =
         purge_mm3 > 0 ? placesOf(plan, steps, targets, site) : std::vector<PurgePlace>{};
     std::size_t next = 0;
@@ -166,7 +198,7 @@ void appendLayer(const PrintPlan& plan, std::size_t l, const std::vector<StepTar
                 cells.push_back({std::min(left, kPurgePieceMm3), 0, {}});
         if (steps[k].kind != PlanStep::Kind::Extrude)
             continue;
-        cells.push_back(cellOf(plan, steps[k], targets[k], core));
+        cells.push_back(cellOf(plan, steps[k], targets[k], rules));
     }
 }
 
@@ -208,7 +240,7 @@ struct Sweep {
     std::vector<bool> purges;  ///< per layer: a tower visit (up to the last layer that changes)
     double full_change_mm3 = 0;
     double usual_thickness_mm = 0.1;
-    bool core = false;  ///< some hidden extrusion wishes for a core mix
+    CoreRule core;  ///< some hidden extrusion wishes for a core mix
     PurgeSite site = PurgeSite::Turn;
 
     std::vector<double> purgePerLayer(double changes) const {
@@ -224,7 +256,7 @@ struct Sweep {
             appendLayer(plan, l, targets[l], purge[l], core, site, cells);
         const LeadSettings lead{settings.chamber, settings.tolerance / 2, kIterations};
         const std::vector<MixVector> commands =
-            leadCommands(cells, tanks, leadingGuess(cells, settings.chamber.volume_mm3, tanks.front()), lead);
+            leadCommands(cells, tanks, guessOf(cells, settings.chamber.volume_mm3, tanks.front()), lead);
         return withinShares(cells, outletsOf(cells, tanks, commands, settings.chamber), settings.tolerance);
     }
 };
@@ -232,7 +264,7 @@ struct Sweep {
 Sweep sweepOf(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
               const TransitionSettings& settings, double full_change_mm3) {
     Sweep sweep{plan, targets,         settings, startingTanks(plan, targets, settings),
-                {},   full_change_mm3, 0.1,      anyCore(targets)};
+                {},   full_change_mm3, 0.1,      {anyCore(targets), 2 * full_change_mm3}};
     sweep.purges.assign(plan.layers.size(), false);
     std::vector<double> thickness_mm;
     for (std::size_t l = plan.layers.size(); l-- > 0;) {
@@ -355,15 +387,56 @@ class CommandTable {
     std::map<std::array<long, kMaxMixChannels>, int> index_;
 };
 
+/// One warning on a core in a chamber: in how many layers it can take its mix, and how much of it leaves
+/// the nozzle within the tolerance of it (`outlets`: per extrusion, in print order).
+void reportCore(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
+                const Sweep& sweep, const std::vector<MixVector>& outlets, TransitionReport& report) {
+    int layers = 0, fitting = 0;
+    double core_mm3 = 0, within_mm3 = 0;
+    std::size_t cell = 0;
+    for (std::size_t l = 0; l < plan.layers.size(); ++l) {
+        const std::vector<PlanStep>& steps = plan.layers[l].steps;
+        bool any = false;
+        for (std::size_t k = 0; k < steps.size(); ++k) {
+            if (steps[k].kind != PlanStep::Kind::Extrude)
+                continue;
+            const StepTarget& t = targets[l][k];
+            if (t.core && t.mix >= 0) {
+                any = true;
+                core_mm3 += steps[k].volume_mm3;
+                const bool close =
+                    shareDistance(outlets[cell], plan.mixes[static_cast<std::size_t>(t.mix)]) <=
+                    sweep.settings.tolerance;
+                within_mm3 += close ? steps[k].volume_mm3 : 0;
+            }
+            ++cell;
+        }
+        layers += any ? 1 : 0;
+        fitting += any && hiddenVolumeMm3(steps, targets[l]) >= sweep.core.room_mm3 ? 1 : 0;
+    }
+    char text[400];
+    std::snprintf(
+        text, sizeof text,
+        "mixing: mixing_core_ratio: the core can take its mix in %d of its %d layers (the others hide "
+        "less than two full changes of the chamber, %.0f mm3, and their core follows the shell's "
+        "colour); %.1f %% of the core leaves the nozzle within %.2f of its mix",
+        fitting, layers, sweep.core.room_mm3, core_mm3 > 0 ? 100.0 * within_mm3 / core_mm3 : 0.0,
+        sweep.settings.tolerance);
+    report.warnings.push_back(text);
+}
+
 /// The commands over the print as it will be written, into every extrusion's PlanStep::mix.
-void setCommands(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets, const Sweep& sweep) {
+void setCommands(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets, const Sweep& sweep,
+                 TransitionReport& report) {
     std::vector<FlowCell> cells;
     for (std::size_t l = 0; l < plan.layers.size(); ++l)
         appendLayer(plan, l, targets[l], 0, sweep.core, sweep.site, cells);
     const LeadSettings lead{sweep.settings.chamber, sweep.settings.tolerance / 2, 2 * kIterations};
-    const std::vector<MixVector> commands =
-        leadCommands(cells, sweep.tanks,
-                     leadingGuess(cells, sweep.settings.chamber.volume_mm3, sweep.tanks.front()), lead);
+    const std::vector<MixVector> commands = leadCommands(
+        cells, sweep.tanks, guessOf(cells, sweep.settings.chamber.volume_mm3, sweep.tanks.front()), lead);
+    if (sweep.core.any)
+        reportCore(plan, targets, sweep, outletsOf(cells, sweep.tanks, commands, sweep.settings.chamber),
+                   report);
     CommandTable table(plan.mixes);
     std::size_t cell = 0;
     for (PlannedLayer& layer : plan.layers)
@@ -406,7 +479,7 @@ void planLeading(PrintPlan& plan, std::vector<std::vector<StepTarget>>& targets,
     for (std::size_t l = 0; l < plan.layers.size(); ++l)
         if (std::optional<LayerTower> here = layerTower(plan, l, tower, settings))
             insertVisits(plan, l, *here, targets[l], sweep.site, report);
-    setCommands(plan, targets, sweep);
+    setCommands(plan, targets, sweep, report);
 }
 
 }  // namespace mixengine
