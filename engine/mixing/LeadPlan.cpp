@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "common/ParallelFor.h"
 #include "mixing/LeadCommands.h"
 #include "mixing/TowerVisits.h"
 
@@ -282,18 +283,23 @@ Sweep sweepOf(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>&
 }
 
 /// The site that leaves the most of the visible surface within the tolerance at one full change a layer.
-PurgeSite chooseSite(Sweep sweep) {
-    PurgeSite best = PurgeSite::Turn;
-    double best_share = -1;
-    for (PurgeSite site : {PurgeSite::Turn, PurgeSite::MidChange, PurgeSite::Spread}) {
-        sweep.site = site;
-        const double share = sweep.tryPurge(sweep.purgePerLayer(1.0))[0];
-        if (share > best_share + 1e-9) {
-            best = site;
-            best_share = share;
-        }
-    }
-    return best;
+struct SiteChoice {
+    PurgeSite site = PurgeSite::Turn;
+    std::array<double, 2> at_none{}, at_one{};  ///< the shares with no purge and one full change a layer
+};
+
+SiteChoice chooseSite(const Sweep& sweep, int threads) {
+    constexpr std::array<PurgeSite, 3> kSites = {PurgeSite::Turn, PurgeSite::MidChange, PurgeSite::Spread};
+    std::array<std::array<double, 2>, kSites.size() + 1> shares{};  // the last: no purge (any site)
+    parallelFor(shares.size(), threads, [&](std::size_t i) {
+        Sweep trial = sweep;
+        trial.site = kSites[std::min(i, kSites.size() - 1)];
+        shares[i] = trial.tryPurge(trial.purgePerLayer(i < kSites.size() ? 1.0 : 0.0));
+    });
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < kSites.size(); ++i)
+        best = shares[i][0] > shares[best][0] + 1e-9 ? i : best;
+    return {kSites[best], shares.back(), shares[best]};
 }
 
 /// The shares within the tolerance and twice it at each rung tried (rung r: r / kRungsPerChange full
@@ -301,6 +307,7 @@ PurgeSite chooseSite(Sweep sweep) {
 class Ladder {
   public:
     explicit Ladder(const Sweep& sweep) : sweep_(sweep) {}
+    void seed(int rung, const std::array<double, 2>& shares) { tried_[rung] = shares; }
     const std::array<double, 2>& at(int rung) {
         auto [it, added] = tried_.emplace(rung, std::array<double, 2>{});
         if (added)
@@ -325,9 +332,13 @@ class Ladder {
 /// The purge per layer, in full changes, chosen for the tolerance and for twice it. The tolerance: the
 /// least that leaves kGoal of the visible surface within it, or within 2 points of what two full changes
 /// leave when that is less; twice the tolerance: the least that leaves as much within it.
-std::array<double, 2> chooseRungs(const Sweep& sweep) {
+std::array<double, 2> chooseRungs(const Sweep& sweep, const SiteChoice& choice) {
     Ladder ladder(sweep);
-    const double goal = ladder.at(0)[0] >= kGoal ? kGoal : std::min(kGoal, ladder.at(kTopRung)[0] - 0.02);
+    ladder.seed(0, choice.at_none);
+    ladder.seed(kRungsPerChange, choice.at_one);
+    if (choice.at_none[0] >= kGoal)
+        return {0, 0};
+    const double goal = choice.at_one[0] >= kGoal ? kGoal : std::min(kGoal, ladder.at(kTopRung)[0] - 0.02);
     const int rung = ladder.lowest(0, kTopRung, 0, goal);
     const int loose = ladder.lowest(0, rung, 1, ladder.at(rung)[0]);
     return {static_cast<double>(rung) / kRungsPerChange, static_cast<double>(loose) / kRungsPerChange};
@@ -460,8 +471,9 @@ void planLeading(PrintPlan& plan, std::vector<std::vector<StepTarget>>& targets,
     Sweep sweep = sweepOf(plan, targets, settings, report.full_change_mm3);
     if (sweep.tanks.empty())
         return;
-    sweep.site = chooseSite(sweep);
-    const std::array<double, 2> rungs = chooseRungs(sweep);
+    const SiteChoice choice = chooseSite(sweep, settings.threads);
+    sweep.site = choice.site;
+    const std::array<double, 2> rungs = chooseRungs(sweep, choice);
     const std::vector<double> needed = sweep.purgePerLayer(rungs[0]);
     for (std::size_t l = 0; l < needed.size(); ++l) {
         report.needed_mm3 += needed[l];

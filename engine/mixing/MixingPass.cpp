@@ -403,7 +403,8 @@ void warnAboutFields(const MixingGroup& group, const std::vector<ScopeSchedule>&
         char text[480];
         std::snprintf(
             text, sizeof text,
-            "': its %s gradient changes faster than the mixing chamber can follow (%d bands of %.1f mm "
+            "': its %s gradient changes faster than the mixing chamber can follow unaided (%d bands of %.1f "
+            "mm "
             "in a layer, the chamber commanded ahead of the field): the print purges %.0f mm3 for it "
             "and the fields of the other models, and %.1f %% of its visible surface leaves the nozzle "
             "within %.2f of the field (%.1f %% within dE00 3 of it)%s",
@@ -492,6 +493,7 @@ MixingReport assignMixes(PrintPlan& plan, const MixingGroup& group, Log& log) {
     if (!report.chamber.ideal() && (mixChangesInLayers(targets) || starts_changed)) {
         report.planned = true;
         TransitionSettings settings = transitionSettings(*group.settings, report.chamber, report.tolerance);
+        settings.threads = group.threads;
         settings.incoming = incoming;
         settings.keep_clear = group.printed_before;
         report.transitions = planTransitions(plan, targets, settings);

@@ -52,6 +52,7 @@ struct MixingGroup {
     std::optional<Chamber>* chamber = nullptr;
     /// The XY rectangle of everything printed before this group, kept clear by the purge tower (empty: none).
     std::optional<std::pair<Point2, Point2>> printed_before;
+    int threads = 1;  ///< threads the transition planner may use
 };
 
 /// Returns what a user needs to trust the print (mixing/MixingReport.h; `mixing` false in single mode).

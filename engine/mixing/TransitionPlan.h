@@ -38,6 +38,7 @@ struct TransitionSettings {
     double speed_mm_s = 30;  ///< the tower's print speed
     /// The tower's speed on a layer (by ;LAYER: number), e.g. slower on the first layers; empty: speed_mm_s
     std::function<double(int layer_number)> speed_at;
+    int threads = 1;  ///< threads the planner may use (the leading planner tries purge sites side by side)
 };
 
 struct TransitionReport {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 #include "gcode/Bfb.h"
 #include "gcode/StartEndCode.h"
 #include "mixing/MixingPass.h"
@@ -404,6 +405,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
         }
         MixingGroup mixing_input = mixingInput(scene, group);
         mixing_input.chamber = &chamber_state;
+        mixing_input.threads = effectiveThreads(threads);
         if (output.summary.min.x <= output.summary.max.x)  // the tower keeps clear of what is printed already
             mixing_input.printed_before = std::pair{Point2{output.summary.min.x, output.summary.min.y},
                                                     Point2{output.summary.max.x, output.summary.max.y}};
