@@ -18,16 +18,6 @@ double dot(const double x[3], const double y[3]) {
     return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
 }
 
-/// Squared distance from p to the box [lo, hi]: no triangle inside the box is nearer.
-double squaredToBox(const double p[3], const double lo[3], const double hi[3]) {
-    double sum = 0;
-    for (int k = 0; k < 3; ++k) {
-        const double d = p[k] < lo[k] ? lo[k] - p[k] : (p[k] > hi[k] ? p[k] - hi[k] : 0.0);
-        sum += d * d;
-    }
-    return sum;
-}
-
 double squaredTo(const double p[3], const double q[3]) {
     double d[3];
     sub(p, q, d);
@@ -223,7 +213,7 @@ NearestPaint PaintedRegions::nearestIn(std::size_t cell, const double p[3], doub
     bool any = false;
     for (std::uint32_t k = cell_start_[cell]; k < cell_start_[cell + 1]; ++k) {
         const Triangle& t = triangles_[cell_items_[k]];
-        if (squaredToBox(p, t.lo, t.hi) >= best)
+        if (squaredDistanceToBox(p, t.lo, t.hi) >= best)
             continue;  // cannot be nearer
         const double d = squaredDistanceToTriangle(p, t.a, t.b, t.c);
         if (d < best) {  // the first of equally near triangles wins

@@ -6,13 +6,8 @@
 #include "mixing/PaintedRegions.h"
 
 namespace mixengine {
-namespace {
 
-constexpr std::uint32_t kLeafSize = 4;
-/// Median splits halve the triangles per level: 2^64 triangles would not fill the search's stack.
-constexpr std::size_t kMaxDepth = 128;
-
-double squaredToBox(const double p[3], const double lo[3], const double hi[3]) {
+double squaredDistanceToBox(const double p[3], const double lo[3], const double hi[3]) {
     double sum = 0;
     for (int k = 0; k < 3; ++k) {
         const double d = p[k] < lo[k] ? lo[k] - p[k] : (p[k] > hi[k] ? p[k] - hi[k] : 0.0);
@@ -20,6 +15,12 @@ double squaredToBox(const double p[3], const double lo[3], const double hi[3]) {
     }
     return sum;
 }
+
+namespace {
+
+constexpr std::uint32_t kLeafSize = 4;
+/// Median splits halve the triangles per level: 2^64 triangles would not fill the search's stack.
+constexpr std::size_t kMaxDepth = 128;
 
 double centre(const TriangleTree::Corners& t, int axis) {
     return (t[static_cast<std::size_t>(axis)] + t[static_cast<std::size_t>(3 + axis)] +
@@ -90,12 +91,12 @@ std::pair<double, int> TriangleTree::nearest(const double p[3], double limit_sq)
     while (size > 0) {
         const std::uint32_t at = stack[--size];
         const Node& node = nodes_[at];
-        if (squaredToBox(p, node.lo, node.hi) >= best.first)
+        if (squaredDistanceToBox(p, node.lo, node.hi) >= best.first)
             continue;
         if (node.count > 0) {
             for (std::uint32_t i = node.first; i < node.first + node.count; ++i) {
                 const std::array<double, 6>& box = boxes_[order_[i]];
-                if (squaredToBox(p, &box[0], &box[3]) >= best.first)
+                if (squaredDistanceToBox(p, &box[0], &box[3]) >= best.first)
                     continue;  // its own box is no nearer
                 const Corners& t = triangles_[order_[i]];
                 const double d = squaredDistanceToTriangle(p, &t[0], &t[3], &t[6]);
@@ -105,8 +106,8 @@ std::pair<double, int> TriangleTree::nearest(const double p[3], double limit_sq)
             continue;
         }
         const std::uint32_t left = at + 1, right = node.first;
-        const bool left_first = squaredToBox(p, nodes_[left].lo, nodes_[left].hi) <=
-                                squaredToBox(p, nodes_[right].lo, nodes_[right].hi);
+        const bool left_first = squaredDistanceToBox(p, nodes_[left].lo, nodes_[left].hi) <=
+                                squaredDistanceToBox(p, nodes_[right].lo, nodes_[right].hi);
         stack[size++] = left_first ? right : left;  // the nearer child is searched first
         stack[size++] = left_first ? left : right;
     }

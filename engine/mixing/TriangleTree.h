@@ -8,6 +8,9 @@
 
 namespace mixengine {
 
+/// Squared distance from `p` to the box [lo, hi] (0 inside): no triangle inside the box is nearer.
+double squaredDistanceToBox(const double p[3], const double lo[3], const double hi[3]);
+
 class TriangleTree {
   public:
     /// One triangle: its corners a, b, c (x, y, z each; any unit, the queries' unit).
