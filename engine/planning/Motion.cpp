@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include "toolpaths/FeatureStyle.h"
+
 namespace mixengine {
 namespace {
 
@@ -40,17 +42,7 @@ bool isRaft(Feature feature) {
 /// the model (negative) take `key` itself, as CuraEngine does not slow them down.
 double layerValue(const Settings& s, const std::string& key, const std::string& first_key, int layer,
                   bool smooth) {
-    const double value = s.real(key);
-    if (!smooth || layer < 0)
-        return value;
-    const double initial = s.real(first_key);
-    const long long slowdown = s.has("speed_slowdown_layers") ? s.integer("speed_slowdown_layers") : 0;
-    if (layer == 0)
-        return initial;
-    if (layer >= slowdown)
-        return value;
-    const double t = double(layer) / double(slowdown);
-    return initial + (value - initial) * t;
+    return smooth ? slowdownValue(s, key, first_key, layer) : s.real(key);
 }
 
 struct Tracker {

@@ -14,6 +14,7 @@
 #include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 #include "planning/TravelAreas.h"
+#include "toolpaths/FeatureStyle.h"
 #include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
@@ -59,7 +60,7 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
     p.comb_move_inside_um = combMoveInside(s, layer);
     if (s.has("meshfix_maximum_travel_resolution"))
         p.max_travel_resolution_um = s.lengthMicrons("meshfix_maximum_travel_resolution");
-    p.travel_speed_mm_s = s.velocityMmPerS(layer == 0 ? "speed_travel_layer_0" : "speed_travel");
+    p.travel_speed_mm_s = slowdownValue(s, "speed_travel", "speed_travel_layer_0", layer);
     p.retraction_enable = s.boolean("retraction_enable");
     p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
     p.layer_thickness_um = thickness;

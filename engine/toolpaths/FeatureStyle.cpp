@@ -11,18 +11,20 @@ int ownExtruder(const Settings& s) {
     return nr < 0 ? 0 : nr;
 }
 
-double layerSpeed(const Settings& s, std::string_view speed_key, int layer) {
-    const double speed = s.velocityMmPerS(speed_key);
-    if (!s.has("speed_print_layer_0") || layer < 0)
-        return speed;
-    const double first = s.velocityMmPerS("speed_print_layer_0");
-    if (layer == 0)
-        return first;
+double slowdownValue(const Settings& s, std::string_view key, std::string_view first_key, int layer) {
+    const double value = s.real(key);
+    if (!s.has(first_key) || layer < 0)
+        return value;
     const long long slowdown = s.has("speed_slowdown_layers") ? s.integer("speed_slowdown_layers") : 0;
     if (layer >= slowdown)
-        return speed;
+        return value;  // speed_slowdown_layers 0: no slow first layer either, as in CuraEngine 4.13
+    const double first = s.real(first_key);
     const double t = double(layer) / double(slowdown);
-    return first + (speed - first) * t;
+    return first + (value - first) * t;
+}
+
+double layerSpeed(const Settings& s, std::string_view speed_key, int layer) {
+    return slowdownValue(s, speed_key, "speed_print_layer_0", layer);
 }
 
 FeatureStyle featureStyle(const Settings& s, const FeatureKeys& keys, int layer) {

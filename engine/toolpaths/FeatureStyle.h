@@ -31,6 +31,12 @@ struct FeatureKeys {
 /// The mesh's (or scope's) own extruder: extruder_nr, 0 when absent.
 int ownExtruder(const Settings& s);
 
+/// `key` on `layer` as CuraEngine 4.13 ramps it over the first layers: `first_key` (e.g.
+/// speed_travel_layer_0) on layer 0, then linearly towards `key` over speed_slowdown_layers (reached on
+/// that layer); below layer 0 (raft, filler layers), from that layer on (with speed_slowdown_layers 0:
+/// layer 0 too) and without `first_key`, `key` itself.
+double slowdownValue(const Settings& s, std::string_view key, std::string_view first_key, int layer);
+
 /// Speed of `speed_key` on `layer` with the first-layer speed and the slow-down ramp (none below
 /// layer 0).
 double layerSpeed(const Settings& s, std::string_view speed_key, int layer);
