@@ -1,5 +1,6 @@
 #include "settings/StackEvaluator.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/Error.h"
@@ -398,7 +399,9 @@ SettingValues StackEvaluator::allText(int scope) {
             const SettingDefinition* def = anyDefinition(key);
             if (!def)
                 throw;
-            failures_.push_back(e.what());
+            // once: the same formula fails in every scope, and for every formula that reads it
+            if (std::find(failures_.begin(), failures_.end(), e.what()) == failures_.end())
+                failures_.push_back(e.what());
             out.emplace(key, def->default_value);
         }
     }
