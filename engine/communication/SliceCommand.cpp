@@ -39,6 +39,9 @@ int runSliceCommand(const Words& args, std::ostream& out, std::ostream& err) {
         writeFileAtomically(parsed.preview_png, preview->png());
     for (const std::string& note : gcode.notes)
         err << note << '\n';
+    // after the slice: a bad value that makes formulas fail (layer_height 0) is its one error line instead
+    for (const std::string& failure : scene.machine.formula_failures)  // "key: formula: problem"
+        log.warning("formula fell back to default_value: " + failure);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     log.info("Total time elapsed " + std::to_string(seconds) + "s");
     log.info("Print time (s): " + std::to_string(static_cast<long long>(gcode.summary.print_time_s)));

@@ -132,8 +132,6 @@ Scene prepareSettings(const SliceRequest& request) {
 
 Scene prepareScene(const SliceRequest& request, Log& log) {
     Scene scene = prepareSettings(request);
-    for (const std::string& failure : scene.machine.formula_failures)  // "key: formula: problem"
-        log.warning("formula fell back to default_value: " + failure);
     const std::vector<std::string> given = givenKeys(request);
     checkLineWidths(scene.machine.global, given);
     for (const Settings& extruder : scene.machine.extruders)
