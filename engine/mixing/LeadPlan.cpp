@@ -8,6 +8,7 @@
 
 #include "common/ParallelFor.h"
 #include "mixing/LeadCommands.h"
+#include "mixing/MixTable.h"
 #include "mixing/TowerVisits.h"
 
 namespace mixengine {
@@ -373,31 +374,6 @@ void insertVisits(PrintPlan& plan, std::size_t l, LayerTower& tower, std::vector
     plan.layers[l].layer_change_retract_step = -1;
 }
 
-/// Distinct commands, each stored once in the plan (rounded to 1/1000 of a share).
-class CommandTable {
-  public:
-    explicit CommandTable(std::vector<MixVector>& mixes) : mixes_(mixes) {}
-    int indexOf(const MixVector& mix) {
-        std::array<long, kMaxMixChannels> key{};
-        MixVector rounded = mix;
-        double rest = 1.0;
-        for (int c = 0; c + 1 < mix.channels; ++c) {
-            key[static_cast<std::size_t>(c)] = std::lround(std::clamp(mix[c], 0.0, 1.0) * 1000.0);
-            rounded[c] = std::min(rest, key[static_cast<std::size_t>(c)] / 1000.0);
-            rest -= rounded[c];
-        }
-        rounded[mix.channels - 1] = std::max(0.0, rest);
-        auto [it, added] = index_.emplace(key, static_cast<int>(mixes_.size()));
-        if (added)
-            mixes_.push_back(rounded);
-        return it->second;
-    }
-
-  private:
-    std::vector<MixVector>& mixes_;
-    std::map<std::array<long, kMaxMixChannels>, int> index_;
-};
-
 /// One warning on a core in a chamber: in how many layers it can take its mix, and how much of it leaves
 /// the nozzle within the tolerance of it (`outlets`: per extrusion, in print order).
 void reportCore(const PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets,
@@ -448,17 +424,17 @@ void setCommands(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& ta
     if (sweep.core.any)
         reportCore(plan, targets, sweep, outletsOf(cells, sweep.tanks, commands, sweep.settings.chamber),
                    report);
-    CommandTable table(plan.mixes);
+    MixTable table(plan.mixes);
     std::size_t cell = 0;
     for (PlannedLayer& layer : plan.layers)
         for (PlanStep& step : layer.steps)
             if (step.kind == PlanStep::Kind::Extrude)
-                step.mix = table.indexOf(commands[cell++]);
+                step.mix = table.indexOf(roundedMix(commands[cell++]));
 }
 
 }  // namespace
 
-bool asksForField(const std::vector<std::vector<StepTarget>>& targets) {
+bool needsLeading(const std::vector<std::vector<StepTarget>>& targets) {
     for (const std::vector<StepTarget>& layer : targets)
         for (const StepTarget& t : layer)
             if ((t.visible && t.exact >= 0) || t.core)

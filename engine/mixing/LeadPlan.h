@@ -26,7 +26,7 @@ namespace mixengine {
 /// Whether some visible extrusion asks for a continuous field's own mix, or some hidden one for its
 /// model's core mix (mixing_core_ratio: wished for with a small weight, so the core takes its ratio
 /// wherever that costs the visible surface nothing).
-bool asksForField(const std::vector<std::vector<StepTarget>>& targets);
+bool needsLeading(const std::vector<std::vector<StepTarget>>& targets);
 
 /// Plans a plan whose layers are ordered by mix (planTransitions does that first): inserts the tower
 /// visits, sets every extrusion's PlanStep::mix (new mixes are added to plan.mixes) and updates

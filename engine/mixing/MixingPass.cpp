@@ -10,6 +10,7 @@
 #include "mixing/FieldBands.h"
 #include "mixing/LayerOrder.h"
 #include "mixing/MixSchedule.h"
+#include "mixing/MixTable.h"
 #include "mixing/PaintSchedule.h"
 #include "mixing/RegionSplit.h"
 #include "mixing/StepContext.h"
@@ -35,26 +36,6 @@ struct ScopeSchedule {
             return paint.regions.get();
         return bands.get();
     }
-};
-
-struct MixLess {
-    bool operator()(const MixVector& a, const MixVector& b) const { return a.share < b.share; }
-};
-
-/// Distinct mixes, each stored once in the plan.
-class MixTable {
-  public:
-    explicit MixTable(std::vector<MixVector>& mixes) : mixes_(mixes) {}
-    int indexOf(const MixVector& mix) {
-        auto [it, added] = index_.emplace(mix, static_cast<int>(mixes_.size()));
-        if (added)
-            mixes_.push_back(mix);
-        return it->second;
-    }
-
-  private:
-    std::vector<MixVector>& mixes_;
-    std::map<MixVector, int, MixLess> index_;
 };
 
 /// The report of one mesh's solved colours, and the warning when one is out of gamut.
@@ -416,19 +397,6 @@ void warnAboutFields(const MixingGroup& group, const std::vector<ScopeSchedule>&
                          : "");
         log.warning("mixing: '" + group.meshes[m].name + text);
     }
-}
-
-/// A mix rounded to 1/1000 of each share (the last channel takes the rest), so near-equal field values
-/// share one entry of the plan's mixes.
-MixVector roundedMix(const MixVector& mix) {
-    MixVector out = mix;
-    double rest = 1.0;
-    for (int c = 0; c + 1 < mix.channels; ++c) {
-        out[c] = std::clamp(std::round(mix[c] * 1000.0) / 1000.0, 0.0, rest);
-        rest -= out[c];
-    }
-    out[mix.channels - 1] = std::max(0.0, rest);
-    return out;
 }
 
 /// StepTarget::exact of every visible extrusion of a mesh whose field is continuous: the field's own mix

@@ -193,7 +193,7 @@ TransitionReport planTransitions(PrintPlan& plan, std::vector<std::vector<StepTa
             if (t.visible)
                 last_mix = t.mix;
     }
-    if (asksForField(targets)) {  // a continuous field: lead the chamber (mixing/LeadPlan.h)
+    if (needsLeading(targets)) {  // a continuous field: lead the chamber (mixing/LeadPlan.h)
         planLeading(plan, targets, settings, report);
         return report;
     }
