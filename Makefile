@@ -1,6 +1,8 @@
 # MixEngine — the two set-up commands of the README, plus helpers.
-#   make demo   install, build, slice a generated 20 mm cube -> out/demo.gcode
-#   make test   install, build, run every test
+#   make demo   install what the engine needs, build the engine alone (no test target), slice a generated 20 mm
+#               cube with a colour gradient -> out/demo.gcode
+#   make test   install everything, build every target, run every test
+#   make engine install what the engine needs, build the engine alone (build/mixengine)
 #   make soak   build, then the socket soak (tests/bench/soak.py)
 BUILD ?= build
 JOBS ?= 2
@@ -8,16 +10,27 @@ JOBS ?= 2
 FUZZ_SECONDS ?= 600
 FUZZ_TEST_SECONDS ?= 10
 
-.PHONY: install build demo test unit pytests format bench soak clean fuzz memory plugin plugin-install
+.PHONY: install install-engine engine build demo test unit pytests format bench soak clean fuzz memory plugin plugin-install
 
 install:
 	./install.sh
 
+install-engine:
+	./install.sh --engine
+
+# One configuration for both (the test targets are configured, MIXENGINE_TESTS): `engine` compiles only the
+# mixengine target (no tests/, bench micro or fuzz target), `build` every target.
+CONFIGURE = cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+
+engine: install-engine
+	$(CONFIGURE)
+	cmake --build $(BUILD) -j $(JOBS) --target mixengine
+
 build: install
-	cmake -S . -B $(BUILD) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+	$(CONFIGURE)
 	cmake --build $(BUILD) -j $(JOBS)
 
-demo: build
+demo: engine
 	@mkdir -p out
 	./$(BUILD)/mixengine demo out
 
@@ -56,7 +69,7 @@ memory: build
 	tests/bench/memory.sh $(BUILD)
 
 # Cura 4.13 plugin: $(BUILD)/MixEngine-<version>.curapackage (with the engine), and installing it for this user
-plugin: build
+plugin: engine
 	python3 plugin/package.py --engine $(BUILD)/mixengine --out $(BUILD)
 
 plugin-install: plugin
