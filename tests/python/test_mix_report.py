@@ -21,7 +21,7 @@ import MixReport  # noqa: E402
 YELLOW_BLUE = "#ffff00,#0000ff"
 PLA = 1.24  # g/cm³, Cura's generic PLA (fdm_materials)
 
-# the header of two cubes at 1:0 and 0:1 (README, "The mixing chamber")
+# the header of two cubes at 1:0 and 0:1 (settings/README.md, "The mixing chamber")
 TWO_CUBES = """;FLAVOR:Marlin
 ;TIME:11805
 ;Generated with MixEngine 0.1.0
