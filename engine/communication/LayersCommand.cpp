@@ -27,7 +27,7 @@
 #include "communication/Commands.h"
 #include "communication/LayerColours.h"
 #include "communication/OutputFile.h"
-#include "mixing/MixingSettings.h"
+#include "mixing/setup/MixingSettings.h"
 #include "pipeline/FffProcessor.h"
 #include "slicing/SliceDump.h"
 
