@@ -106,7 +106,7 @@ __extension__ typedef __int128 Wide;
 
 /// True when Clipper keeps every vertex of the closed `loop` (it drops repeated vertices and those
 /// in line with their neighbours, spikes included); then `box` is set to the loop's bounds.
-bool keptWhole(const Path& loop, ClipperLib::IntRect& box) {
+bool keptWhole(const Path& loop, Box2& box) {
     const std::size_t n = loop.size();
     if (n < 3)
         return false;
@@ -244,19 +244,19 @@ Paths differenceWithoutSmallIslands(const Paths& a, const Paths& b, double min_a
     return withoutSmallIslands(islandsOf(a, b, ClipperLib::ctDifference), min_area_um2);
 }
 
-ClipperLib::IntRect boundsOf(const Paths& polygons) {
+Box2 boundsOf(const Paths& polygons) {
     bool any = false;
-    ClipperLib::IntRect box{0, 0, 0, 0};
+    Box2 box{0, 0, 0, 0};
     for (const Path& loop : polygons) {
-        ClipperLib::IntRect b{0, 0, 0, 0};
+        Box2 b{0, 0, 0, 0};
         if (!keptWhole(loop, b)) {
             ClipperLib::Clipper clipper;
             if (!clipper.AddPath(loop, ClipperLib::ptSubject, true))
                 continue;
             b = clipper.GetBounds();
         }
-        box = any ? ClipperLib::IntRect{std::min(box.left, b.left), std::min(box.top, b.top),
-                                        std::max(box.right, b.right), std::max(box.bottom, b.bottom)}
+        box = any ? Box2{std::min(box.left, b.left), std::min(box.top, b.top), std::max(box.right, b.right),
+                         std::max(box.bottom, b.bottom)}
                   : b;
         any = true;
     }

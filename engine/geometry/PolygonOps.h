@@ -1,6 +1,8 @@
 #pragma once
 // Area operations on closed polygons in microns (Clipper, non-zero fill), shared by the toolpath
 // generators. Areas follow geometry/Point.h: outer contours counter-clockwise, holes clockwise.
+// Loops that lie side by side are run apart (geometry/SideBySide.h): the same area, not always
+// Clipper's vertex order; geometry/Clip.h has the single Clipper passes.
 #include <vector>
 
 #include "geometry/Point.h"
@@ -54,7 +56,7 @@ Paths removeSmallIslands(const Paths& polygons, double min_area_um2);
 Paths differenceWithoutSmallIslands(const Paths& a, const Paths& b, double min_area_um2);
 
 /// Axis-aligned bounds; empty input gives an all-zero rectangle.
-ClipperLib::IntRect boundsOf(const Paths& polygons);
+Box2 boundsOf(const Paths& polygons);
 
 /// Total length of the polylines, closed ones including the closing segment.
 double lengthUm(const Path& path, bool closed);

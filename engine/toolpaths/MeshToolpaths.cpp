@@ -38,14 +38,14 @@ double angleFor(const Settings& s, std::string_view key, int layer, const std::v
 }
 
 Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
-    ClipperLib::IntRect box{0, 0, 0, 0};
+    Box2 box{0, 0, 0, 0};
     bool any = false;
     for (const SlicedLayer& layer : layers) {
         if (layer.outlines.empty())
             continue;
-        const ClipperLib::IntRect b = boundsOf(layer.outlines);
-        box = any ? ClipperLib::IntRect{std::min(box.left, b.left), std::min(box.top, b.top),
-                                        std::max(box.right, b.right), std::max(box.bottom, b.bottom)}
+        const Box2 b = boundsOf(layer.outlines);
+        box = any ? Box2{std::min(box.left, b.left), std::min(box.top, b.top), std::max(box.right, b.right),
+                         std::max(box.bottom, b.bottom)}
                   : b;
         any = true;
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/adhesion/DraftShield.h"
 #include "toolpaths/core/FeatureStyle.h"
@@ -17,7 +18,7 @@ long long cross(const Point2& o, const Point2& a, const Point2& b) {
 Paths outerContours(const Paths& polygons) {
     Paths outer;
     for (const Path& p : unionOf(polygons)) {
-        if (ClipperLib::Orientation(p))
+        if (counterClockwise(p))
             outer.push_back(p);
     }
     return outer;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/adhesion/Adhesion.h"
 #include "toolpaths/core/FeatureStyle.h"
@@ -57,7 +58,7 @@ Paths approxConvexHull(const Paths& polygons, coord_um extra_um) {
     Paths outer;
     for (const Path& p : polygons) {
         if (p.size() >= 3)
-            outer.push_back(ClipperLib::Orientation(p) ? p : Path(p.rbegin(), p.rend()));
+            outer.push_back(counterClockwise(p) ? p : Path(p.rbegin(), p.rend()));
     }
     if (outer.empty())
         return {};

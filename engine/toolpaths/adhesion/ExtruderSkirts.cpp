@@ -1,5 +1,6 @@
 #include "toolpaths/adhesion/ExtruderSkirts.h"
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/FeatureStyle.h"
 #include "toolpaths/support/Support.h"
@@ -10,13 +11,12 @@ Paths areaInsideOutermost(const std::vector<ExtrusionPath>& lines) {
     Paths loops;
     for (const ExtrusionPath& line : lines) {
         if (line.closed && line.points.size() >= 3)
-            loops.push_back(ClipperLib::Orientation(line.points)
-                                ? line.points
-                                : Path(line.points.rbegin(), line.points.rend()));
+            loops.push_back(counterClockwise(line.points) ? line.points
+                                                          : Path(line.points.rbegin(), line.points.rend()));
     }
     Paths outer;
     for (const Path& p : unionOf(loops)) {
-        if (ClipperLib::Orientation(p))
+        if (counterClockwise(p))
             outer.push_back(p);
     }
     return outer;

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "geometry/Angles.h"
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/FeatureStyle.h"
 #include "toolpaths/support/Support.h"
@@ -212,7 +213,7 @@ std::vector<std::vector<ExtrusionPath>> generateOozeShield(const TowerInput& in)
         style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");  // shields are not slowed down either
         style.extruder = extruder;
         for (const Path& p : unionOf(shield[i])) {
-            if (ClipperLib::Orientation(p))
+            if (counterClockwise(p))
                 layers[i].push_back(styledPath(p, true, Feature::Skirt, style));
         }
     }

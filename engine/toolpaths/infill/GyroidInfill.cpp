@@ -58,7 +58,7 @@ Paths gyroidCurves(const Paths& area, coord_um period_um, coord_um z_um) {
     if (period_um <= 0 || area.empty())
         return {};
     const double k = kTwoPi / double(period_um);  // radians per micron
-    const ClipperLib::IntRect box = boundsOf(area);
+    const Box2 box = boundsOf(area);
     const double zr = k * double(z_um);
     const double sin_z = std::sin(zr), cos_z = std::cos(zr);
     const bool y_of_x = std::fabs(cos_z) >= std::fabs(sin_z);

@@ -1,5 +1,6 @@
 #include "toolpaths/infill/InfillMultiplier.h"
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 
 namespace mixengine {
@@ -7,39 +8,26 @@ namespace {
 
 constexpr double kMiterLimit = 1.2;  // as CuraEngine's offsets
 
-Paths offsetWith(const Paths& paths, coord_um delta, ClipperLib::EndType ends) {
+Paths offsetWith(const Paths& paths, coord_um delta, OffsetEnds ends) {
     if (paths.empty())
         return {};
-    ClipperLib::ClipperOffset offset(kMiterLimit, 10.0);
-    offset.AddPaths(paths, ClipperLib::jtMiter, ends);
-    Paths result;
-    offset.Execute(result, static_cast<double>(delta));
-    return result;
+    return offsetMitred(paths, static_cast<double>(delta), ends, kMiterLimit, 10.0);
 }
 
 Paths evenOddAreas(const Paths& loops) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(loops, ClipperLib::ptSubject, true);
-    Paths result;
-    clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
-    return result;
+    return clipAreas(loops, {}, ClipOp::Union, FillRule::EvenOdd);
 }
 
 /// Even-odd intersection: nested loops keep every boundary (CuraEngine's default fill rule).
 Paths intersectEvenOdd(const Paths& loops, const Paths& outline) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(loops, ClipperLib::ptSubject, true);
-    clipper.AddPaths(outline, ClipperLib::ptClip, true);
-    Paths result;
-    clipper.Execute(ClipperLib::ctIntersection, result, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
-    return result;
+    return clipAreas(loops, outline, ClipOp::Intersection, FillRule::EvenOdd);
 }
 
 /// The bands around the lines and rings along the loops, `offset` to each side.
 Paths firstOffset(const Paths& lines, const Paths& loops, coord_um offset) {
-    const Paths bands = offsetWith(lines, offset, ClipperLib::etOpenSquare);
-    const Paths rings = differenceOf(offsetWith(loops, offset, ClipperLib::etClosedPolygon),
-                                     offsetWith(loops, -offset, ClipperLib::etClosedPolygon));
+    const Paths bands = offsetWith(lines, offset, OffsetEnds::OpenSquare);
+    const Paths rings = differenceOf(offsetWith(loops, offset, OffsetEnds::ClosedPolygon),
+                                     offsetWith(loops, -offset, OffsetEnds::ClosedPolygon));
     return unionOf(bands, rings);
 }
 
@@ -72,7 +60,7 @@ void multiplyInfill(Paths& lines, Paths& loops, const Paths& outline, const Mult
     Paths result = first;
     Paths reference = first;
     for (int pair = 1; pair < p.multiplier / 2; ++pair) {
-        reference = offsetWith(reference, p.connected ? -w : w, ClipperLib::etClosedPolygon);
+        reference = offsetWith(reference, p.connected ? -w : w, OffsetEnds::ClosedPolygon);
         result.insert(result.end(), reference.begin(), reference.end());
     }
     if (p.connected)

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geometry/Angles.h"
+#include "geometry/Clip.h"
 
 namespace mixengine {
 namespace {
@@ -20,7 +21,7 @@ bool insideWithDistance(const Paths& loops, const Point2& p, double& distance2) 
     bool inside = false;
     distance2 = std::numeric_limits<double>::max();
     for (const Path& loop : loops) {
-        if (ClipperLib::PointInPolygon(p, loop) != 0)
+        if (pointInLoop(p, loop) != 0)
             inside = !inside;
         for (std::size_t i = 0; i < loop.size(); ++i) {
             const Point2& a = loop[i];

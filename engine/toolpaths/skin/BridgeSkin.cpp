@@ -44,7 +44,7 @@ Point2 centreOfMass(const Path& p) {
 
 /// The angle of the longest edge of `part` over air (−1: none over air).
 int airEdgeAngle(const Paths& part, const Paths& solid_below) {
-    const ClipperLib::IntRect box = boundsOf(part);
+    const Box2 box = boundsOf(part);
     const coord_um grow = std::max(box.right - box.left, box.bottom - box.top);
     const Paths around{{{box.left - grow, box.top - grow},
                         {box.right + grow, box.top - grow},

@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "common/ParallelFor.h"
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/LayerWindows.h"
 
@@ -45,7 +46,7 @@ Paths removeSmallOutlines(const Paths& polygons, double min_area_um2) {
     std::vector<std::size_t> small_holes;
     bool any = false;
     for (std::size_t k = 0; k < polygons.size(); ++k) {
-        const double area = ClipperLib::Area(polygons[k]);
+        const double area = signedAreaUm2(polygons[k]);
         if (std::abs(area) >= min_area_um2)
             continue;
         if (area >= 0)
@@ -57,7 +58,7 @@ Paths removeSmallOutlines(const Paths& polygons, double min_area_um2) {
         return polygons;
     for (std::size_t hole : small_holes) {
         for (std::size_t k = 0; k < polygons.size() && !polygons[hole].empty(); ++k) {
-            if (dropped[k] && k != hole && ClipperLib::PointInPolygon(polygons[hole][0], polygons[k]) != 0) {
+            if (dropped[k] && k != hole && pointInLoop(polygons[hole][0], polygons[k]) != 0) {
                 dropped[hole] = true;
                 break;
             }

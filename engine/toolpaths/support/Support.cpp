@@ -6,6 +6,7 @@
 
 #include "common/ParallelFor.h"
 #include "geometry/Angles.h"
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/infill/InfillLayers.h"
 #include "toolpaths/support/SupportAreas.h"
@@ -296,7 +297,7 @@ std::vector<ExtrusionPath> supportBrim(const Settings& s, int extruder, Paths& o
         if (ring.empty())
             break;
         std::erase_if(ring, [&](const Path& p) {
-            const double area = ClipperLib::Area(p);
+            const double area = signedAreaUm2(p);
             return area < 0 && area > -smallest_hole_um2;
         });
         appendStyledLoops(ring, Feature::Skirt, style, loops);
@@ -312,7 +313,7 @@ Paths brimBase(const Paths& layer0, bool outside_only) {
         return all;
     Paths outer;
     for (const Path& p : all) {
-        if (ClipperLib::Orientation(p))
+        if (counterClockwise(p))
             outer.push_back(p);
     }
     return outer;
@@ -344,7 +345,7 @@ Paths brimCoveredArea(const Settings& global, const std::vector<Settings>* extru
 
 namespace {
 
-ClipperLib::IntRect meshBounds(const std::vector<SlicedLayer>& layers) {
+Box2 meshBounds(const std::vector<SlicedLayer>& layers) {
     Paths all;
     for (const SlicedLayer& layer : layers)
         all.insert(all.end(), layer.outlines.begin(), layer.outlines.end());

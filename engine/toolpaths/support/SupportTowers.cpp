@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geometry/Clip.h"
 #include "geometry/PointQueries.h"
 #include "geometry/PolygonOps.h"
 
@@ -9,11 +10,11 @@ namespace mixengine {
 namespace {
 
 double outerAreaUm2(const Paths& island) {
-    return island.empty() ? 0.0 : std::abs(ClipperLib::Area(island.front()));
+    return island.empty() ? 0.0 : std::abs(signedAreaUm2(island.front()));
 }
 
 Point2 middleOf(const Paths& area) {
-    const ClipperLib::IntRect box = boundsOf(area);
+    const Box2 box = boundsOf(area);
     return {(box.left + box.right) / 2, (box.top + box.bottom) / 2};
 }
 

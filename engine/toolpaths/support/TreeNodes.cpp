@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/Clip.h"
 #include "geometry/PointQueries.h"
 #include "geometry/PolygonOps.h"
 
@@ -13,20 +14,20 @@ namespace {
 constexpr double kGridTurnRadians = 22.0 / 180.0 * 3.14159265358979323846;  // as CuraEngine
 constexpr coord_um kRoundingMarginUm = 100;
 
-bool inBounds(const ClipperLib::IntRect& b, Point2 p) {
+bool inBounds(const Box2& b, Point2 p) {
     return p.X >= b.left && p.X <= b.right && p.Y >= b.top && p.Y <= b.bottom;
 }
 
-ClipperLib::IntRect grown(ClipperLib::IntRect b, coord_um by) {
+Box2 grown(Box2 b, coord_um by) {
     return {b.left - by, b.top - by, b.right + by, b.bottom + by};
 }
 
-Point2 middleOf(const ClipperLib::IntRect& b) {
+Point2 middleOf(const Box2& b) {
     return {(b.left + b.right) / 2, (b.top + b.bottom) / 2};
 }
 
 /// The grid, turned about the bounds' middle, that falls in the bounds.
-std::vector<Point2> contactGrid(const ClipperLib::IntRect& bounds, coord_um spacing_um) {
+std::vector<Point2> contactGrid(const Box2& bounds, coord_um spacing_um) {
     const double c = std::cos(kGridTurnRadians), s = std::sin(kGridTurnRadians);
     const double w = double(bounds.right - bounds.left), h = double(bounds.bottom - bounds.top);
     const coord_um half_x = std::llround((w * c + h * s) / 2), half_y = std::llround((w * s + h * c) / 2);
@@ -53,10 +54,10 @@ TreeNode contactNode(Point2 at, int layer_of_overhang, int roof_layers) {
 }
 
 /// The contact points of one overhang loop on `layer` (see the header).
-void addLoopContacts(const Path& loop, const std::vector<Point2>& grid,
-                     const ClipperLib::IntRect& mesh_bounds, const TreeContactParams& p,
-                     const Paths& collision, int layer, std::vector<TreeNode>& out) {
-    const ClipperLib::IntRect near = grown(boundsOf(Paths{loop}), p.half_overhang_step_um);
+void addLoopContacts(const Path& loop, const std::vector<Point2>& grid, const Box2& mesh_bounds,
+                     const TreeContactParams& p, const Paths& collision, int layer,
+                     std::vector<TreeNode>& out) {
+    const Box2 near = grown(boundsOf(Paths{loop}), p.half_overhang_step_um);
     const double reach2 = double(p.half_overhang_step_um) * double(p.half_overhang_step_um);
     bool added = false;
     for (Point2 candidate : grid) {
@@ -77,19 +78,19 @@ void addLoopContacts(const Path& loop, const std::vector<Point2>& grid,
 
 void dropContactsInHoles(const Paths& overhang, std::vector<TreeNode>& nodes) {
     for (const Path& loop : overhang) {
-        if (ClipperLib::Orientation(loop))
+        if (counterClockwise(loop))
             continue;
         std::erase_if(nodes, [&](const TreeNode& n) {
             return !n.removed && n.sources.empty() && n.distance_to_top == 0 &&
-                   ClipperLib::PointInPolygon(n.position, loop) == 1;
+                   pointInLoop(n.position, loop) == 1;
         });
     }
 }
 
 }  // namespace
 
-void addContactPoints(const std::vector<Paths>& overhang, const ClipperLib::IntRect& bounds,
-                      const TreeContactParams& params, TreeVolumes& volumes, TreeLayers& layers) {
+void addContactPoints(const std::vector<Paths>& overhang, const Box2& bounds, const TreeContactParams& params,
+                      TreeVolumes& volumes, TreeLayers& layers) {
     const std::vector<Point2> grid = contactGrid(bounds, params.branch_distance_um);
     const int count = static_cast<int>(std::min(overhang.size(), layers.size()));
     for (int layer = 1; layer < count - params.z_layers; ++layer) {

@@ -47,8 +47,8 @@ struct TreeContactParams {
 
 /// Adds the contact points of one mesh. `overhang[n]`: the mesh's overhang on layer n; `bounds`:
 /// the mesh's bounds in x and y.
-void addContactPoints(const std::vector<Paths>& overhang, const ClipperLib::IntRect& bounds,
-                      const TreeContactParams& params, TreeVolumes& volumes, TreeLayers& layers);
+void addContactPoints(const std::vector<Paths>& overhang, const Box2& bounds, const TreeContactParams& params,
+                      TreeVolumes& volumes, TreeLayers& layers);
 
 struct TreeDropParams {
     coord_um max_move_um = 0;

@@ -23,7 +23,7 @@ namespace mixengine {
 struct TreeMesh {
     const Settings* settings = nullptr;  ///< support_tree_branch_distance, support_angle, roof, top distance
     const std::vector<Paths>* overhang = nullptr;  ///< [layer] the mesh's overhang (Overhangs::basic)
-    ClipperLib::IntRect bounds{0, 0, 0, 0};        ///< the mesh's bounds in x and y
+    Box2 bounds{0, 0, 0, 0};                       ///< the mesh's bounds in x and y
 };
 
 /// The tree support areas per layer. `group`: the mesh group's settings (branch diameter and

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 
 namespace mixengine {
@@ -16,10 +17,10 @@ Paths withSmallHolesKept(const Paths& layer, Paths above, double max_hole_area_m
         return above;
     for (const Paths& island : splitIslands(layer)) {
         for (const Path& loop : island) {
-            if (ClipperLib::Orientation(loop))
+            if (counterClockwise(loop))
                 continue;  // the contour
             const Paths hole{loop};
-            if (std::abs(ClipperLib::Area(loop)) / 1e6 >= max_hole_area_mm2)
+            if (std::abs(signedAreaUm2(loop)) / 1e6 >= max_hole_area_mm2)
                 continue;
             if (intersectAll(hole, above).empty())
                 continue;

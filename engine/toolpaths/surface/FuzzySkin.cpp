@@ -3,6 +3,8 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/Clip.h"
+
 namespace mixengine {
 namespace {
 
@@ -20,7 +22,7 @@ Point2 scaledTo(double x, double y, double length) {
 }
 
 bool isHole(const Path& loop) {
-    return !ClipperLib::Orientation(loop);
+    return !counterClockwise(loop);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 
 namespace mixengine {
@@ -17,11 +18,7 @@ bool moldOn(const MoldMesh& m) {
 Paths thickened(const Paths& lines, coord_um width_um) {
     if (lines.empty() || width_um <= 0)
         return {};
-    ClipperLib::ClipperOffset offset(1.2, 10.0);
-    offset.AddPaths(lines, ClipperLib::jtMiter, ClipperLib::etOpenSquare);
-    Paths out;
-    offset.Execute(out, double(width_um) / 2.0);
-    return out;
+    return offsetMitred(lines, double(width_um) / 2.0, OffsetEnds::OpenSquare, 1.2, 10.0);
 }
 
 /// The model's outline on `layer` of mold mesh `m` (its open pieces are used up).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/walls/Seam.h"
 
@@ -219,10 +220,10 @@ Paths spiralWallLoops(const Paths& part, const WallParams& outer) {
     for (const ExtrusionPath& wall : generateWalls(part, once).walls) {
         if (wall.feature != Feature::WallOuter || wall.points.size() < 3)
             continue;
-        (ClipperLib::Orientation(wall.points) ? contours : holes).push_back(wall.points);
+        (counterClockwise(wall.points) ? contours : holes).push_back(wall.points);
     }
     std::stable_sort(contours.begin(), contours.end(), [](const Path& a, const Path& b) {
-        return std::abs(ClipperLib::Area(a)) > std::abs(ClipperLib::Area(b));
+        return std::abs(signedAreaUm2(a)) > std::abs(signedAreaUm2(b));
     });
     contours.insert(contours.end(), holes.begin(), holes.end());
     return contours;

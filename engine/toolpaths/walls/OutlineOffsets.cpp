@@ -1,5 +1,6 @@
 #include "toolpaths/walls/OutlineOffsets.h"
 
+#include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 
 namespace mixengine {
@@ -10,7 +11,7 @@ Paths offsetOutlines(const Paths& outlines, coord_um xy_offset_um, coord_um hole
         return result;
     Paths outer, holes;
     for (const Path& loop : result) {
-        if (ClipperLib::Orientation(loop)) {
+        if (counterClockwise(loop)) {
             outer.push_back(loop);
         } else {
             Path as_area(loop.rbegin(), loop.rend());  // the hole as an area of its own

@@ -36,15 +36,15 @@ double meanDistanceUm(const Path& child, const Path& parent) {
     return count > 0 ? sum / double(count) : std::numeric_limits<double>::max();
 }
 
-bool holds(const ClipperLib::IntRect& outer, coord_um margin, const ClipperLib::IntRect& inner) {
+bool holds(const Box2& outer, coord_um margin, const Box2& inner) {
     return outer.left - margin <= inner.left && outer.top - margin <= inner.top &&
            outer.right + margin >= inner.right && outer.bottom + margin >= inner.bottom;
 }
 
 /// The loop of `parents` that `child` runs closest along (candidates by bounds first).
-std::size_t parentOf(const Path& child, const Paths& parents, const std::vector<ClipperLib::IntRect>& bounds,
+std::size_t parentOf(const Path& child, const Paths& parents, const std::vector<Box2>& bounds,
                      coord_um step_um) {
-    const ClipperLib::IntRect box = boundsOf({child});
+    const Box2 box = boundsOf({child});
     std::size_t best = 0;
     double best_distance = std::numeric_limits<double>::max();
     for (bool filtered : {true, false}) {
@@ -72,7 +72,7 @@ std::vector<std::vector<std::size_t>> wallFamilies(const std::vector<Paths>& lev
         families[0].push_back(i);
     for (std::size_t k = 1; k < levels.size(); ++k) {
         const Paths& parents = levels[k - 1];
-        std::vector<ClipperLib::IntRect> bounds;
+        std::vector<Box2> bounds;
         for (const Path& parent : parents)
             bounds.push_back(boundsOf({parent}));
         const coord_um step = k < level_step_um.size() ? level_step_um[k] : 0;
