@@ -20,9 +20,9 @@
 #include "communication/CommandLineParser.h"
 #include "communication/Commands.h"
 #include "communication/OutputFile.h"
-#include "mixing/ColorSpace.h"
-#include "mixing/MixingSettings.h"
 #include "mixing/Preview.h"
+#include "mixing/color/ColorSpace.h"
+#include "mixing/setup/MixingSettings.h"
 #include "pipeline/FffProcessor.h"
 
 namespace mixengine {

@@ -1,6 +1,7 @@
 #pragma once
-// `mixengine calibrate-chamber` (issue 26): what the chamber model (mixing/ChamberModel.h) predicts for a
-// tower whose G-code switches hard from filament A to B and back, and the reading guide printed with it.
+// `mixengine calibrate-chamber` (issue 26): what the chamber model (mixing/chamber/ChamberModel.h) predicts
+// for a tower whose G-code switches hard from filament A to B and back, and the reading guide printed with
+// it.
 //
 // After a hard switch the melt leaving the nozzle is the chamber's step response: with N equal stirred tanks
 // of total volume V, the share of the new filament after v mm³ is 1 − e^(−t) Σ_{k<N} t^k / k!, t = v·N / V.
@@ -10,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mixing/ChamberModel.h"
+#include "mixing/chamber/ChamberModel.h"
 
 namespace mixengine {
 

@@ -1,8 +1,8 @@
 #pragma once
 // `mixengine layers` on a mixing print (issue 26): what each layer prints, in the colour predicted to
 // leave the nozzle. The plan's extrusions (PlanStep::Extrude with volume, after the mixing stage has
-// set PlanStep::outlet_color: mixing/OutletPrediction.h) become lines of their width in that colour,
-// drawn over the layer's sliced outline, and layers.json gets, per layer, the colours used and the
+// set PlanStep::outlet_color: mixing/transition/OutletPrediction.h) become lines of their width in that
+// colour, drawn over the layer's sliced outline, and layers.json gets, per layer, the colours used and the
 // length printed in each.
 //
 // colouredLayers — every planned layer (;LAYER: number, raft layers negative) with its extrusions

@@ -27,7 +27,8 @@
 #include "communication/Commands.h"
 #include "communication/LayerColours.h"
 #include "communication/OutputFile.h"
-#include "mixing/MixingSettings.h"
+#include "geometry/Clip.h"
+#include "mixing/setup/MixingSettings.h"
 #include "pipeline/FffProcessor.h"
 #include "slicing/SliceDump.h"
 
@@ -38,17 +39,16 @@ namespace {
 std::vector<SlicedLayer> mergeMeshes(const SlicedGroup& sliced) {
     std::vector<SlicedLayer> merged(sliced.heights.size());
     for (std::size_t i = 0; i < merged.size(); ++i) {
-        ClipperLib::Clipper clipper;
+        Paths outlines;  // every printed mesh's loops, in mesh order
         for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
             if (m < sliced.roles.size() && !sliced.roles[m].printsAlone())
                 continue;
             const std::vector<SlicedLayer>& mesh = sliced.meshes[m];
-            clipper.AddPaths(mesh[i].outlines, ClipperLib::ptSubject, true);
+            outlines.insert(outlines.end(), mesh[i].outlines.begin(), mesh[i].outlines.end());
             merged[i].open_polylines.insert(merged[i].open_polylines.end(), mesh[i].open_polylines.begin(),
                                             mesh[i].open_polylines.end());
         }
-        clipper.Execute(ClipperLib::ctUnion, merged[i].outlines, ClipperLib::pftNonZero,
-                        ClipperLib::pftNonZero);
+        merged[i].outlines = clipAreas(outlines, {}, ClipOp::Union, FillRule::NonZero);
         merged[i].print_z = sliced.heights[i].print_z;
         merged[i].slice_z = sliced.heights[i].slice_z;
     }

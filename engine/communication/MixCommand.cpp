@@ -1,14 +1,14 @@
 // `mixengine mix`: the colour solver on its own. --colors names the filament colours (2 to 5),
 // --target the colour wanted: prints the ratios, the predicted colour and its ΔE00 to the target
-// (mixing/ColorSolver.h). --ratio instead of --target prints the colour a given mix is predicted
+// (mixing/color/ColorSolver.h). --ratio instead of --target prints the colour a given mix is predicted
 // to print.
 #include <cstdio>
 #include <optional>
 
 #include "common/Error.h"
 #include "communication/Commands.h"
-#include "mixing/ColorSolver.h"
-#include "mixing/MixingSettings.h"
+#include "mixing/color/ColorSolver.h"
+#include "mixing/setup/MixingSettings.h"
 
 namespace mixengine {
 namespace {

@@ -15,7 +15,7 @@
 #include "communication/CommandLineParser.h"
 #include "communication/Commands.h"
 #include "communication/OutputFile.h"
-#include "mesh/MeshBuilder.h"
+#include "mesh/build/MeshBuilder.h"
 #include "orient/MeshRotation.h"
 #include "orient/OrientReport.h"
 #include "orient/OrientSettings.h"

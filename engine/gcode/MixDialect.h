@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "mixing/MixingOutput.h"
+#include "mixing/setup/MixingOutput.h"
 #include "planning/MixVector.h"
 
 namespace mixengine {

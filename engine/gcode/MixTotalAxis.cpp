@@ -1,7 +1,7 @@
 #include "gcode/MixTotalAxis.h"
 
 #include "gcode/NumberFormat.h"
-#include "mixing/Quantiser.h"
+#include "mixing/setup/Quantiser.h"
 
 namespace mixengine {
 namespace {

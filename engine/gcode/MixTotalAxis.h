@@ -3,7 +3,7 @@
 // firmwares that take the mix as a command — Marlin M163/M164 (+ T<tool> once), Marlin M165
 // (DIRECT_MIXING_IN_G1) and RepRapFirmware M567. The E words are exactly the single-colour ones;
 // a mix command is written before a move only when the mix, quantised to the firmware's
-// resolution (mixing/Quantiser.h), differs from the one last written.
+// resolution (mixing/setup/Quantiser.h), differs from the one last written.
 #include <array>
 #include <optional>
 

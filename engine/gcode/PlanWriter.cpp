@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "gcode/NumberFormat.h"
-#include "mixing/ColorSpace.h"
+#include "mixing/color/ColorSpace.h"
 
 namespace mixengine {
 namespace {
@@ -95,7 +95,7 @@ void writeExtrusion(const PlanStep& step, coord_um layer_z, const PlanTables& pl
     gcode.setMotion(step.acceleration_mm_s2, step.jerk_mm_s, false);
     if (step.mix >= 0)  // colour mixing (mixing/MixingPass.h)
         gcode.setMix(plan.mixes[static_cast<std::size_t>(step.mix)]);
-    if (step.rise_um > 0)  // a spiral (toolpaths/Spiralize.h)
+    if (step.rise_um > 0)  // a spiral (toolpaths/surface/Spiralize.h)
         gcode.extrudeRising(step.to, layer_z + step.rise_um, step.volume_mm3, step.speed_mm_s);
     else
         gcode.extrude(step.to, step.volume_mm3, step.speed_mm_s);

@@ -3,6 +3,8 @@
 //   Point2  — a 2-D point in microns (ClipperLib::IntPoint: members X, Y).
 //   Path    — a closed polygon or an open polyline in microns.
 //   Paths   — several of them; for areas, outer contours counter-clockwise, holes clockwise.
+//   Box2    — an axis-aligned rectangle in microns (ClipperLib::IntRect: left, top, right, bottom;
+//             top is the smaller y).
 //   Vec3    — a 3-D point in millimetres (double), used for mesh input before quantisation.
 //   Point3  — a 3-D point in microns (int64).
 #include <polyclipping/clipper.hpp>
@@ -16,6 +18,7 @@ using coord_um = ClipperLib::cInt;  ///< a length in microns
 using Point2 = ClipperLib::IntPoint;
 using Path = ClipperLib::Path;
 using Paths = ClipperLib::Paths;
+using Box2 = ClipperLib::IntRect;
 
 constexpr double kMicronsPerMm = 1000.0;
 

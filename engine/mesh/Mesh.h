@@ -5,7 +5,7 @@
 //   - vertices are welded (no two vertices share the same integer coordinates);
 //   - faces index into vertices, three distinct indices each, counter-clockwise seen from outside
 //     when the source winding was consistent (slicing does not rely on winding);
-//   - degenerate (zero-area) and duplicate faces have been removed by buildMesh (mesh/MeshBuilder.h).
+//   - degenerate (zero-area) and duplicate faces have been removed by buildMesh (mesh/build/MeshBuilder.h).
 #include <array>
 #include <cstdint>
 #include <string>

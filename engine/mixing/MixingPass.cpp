@@ -5,16 +5,16 @@
 #include <map>
 #include <memory>
 
-#include "mixing/ChamberDelay.h"
-#include "mixing/FeatheredPaint.h"
-#include "mixing/FieldBands.h"
-#include "mixing/LayerOrder.h"
-#include "mixing/MixSchedule.h"
-#include "mixing/MixTable.h"
-#include "mixing/PaintSchedule.h"
-#include "mixing/RegionSplit.h"
-#include "mixing/StepContext.h"
-#include "toolpaths/FeatureStyle.h"
+#include "mixing/chamber/ChamberDelay.h"
+#include "mixing/fields/FeatheredPaint.h"
+#include "mixing/fields/FieldBands.h"
+#include "mixing/fields/MixSchedule.h"
+#include "mixing/fields/PaintSchedule.h"
+#include "mixing/fields/RegionSplit.h"
+#include "mixing/transition/LayerOrder.h"
+#include "mixing/transition/MixTable.h"
+#include "mixing/transition/StepContext.h"
+#include "toolpaths/core/FeatureStyle.h"
 
 namespace mixengine {
 namespace {
@@ -279,7 +279,7 @@ bool mixChangesInLayers(const std::vector<std::vector<StepTarget>>& targets) {
 
 /// Without changes inside layers: every extrusion commands its target, shifted earlier by the
 /// chamber's volume — the mean residence time of the chamber, which is exactly the lag of a slowly
-/// changing mix through any number of stirred tanks (mixing/ChamberDelay.h).
+/// changing mix through any number of stirred tanks (mixing/chamber/ChamberDelay.h).
 void delayShift(PrintPlan& plan, const std::vector<std::vector<StepTarget>>& targets, double chamber_mm3) {
     std::vector<int> target;
     std::vector<double> volume;
@@ -400,7 +400,8 @@ void warnAboutFields(const MixingGroup& group, const std::vector<ScopeSchedule>&
 }
 
 /// StepTarget::exact of every visible extrusion of a mesh whose field is continuous: the field's own mix
-/// at the middle of the move, mid-layer, in the mesh's frame (as mixing/RegionSplit.h looks regions up).
+/// at the middle of the move, mid-layer, in the mesh's frame (as mixing/fields/RegionSplit.h looks regions
+/// up).
 void markExactTargets(PrintPlan& plan, const MixingGroup& group, const std::vector<ScopeSchedule>& meshes,
                       std::vector<std::vector<StepTarget>>& targets) {
     MixTable table(plan.mixes);

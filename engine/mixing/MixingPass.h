@@ -1,22 +1,22 @@
 #pragma once
 // The mixing stage: after planning, every extrusion step of a mesh group's plan gets a mix
 // (PlanStep::mix, an index into PrintPlan::mixes). A mesh's extrusions follow that mesh's
-// schedule (mixing/MixSchedule.h) at the layer's height above the mesh's bottom (a spiral's moves,
+// schedule (mixing/fields/MixSchedule.h) at the layer's height above the mesh's bottom (a spiral's moves,
 // PlanStep::rise_um, at the height each ends at), in percent of the mesh's own height or in mm; non-mesh
 // extrusions follow the group's settings over the height of all meshes together; the raft (its
 // RaftBase/RaftInterface/RaftSurface extrusions) is printed with the group's mixing_raft_ratio (filament A by
 // default), the support (normal and tree, body and interface, Support/SupportInterface) and the draft shield
 // (DraftShield) with its mixing_support_ratio (filament A by default). The chamber-delay shift
-// (mixing/ChamberDelay.h) is applied last, so the model's first colour is primed through the raft.
+// (mixing/chamber/ChamberDelay.h) is applied last, so the model's first colour is primed through the raft.
 // In color mode every mesh prints the mix solved for its mixing_target_color (and gradient mode
 // solves mixing_gradient_colors); each solved colour is reported (info: target, mix, predicted
 // colour, ΔE00), and one warning line names a mesh whose target is outside the mixable gamut
 // (ΔE00 above kGamutWarningDeltaE00), which is printed in the nearest mixable colour. A mesh
-// with painted faces (3MF) gets painted regions (mixing/PaintSchedule.h): its extrusions are cut
-// where the region changes (mixing/RegionSplit.h) and each piece takes its region's mix; the
+// with painted faces (3MF) gets painted regions (mixing/fields/PaintSchedule.h): its extrusions are cut
+// where the region changes (mixing/fields/RegionSplit.h) and each piece takes its region's mix; the
 // chamber delay then shifts all of them alike.
 // In single mode (the default) the plan is left untouched: no mixes, every step's mix stays -1.
-// Bad mixing settings throw InputError (mixing/MixingSettings.h) before anything is written.
+// Bad mixing settings throw InputError (mixing/setup/MixingSettings.h) before anything is written.
 #include <optional>
 #include <string>
 #include <utility>
@@ -25,8 +25,8 @@
 #include "common/Log.h"
 #include "geometry/Point.h"
 #include "mesh/Mesh.h"
-#include "mixing/ChamberModel.h"
 #include "mixing/MixingReport.h"
+#include "mixing/chamber/ChamberModel.h"
 #include "planning/LayerPlan.h"
 #include "settings/Settings.h"
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "mixing/OutletPrediction.h"
-#include "mixing/TransitionPlan.h"
+#include "mixing/transition/OutletPrediction.h"
+#include "mixing/transition/TransitionPlan.h"
 
 namespace mixengine {
 

@@ -89,7 +89,7 @@ void SidePreview::add(const PrintPlan& plan) {
         for (const PlanStep& step : layer.steps) {
             if (step.kind == PlanStep::Kind::Extrude) {
                 Rgb color = step.mix >= 0 ? mix_colors[static_cast<std::size_t>(step.mix)] : single;
-                if (step.outlet_color >= 0)  // what leaves the nozzle (mixing/OutletPrediction.h)
+                if (step.outlet_color >= 0)  // what leaves the nozzle (mixing/transition/OutletPrediction.h)
                     color = plan.outlet_colors[static_cast<std::size_t>(step.outlet_color)];
                 bands_.push_back({static_cast<std::int32_t>(head.X), static_cast<std::int32_t>(head.Y),
                                   static_cast<std::int32_t>(step.to.X), static_cast<std::int32_t>(step.to.Y),

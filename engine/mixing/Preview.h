@@ -5,17 +5,17 @@
 // mixed in linear light; the extrusion nearest to the viewer wins, and deeper ones are drawn a
 // little darker so that the object's shape stays readable. Single mode draws channel A's colour.
 // When the print asks for colours (mixing_mode color, or mixing_gradient_colors in the global
-// settings) the mixes are drawn in the colour the pigment model predicts (mixing/KubelkaMunk.h),
+// settings) the mixes are drawn in the colour the pigment model predicts (mixing/color/KubelkaMunk.h),
 // the colour the solver aimed at, instead of the linear-light blend. An extrusion whose colour leaving
-// the nozzle is predicted (PlanStep::outlet_color, mixing/OutletPrediction.h: every mixing print) is
-// drawn in that colour: the preview shows what the chamber lets out, not what the G-code commands.
+// the nozzle is predicted (PlanStep::outlet_color, mixing/transition/OutletPrediction.h: every mixing print)
+// is drawn in that colour: the preview shows what the chamber lets out, not what the G-code commands.
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "mixing/KubelkaMunk.h"
-#include "mixing/MixingSettings.h"
+#include "mixing/color/KubelkaMunk.h"
+#include "mixing/setup/MixingSettings.h"
 #include "planning/LayerPlan.h"
 
 namespace mixengine {

@@ -8,7 +8,7 @@
 #include "gcode/Bfb.h"
 #include "gcode/StartEndCode.h"
 #include "mixing/MixingPass.h"
-#include "mixing/MixingSettings.h"
+#include "mixing/setup/MixingSettings.h"
 #include "pipeline/OutputParams.h"
 #include "pipeline/StreamedWriter.h"
 #include "planning/PrintPlanner.h"
@@ -16,10 +16,10 @@
 
 #include "slicing/AdaptiveLayers.h"
 #include "slicing/OutlineCleanup.h"
-#include "toolpaths/ConicalOverhang.h"
 #include "toolpaths/GroupToolpaths.h"
-#include "toolpaths/Mold.h"
-#include "toolpaths/RaftLayout.h"
+#include "toolpaths/adhesion/RaftLayout.h"
+#include "toolpaths/surface/ConicalOverhang.h"
+#include "toolpaths/surface/Mold.h"
 
 namespace mixengine {
 namespace {
@@ -58,8 +58,8 @@ std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance to
     return adaptiveLayerHeights(faces, params);
 }
 
-/// As CuraEngine 4.13 after slicing: molds (toolpaths/Mold.h), then each mesh's conical overhang
-/// (toolpaths/ConicalOverhang.h).
+/// As CuraEngine 4.13 after slicing: molds (toolpaths/surface/Mold.h), then each mesh's conical overhang
+/// (toolpaths/surface/ConicalOverhang.h).
 void reshapeOutlines(const SceneGroup& group, SlicedGroup& sliced) {
     std::vector<MoldMesh> molds;
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m)
@@ -116,7 +116,7 @@ void extendBounds(PrintSummary& summary, const WrittenLayers& written) {
 }
 
 /// The mixing stage's view of the group: each mesh's height span as printed, i.e. lifted by the
-/// raft (toolpaths/RaftLayout.h) like the layers whose z the schedules are read at.
+/// raft (toolpaths/adhesion/RaftLayout.h) like the layers whose z the schedules are read at.
 MixingGroup mixingInput(const Scene& scene, const SceneGroup& group) {
     MixingGroup input;
     input.settings = &group.settings;

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "mixing/MixingSettings.h"
+#include "mixing/setup/MixingSettings.h"
 
 namespace mixengine {
 
@@ -32,7 +32,8 @@ ExportParams exportParams(const Scene& scene) {
     p.filament_diameter_mm = e0.millimetres("material_diameter");
     const Flavor flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
     p.volumetric = flavor == Flavor::MarlinVolumetric || flavor == Flavor::UltiGCode;
-    p.relative_extrusion = relativeExtrusion(global);  // mixing/MixingSettings.h: M83 when a dialect needs it
+    p.relative_extrusion =
+        relativeExtrusion(global);  // mixing/setup/MixingSettings.h: M83 when a dialect needs it
     p.retraction_amount_mm = e0.boolean("retraction_enable") ? e0.millimetres("retraction_amount") : 0.0;
     p.retraction_speed_mm_s = e0.velocityMmPerS("retraction_retract_speed");
     p.prime_speed_mm_s = e0.velocityMmPerS("retraction_prime_speed");

@@ -4,8 +4,8 @@
 
 #include "common/Error.h"
 #include "mesh/BuildVolume.h"
-#include "mesh/MeshBuilder.h"
-#include "mesh/ModelReader.h"
+#include "mesh/build/MeshBuilder.h"
+#include "mesh/formats/ModelReader.h"
 #include "orient/OrientSettings.h"
 #include "settings/FrontendValues.h"
 #include "settings/NotHonoured.h"

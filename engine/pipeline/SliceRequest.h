@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "mesh/MeshBuilder.h"
-#include "mesh/ModelReader.h"
+#include "mesh/build/MeshBuilder.h"
+#include "mesh/formats/ModelReader.h"
 #include "settings/Resolver.h"
 #include "settings/profiles/ProfileSelection.h"
 

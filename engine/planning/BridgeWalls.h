@@ -1,5 +1,5 @@
 #pragma once
-// Printing a wall loop that crosses air (toolpaths/BridgeWalls.h), as CuraEngine 4.13's
+// Printing a wall loop that crosses air (toolpaths/walls/BridgeWalls.h), as CuraEngine 4.13's
 // LayerPlan::addWall / addWallLine print it:
 //   - the loop starts at the first vertex from its seam that is not over air;
 //   - a bridged edge is printed at bridge_wall_speed with bridge_wall_material_flow and the bridge
@@ -14,7 +14,7 @@
 
 #include "planning/LayerPlan.h"
 #include "planning/TravelRoute.h"
-#include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/core/ExtrusionPath.h"
 
 namespace mixengine {
 

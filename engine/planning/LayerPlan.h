@@ -8,7 +8,7 @@
 
 #include "geometry/Point.h"
 #include "planning/MixVector.h"
-#include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/core/ExtrusionPath.h"
 
 namespace mixengine {
 
@@ -49,7 +49,7 @@ struct PlanStep {
     /// Extrude: the colour predicted to leave the nozzle (index into PrintPlan::outlet_colors; -1 = none)
     int outlet_color = -1;
     /// Extrude (spiralize): the nozzle ends the move this far above the layer's z (0 = at the height
-    /// it is at); a spiral rises along its moves (toolpaths/Spiralize.h).
+    /// it is at); a spiral rises along its moves (toolpaths/surface/Spiralize.h).
     coord_um rise_um = 0;
 
     coord_um width_um = 0;   ///< Extrude: the line width of the path it belongs to
@@ -73,7 +73,7 @@ struct PrintPlan {
     std::vector<PlannedLayer> layers;
     std::vector<std::string> mesh_names;  ///< for ;MESH: markers
     std::vector<MixVector> mixes;         ///< filled by the mixing stage; empty in single mode
-    /// The distinct 8-bit sRGB colours predicted to leave the nozzle (mixing/OutletPrediction.h)
+    /// The distinct 8-bit sRGB colours predicted to leave the nozzle (mixing/transition/OutletPrediction.h)
     std::vector<std::array<std::uint8_t, 3>> outlet_colors;
 };
 

@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-#include "toolpaths/FeatureStyle.h"
+#include "toolpaths/core/FeatureStyle.h"
 
 namespace mixengine {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "planning/LayerPlan.h"
 #include "planning/TravelRoute.h"
-#include "toolpaths/ExtrusionPath.h"
+#include "toolpaths/core/ExtrusionPath.h"
 
 namespace mixengine {
 

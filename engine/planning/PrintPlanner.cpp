@@ -6,6 +6,7 @@
 #include <set>
 
 #include "common/ComputedAhead.h"
+#include "geometry/PolygonOps.h"
 #include "planning/Coasting.h"
 #include "planning/Cooling.h"
 #include "planning/LayerWipes.h"
@@ -14,8 +15,7 @@
 #include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 #include "planning/TravelAreas.h"
-#include "toolpaths/FeatureStyle.h"
-#include "toolpaths/PolygonOps.h"
+#include "toolpaths/core/FeatureStyle.h"
 
 namespace mixengine {
 

@@ -35,7 +35,7 @@ Paths freeSpace(const Paths& outlines, coord_um avoid_distance_um, Loops loops) 
     if (outlines.empty())
         return {};
     Paths free = offsetMiter(outlines, avoid_distance_um, loops);  // as 4.13's Comb: united, mitred
-    const ClipperLib::IntRect box = boundsOf(free);
+    const Box2 box = boundsOf(free);
     constexpr coord_um kMarginUm = 5'000;
     free.insert(free.begin(), Path{{box.left - kMarginUm, box.top - kMarginUm},
                                    {box.right + kMarginUm, box.top - kMarginUm},

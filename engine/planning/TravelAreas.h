@@ -6,9 +6,9 @@
 #include <cstddef>
 
 #include "geometry/Point.h"
+#include "geometry/PolygonOps.h"
 #include "planning/CombBoundary.h"
 #include "toolpaths/GroupToolpaths.h"
-#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 

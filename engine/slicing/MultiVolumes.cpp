@@ -4,28 +4,18 @@
 #include <numeric>
 
 #include "common/ParallelFor.h"
+#include "geometry/Clip.h"
 
 namespace mixengine {
 namespace {
 
-using ClipperLib::PolyFillType;
-
-Paths clip(const Paths& a, const Paths& b, ClipperLib::ClipType type,
-           PolyFillType fill = ClipperLib::pftNonZero) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(a, ClipperLib::ptSubject, true);
-    clipper.AddPaths(b, ClipperLib::ptClip, true);
-    Paths out;
-    clipper.Execute(type, out, fill, fill);
-    return out;
+Paths clip(const Paths& a, const Paths& b, ClipOp type, FillRule fill = FillRule::NonZero) {
+    return clipAreas(a, b, type, fill);
 }
 
 Paths grown(const Paths& area, coord_um delta_um) {
-    ClipperLib::ClipperOffset offset(1.2);  // CuraEngine's mitred offset
-    offset.AddPaths(area, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
-    Paths out;
-    offset.Execute(out, static_cast<double>(delta_um));
-    return out;
+    // CuraEngine's mitred offset (miter limit 1.2), Clipper's default arc tolerance (0.25 µm)
+    return offsetMitred(area, static_cast<double>(delta_um), OffsetEnds::ClosedPolygon, 1.2, 0.25);
 }
 
 bool cuttable(const VolumeRole& role) {
@@ -49,11 +39,11 @@ void cutWithCuttingMeshes(std::vector<std::vector<SlicedLayer>>& meshes, const s
                 if (!cuttable(roles[m]) || layer >= meshes[m].size())
                     continue;
                 Paths& carved = meshes[m][layer].outlines;
-                const Paths part = clip(cutter, carved, ClipperLib::ctIntersection);
+                const Paths part = clip(cutter, carved, ClipOp::Intersection);
                 region.insert(region.end(), part.begin(), part.end());
-                carved = clip(carved, cutter, ClipperLib::ctDifference);
+                carved = clip(carved, cutter, ClipOp::Difference);
             }
-            cutter = clip(region, {}, ClipperLib::ctUnion);
+            cutter = clip(region, {}, ClipOp::Union);
         });
     }
 }
@@ -80,9 +70,9 @@ void carveOverlaps(std::vector<std::vector<SlicedLayer>>& meshes, const std::vec
                 Paths& a = meshes[later][layer].outlines;
                 Paths& b = meshes[earlier][layer].outlines;
                 if (alternate && same_order && layer % 2 == 0)
-                    b = clip(b, a, ClipperLib::ctDifference);
+                    b = clip(b, a, ClipOp::Difference);
                 else
-                    a = clip(a, b, ClipperLib::ctDifference);
+                    a = clip(a, b, ClipOp::Difference);
             });
         }
     }
@@ -98,18 +88,18 @@ void overlapVolumes(std::vector<std::vector<SlicedLayer>>& meshes, const std::ve
         const VolumeRole& role = roles[v];
         if (!role.printsAlone() || role.overlap_um == 0)
             continue;
-        const PolyFillType fill = role.union_all ? ClipperLib::pftNonZero : ClipperLib::pftEvenOdd;
+        const FillRule fill = role.union_all ? FillRule::NonZero : FillRule::EvenOdd;
         parallelFor(meshes[v].size(), threads, [&](std::size_t layer) {
             Paths others;
             for (std::size_t o = 0; o < meshes.size(); ++o) {
                 if (o == v || !roles[o].printsAlone() || layer >= meshes[o].size() ||
                     !boxesMeet(role.bounds, roles[o].bounds, role.overlap_um))
                     continue;
-                others = clip(others, grown(meshes[o][layer].outlines, kMergeUm), ClipperLib::ctUnion, fill);
+                others = clip(others, grown(meshes[o][layer].outlines, kMergeUm), ClipOp::Union, fill);
             }
             Paths& own = meshes[v][layer].outlines;
-            const Paths reach = clip(others, grown(own, role.overlap_um / 2), ClipperLib::ctIntersection);
-            own = clip(own, reach, ClipperLib::ctUnion, fill);
+            const Paths reach = clip(others, grown(own, role.overlap_um / 2), ClipOp::Intersection);
+            own = clip(own, reach, ClipOp::Union, fill);
         });
     }
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "geometry/Clip.h"
+
 namespace mixengine {
 namespace {
 
@@ -34,7 +36,7 @@ bool containsLoop(const LoopInfo& outer, const LoopInfo& inner) {
     if (!outer.box.contains(inner.box))
         return false;
     for (const Point2& p : inner.loop->points) {
-        const int where = ClipperLib::PointInPolygon(p, outer.loop->points);
+        const int where = pointInLoop(p, outer.loop->points);
         if (where != -1)
             return where == 1;
     }
@@ -56,7 +58,7 @@ std::vector<LoopInfo> keptLoopsByArea(const std::vector<StitchedPath>& loops, do
     for (const StitchedPath& loop : loops) {
         if (loop.points.size() < 3)
             continue;
-        const double area = ClipperLib::Area(loop.points);
+        const double area = signedAreaUm2(loop.points);
         if (area == 0 || std::abs(area) <= min_area_um2)
             continue;
         infos.push_back({&loop, area, boundingBox(loop.points)});
@@ -94,26 +96,18 @@ Paths buildOutlines(const std::vector<StitchedPath>& loops, double min_area_um2)
         oriented.push_back(infos[k].loop->points);
         const bool counter_clockwise = infos[k].area_um2 > 0;
         if (counter_clockwise == static_cast<bool>(is_hole[k]))
-            ClipperLib::ReversePath(oriented.back());
+            reverseLoop(oriented.back());
     }
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(oriented, ClipperLib::ptSubject, true);
-    Paths outlines;
-    clipper.Execute(ClipperLib::ctUnion, outlines, ClipperLib::pftPositive, ClipperLib::pftPositive);
-    return outlines;
+    return clipAreas(oriented, {}, ClipOp::Union, FillRule::Positive);
 }
 
 Paths evenOddOutlines(const std::vector<StitchedPath>& loops, double min_area_um2) {
     Paths kept;
     for (const StitchedPath& loop : loops) {
-        if (std::abs(ClipperLib::Area(loop.points)) > std::max(min_area_um2, 0.0))
+        if (std::abs(signedAreaUm2(loop.points)) > std::max(min_area_um2, 0.0))
             kept.push_back(loop.points);
     }
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(kept, ClipperLib::ptSubject, true);
-    Paths outlines;
-    clipper.Execute(ClipperLib::ctUnion, outlines, ClipperLib::pftEvenOdd, ClipperLib::pftEvenOdd);
-    return outlines;
+    return clipAreas(kept, {}, ClipOp::Union, FillRule::EvenOdd);
 }
 
 }  // namespace mixengine

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "common/ParallelFor.h"
+#include "geometry/Clip.h"
 #include "geometry/Point.h"
 
 namespace mixengine {
@@ -141,12 +142,8 @@ void cleanOutlines(std::vector<SlicedLayer>& layers, const OutlineCleanupParams&
 void removeHoles(std::vector<SlicedLayer>& layers, int threads) {
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         Paths& outlines = layers[i].outlines;
-        std::erase_if(outlines, [](const Path& loop) { return !ClipperLib::Orientation(loop); });
-        ClipperLib::Clipper clipper;
-        clipper.AddPaths(outlines, ClipperLib::ptSubject, true);
-        Paths united;
-        clipper.Execute(ClipperLib::ctUnion, united, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
-        outlines = std::move(united);
+        std::erase_if(outlines, [](const Path& loop) { return !counterClockwise(loop); });
+        outlines = clipAreas(outlines, {}, ClipOp::Union, FillRule::NonZero);
     });
 }
 

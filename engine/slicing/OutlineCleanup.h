@@ -3,7 +3,7 @@
 //   - loops shorter than minimum_polygon_circumference are dropped;
 //   - every loop is simplified with meshfix_maximum_resolution / _deviation (FffProcessor). CuraEngine
 //     4.13's slicer itself uses a fixed 10 µm / 5 µm and applies these settings to each wall instead
-//     (toolpaths/Walls.h does too); simplifying the outline with them as well keeps the seam choice
+//     (toolpaths/walls/Walls.h does too); simplifying the outline with them as well keeps the seam choice
 //     and infill as CuraEngine's on the parity scenes (tests/python/test_parity.py) at the same print
 //     quality (tests/bench/quality.sh).
 // simplifyLoop follows CuraEngine 4.13's simplification: walking the loop, a vertex goes when the

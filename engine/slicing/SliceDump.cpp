@@ -7,6 +7,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "geometry/Clip.h"
+
 namespace mixengine {
 namespace {
 
@@ -14,7 +16,7 @@ nlohmann::json layerToJson(const SlicedLayer& layer, std::size_t index) {
     nlohmann::json outlines = nlohmann::json::array();
     double area_um2 = 0;
     for (const Path& path : layer.outlines) {
-        area_um2 += ClipperLib::Area(path);
+        area_um2 += signedAreaUm2(path);
         nlohmann::json points = nlohmann::json::array();
         for (const Point2& p : path)
             points.push_back({micronsToMm(p.X), micronsToMm(p.Y)});

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/ParallelFor.h"
+#include "geometry/Clip.h"
 #include "slicing/FacetBuckets.h"
 #include "slicing/PlaneCutter.h"
 
@@ -71,14 +72,8 @@ CutPlan planCuts(const std::vector<LayerZ>& layers, SlicingTolerance tolerance) 
 
 /// Inclusive: union of the two cuts; exclusive: their intersection.
 Paths combineCuts(const Paths& top, const Paths& bottom, SlicingTolerance tolerance) {
-    ClipperLib::Clipper clipper;
-    clipper.AddPaths(top, ClipperLib::ptSubject, true);
-    clipper.AddPaths(bottom, ClipperLib::ptClip, true);
-    const auto type =
-        tolerance == SlicingTolerance::Inclusive ? ClipperLib::ctUnion : ClipperLib::ctIntersection;
-    Paths result;
-    clipper.Execute(type, result, ClipperLib::pftPositive, ClipperLib::pftPositive);
-    return result;
+    const ClipOp op = tolerance == SlicingTolerance::Inclusive ? ClipOp::Union : ClipOp::Intersection;
+    return clipAreas(top, bottom, op, FillRule::Positive);
 }
 
 /// Reports progress every ~2 % of the layers, in order, from any thread.

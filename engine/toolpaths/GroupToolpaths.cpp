@@ -4,14 +4,14 @@
 #include <set>
 
 #include "common/ParallelFor.h"
-#include "toolpaths/Adhesion.h"
-#include "toolpaths/DraftShield.h"
+#include "geometry/PolygonOps.h"
 #include "toolpaths/EmptyLayers.h"
-#include "toolpaths/ExtruderSkirts.h"
 #include "toolpaths/InfillMeshes.h"
-#include "toolpaths/PolygonOps.h"
-#include "toolpaths/PrimeTower.h"
-#include "toolpaths/Support.h"
+#include "toolpaths/adhesion/Adhesion.h"
+#include "toolpaths/adhesion/DraftShield.h"
+#include "toolpaths/adhesion/ExtruderSkirts.h"
+#include "toolpaths/adhesion/PrimeTower.h"
+#include "toolpaths/support/Support.h"
 
 namespace mixengine {
 namespace {
@@ -56,7 +56,7 @@ Paths pointsOf(const std::vector<ExtrusionPath>& paths) {
     return points;
 }
 
-/// The raft's filler layers, each printing `support` (toolpaths/RaftLayout.h).
+/// The raft's filler layers, each printing `support` (toolpaths/adhesion/RaftLayout.h).
 std::vector<RaftLayer> fillerLayers(const RaftLayout& layout, const std::vector<ExtrusionPath>& support) {
     std::vector<RaftLayer> layers;
     if (support.empty())
@@ -101,8 +101,9 @@ void addRaft(const ToolpathInput& input, const RaftLayout& layout, const Paths& 
     }
 }
 
-/// The skirt or brim lines of the extruders other than the adhesion extruder (toolpaths/ExtruderSkirts.h),
-/// around the tower's own brim when it has one (CuraEngine makes that first), else around the adhesion.
+/// The skirt or brim lines of the extruders other than the adhesion extruder
+/// (toolpaths/adhesion/ExtruderSkirts.h), around the tower's own brim when it has one (CuraEngine makes that
+/// first), else around the adhesion.
 void addOtherExtruderSkirts(const ToolpathInput& input, const std::vector<std::set<int>>& per_layer,
                             const std::vector<ExtrusionPath>& tower_brim,
                             std::vector<ExtrusionPath>& adhesion) {
@@ -184,7 +185,7 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
             adhesion.models.push_back(primeTowerOutline(*input.global, input.extruders));
         AdhesionResult skirt = generateAdhesion(adhesion);
         result.adhesion = std::move(skirt.paths);
-        // As CuraEngine: the support brim after the skirt or brim (toolpaths/Support.h).
+        // As CuraEngine: the support brim after the skirt or brim (toolpaths/support/Support.h).
         result.adhesion.insert(result.adhesion.end(), support_result.brim.begin(), support_result.brim.end());
         result.adhesion.insert(result.adhesion.end(), prime_tower.brim.begin(), prime_tower.brim.end());
         result.warnings = std::move(skirt.warnings);

@@ -9,14 +9,14 @@
 //
 // Order of work: each mesh (toolpaths/MeshToolpaths.h; infill meshes inside the others,
 // toolpaths/InfillMeshes.h), then the support around all meshes
-// (toolpaths/Support.h), the prime tower and ooze shield for the extruders in use
-// (toolpaths/PrimeTower.h), the draft shield (toolpaths/DraftShield.h), and last the skirt or brim around
-// everything on layer 0 (toolpaths/Adhesion.h) with the other extruders' lines outside it
-// (toolpaths/ExtruderSkirts.h); last, the empty layers at the bottom are dropped (toolpaths/EmptyLayers.h),
-// so layer 0 of the result is the first layer that prints. With adhesion_type raft there is no
-// skirt or brim: the raft (toolpaths/Raft.h) goes under everything on that first layer, the
-// first layer's support moves to the raft's filler layers (toolpaths/Support.h) and the model's
-// heights are lifted (toolpaths/RaftLayout.h). `threads` is used inside every step; the result
+// (toolpaths/support/Support.h), the prime tower and ooze shield for the extruders in use
+// (toolpaths/adhesion/PrimeTower.h), the draft shield (toolpaths/adhesion/DraftShield.h), and last the skirt
+// or brim around everything on layer 0 (toolpaths/adhesion/Adhesion.h) with the other extruders' lines
+// outside it (toolpaths/adhesion/ExtruderSkirts.h); last, the empty layers at the bottom are dropped
+// (toolpaths/EmptyLayers.h), so layer 0 of the result is the first layer that prints. With adhesion_type raft
+// there is no skirt or brim: the raft (toolpaths/adhesion/Raft.h) goes under everything on that first layer,
+// the first layer's support moves to the raft's filler layers (toolpaths/support/Support.h) and the model's
+// heights are lifted (toolpaths/adhesion/RaftLayout.h). `threads` is used inside every step; the result
 // does not depend on it.
 #include <functional>
 #include <optional>
@@ -28,7 +28,7 @@
 #include "slicing/MultiVolumes.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/MeshToolpaths.h"
-#include "toolpaths/Raft.h"
+#include "toolpaths/adhesion/Raft.h"
 
 namespace mixengine {
 
@@ -40,7 +40,8 @@ struct ToolpathMeshInput {
     /// middle of its outlines' bounds.
     std::optional<Point2> middle_um;
     /// A model, or a modifier of the others (infill mesh, support mesh, support blocker;
-    /// toolpaths/InfillMeshes.h, toolpaths/Support.h). Cutting meshes arrive carved and print as models.
+    /// toolpaths/InfillMeshes.h, toolpaths/support/Support.h). Cutting meshes arrive carved and print as
+    /// models.
     VolumeRole role;
 };
 
@@ -75,13 +76,13 @@ struct GroupToolpaths {
     std::vector<ExtrusionPath> adhesion;              ///< skirt or brim, printed first on layer 0
     /// [layer]; the prime tower's rings for every extruder (ExtrusionPath::extruder), printed by an
     /// extruder right after it becomes active on that layer, and by prime_tower_outermost on every
-    /// layer up to prime_tower_last_forced_layer (toolpaths/PrimeTower.h). Empty without a tower.
+    /// layer up to prime_tower_last_forced_layer (toolpaths/adhesion/PrimeTower.h). Empty without a tower.
     std::vector<std::vector<ExtrusionPath>> prime_tower;
     int prime_tower_outermost = -1;
     int prime_tower_last_forced_layer = -1;
     Point2 prime_tower_middle{0, 0};  ///< where the wipe after a switch goes (prime_tower_wipe_enabled)
     std::vector<std::vector<ExtrusionPath>> ooze_shield;  ///< [layer]; empty without an ooze shield
-    /// [layer] the draft shield (toolpaths/DraftShield.h); empty lists without one.
+    /// [layer] the draft shield (toolpaths/adhesion/DraftShield.h); empty lists without one.
     std::vector<std::vector<ExtrusionPath>> draft_shield;
     /// The layers printed below the model, in print order with CuraEngine's negative numbers: the
     /// raft's base, interface and surface layers, then its filler layers when the first layer has

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "common/ParallelFor.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

@@ -7,7 +7,7 @@
 //     lose its whole outline from the infill they print themselves (their walls, skin, perimeter
 //     gaps and combing stay as they were). Inside, the infill mesh prints walls, skin and infill
 //     with its own settings (toolpaths/MeshToolpaths.h); alone it prints nothing;
-//   - support meshes and support blockers print nothing here (toolpaths/Support.h uses them): they
+//   - support meshes and support blockers print nothing here (toolpaths/support/Support.h uses them): they
 //     get empty layers, so that every mesh keeps its index (;MESH: order, mixing);
 //   - every other mesh (cutting meshes, already carved, included) prints as usual.
 // MeshToolpaths::sliced points at the input's layers for meshes that print alone, and is null for

@@ -5,22 +5,22 @@
 #include <optional>
 
 #include "common/ParallelFor.h"
-#include "toolpaths/BridgeSkin.h"
-#include "toolpaths/BridgeWalls.h"
-#include "toolpaths/FeatureStyle.h"
-#include "toolpaths/FuzzySkin.h"
-#include "toolpaths/InfillLayers.h"
-#include "toolpaths/InfillPatterns.h"
-#include "toolpaths/Ironing.h"
-#include "toolpaths/MeshInfill.h"
-#include "toolpaths/OutlineOffsets.h"
-#include "toolpaths/PolygonOps.h"
-#include "toolpaths/Seam.h"
-#include "toolpaths/Skin.h"
-#include "toolpaths/SkinPaths.h"
-#include "toolpaths/Spiralize.h"
-#include "toolpaths/WallOverlap.h"
-#include "toolpaths/Walls.h"
+#include "geometry/PolygonOps.h"
+#include "toolpaths/core/FeatureStyle.h"
+#include "toolpaths/infill/InfillLayers.h"
+#include "toolpaths/infill/InfillPatterns.h"
+#include "toolpaths/infill/MeshInfill.h"
+#include "toolpaths/skin/BridgeSkin.h"
+#include "toolpaths/skin/Skin.h"
+#include "toolpaths/skin/SkinPaths.h"
+#include "toolpaths/surface/FuzzySkin.h"
+#include "toolpaths/surface/Ironing.h"
+#include "toolpaths/surface/Spiralize.h"
+#include "toolpaths/walls/BridgeWalls.h"
+#include "toolpaths/walls/OutlineOffsets.h"
+#include "toolpaths/walls/Seam.h"
+#include "toolpaths/walls/WallOverlap.h"
+#include "toolpaths/walls/Walls.h"
 
 namespace mixengine {
 namespace {
@@ -38,21 +38,21 @@ double angleFor(const Settings& s, std::string_view key, int layer, const std::v
 }
 
 Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
-    ClipperLib::IntRect box{0, 0, 0, 0};
+    Box2 box{0, 0, 0, 0};
     bool any = false;
     for (const SlicedLayer& layer : layers) {
         if (layer.outlines.empty())
             continue;
-        const ClipperLib::IntRect b = boundsOf(layer.outlines);
-        box = any ? ClipperLib::IntRect{std::min(box.left, b.left), std::min(box.top, b.top),
-                                        std::max(box.right, b.right), std::max(box.bottom, b.bottom)}
+        const Box2 b = boundsOf(layer.outlines);
+        box = any ? Box2{std::min(box.left, b.left), std::min(box.top, b.top), std::max(box.right, b.right),
+                         std::max(box.bottom, b.bottom)}
                   : b;
         any = true;
     }
     return {(box.left + box.right) / 2, (box.top + box.bottom) / 2};
 }
 
-/// The skin's reference walls and the removal widths left over (toolpaths/Skin.h).
+/// The skin's reference walls and the removal widths left over (toolpaths/skin/Skin.h).
 struct SkinReferences {
     SkinReference top, bottom;
     int roofing_wall = -1;  ///< min(2, wall_line_count) with roofing, else −1 (none)
@@ -91,7 +91,7 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     if (layer % 2 == 1 && s.flag("alternate_extra_perimeter"))
         ++p.wall_count;  // one wall more on every other layer
     if (layer % 2 == 1 && spiralizeOn(s) && layer < spiralBottomLayers(s))
-        p.wall_count += 5;  // spiralize: a watertight bottom (toolpaths/Spiralize.h)
+        p.wall_count += 5;  // spiralize: a watertight bottom (toolpaths/surface/Spiralize.h)
     p.outer_width_um = styles.wall_0.width_um;
     p.inner_width_um = styles.wall_x.width_um;
     p.outer_inset_um = s.has("wall_0_inset") ? s.lengthMicrons("wall_0_inset") : 0;
@@ -112,7 +112,7 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     return p;
 }
 
-/// travel_compensate_overlapping_walls_0_enabled / _x_enabled (toolpaths/WallOverlap.h): less flow
+/// travel_compensate_overlapping_walls_0_enabled / _x_enabled (toolpaths/walls/WallOverlap.h): less flow
 /// where the outer walls (the inner walls, all levels together) run closer than their width to another
 /// piece of them, wall_min_flow the least; as CuraEngine 4.13, the inner walls at 1 µm less than their
 /// width, so that neighbouring walls, one width apart, do not count.
@@ -176,7 +176,7 @@ SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const Me
     return p;
 }
 
-/// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/OutlineOffsets.h).
+/// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/walls/OutlineOffsets.h).
 Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
     auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
     const coord_um xy = length(layer == 0 ? "xy_offset_layer_0" : "xy_offset");
@@ -254,7 +254,7 @@ int highestFilledLayer(const std::vector<SlicedLayer>& layers) {
     return -1;
 }
 
-/// The ironing of layer `i` (toolpaths/Ironing.h); none unless ironing_enabled.
+/// The ironing of layer `i` (toolpaths/surface/Ironing.h); none unless ironing_enabled.
 std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const Settings& s, std::size_t i) {
     if (!s.has("ironing_enabled") || !s.boolean("ironing_enabled"))
         return {};
@@ -273,7 +273,7 @@ std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const
 }
 
 /// The spiral's wall loops made fuzzy, as CuraEngine 4.13 spirals the fuzzy outer wall
-/// (toolpaths/FuzzySkin.h; seeds apart from the walls').
+/// (toolpaths/surface/FuzzySkin.h; seeds apart from the walls').
 Paths fuzzyLoops(Paths loops, const Settings& s, int layer) {
     const FuzzySkinParams fuzz = fuzzySkinParams(s, layer);
     if (!fuzz.enabled)
@@ -284,7 +284,7 @@ Paths fuzzyLoops(Paths loops, const Settings& s, int layer) {
 }
 
 /// Spiralize from initial_bottom_layers on: no skin, infill or perimeter gaps, and the spiral
-/// (toolpaths/Spiralize.h) with the outer walls.
+/// (toolpaths/surface/Spiralize.h) with the outer walls.
 void addSpirals(const std::vector<Paths>& spiral_loops, const Settings& s, const Point2& centre,
                 std::vector<MeshLayerGroups>& result) {
     constexpr std::uint32_t kSpiralSequence = 0xFFFF'FFFFU;  // apart from the wall sequences
@@ -323,7 +323,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
         const Paths outlines = adjustedOutlines(layers[i].outlines, settings, layer);
         const WallParams params = wallParams(settings, meshStyles(settings, layer), refs, layer);
         WallResult walls = generateWalls(outlines, params);
-        if (spiralize) {  // the first part's outer wall becomes the spiral (toolpaths/Spiralize.h)
+        if (spiralize) {  // the first part's outer wall becomes the spiral (toolpaths/surface/Spiralize.h)
             SpiralParts parts = splitSpiralPart(outlines);
             spiral_loops[i] = fuzzyLoops(spiralWallLoops(parts.first, params), settings, layer);
             if (layer >= spiralBottomLayers(settings))

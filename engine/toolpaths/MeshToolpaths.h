@@ -1,24 +1,24 @@
 #pragma once
-// Toolpaths of one mesh on every layer: walls (toolpaths/Walls.h, seams by toolpaths/Seam.h),
-// top/bottom skin and roofing (toolpaths/Skin.h) and sparse infill (toolpaths/InfillPatterns.h),
+// Toolpaths of one mesh on every layer: walls (toolpaths/walls/Walls.h, seams by toolpaths/walls/Seam.h),
+// top/bottom skin and roofing (toolpaths/skin/Skin.h) and sparse infill (toolpaths/infill/InfillPatterns.h),
 // from the mesh's outlines and its resolved settings (Cura's keys and meanings):
 //   walls   — wall_line_count, wall_line_width_0/_x, wall_0_inset, z_seam_*; with
-//             optimize_wall_printing_order each outline's loops are one sequence (toolpaths/Walls.h);
+//             optimize_wall_printing_order each outline's loops are one sequence (toolpaths/walls/Walls.h);
 //   skin    — top_layers, bottom_layers, initial_bottom_layers, skin removal / expansion widths;
 //             per skin part skin_outline_count loops of skin_line_width, inside them the roofing
 //             (roofing_layer_count: roofing_pattern at roofing_angles[layer % n], default 45°,
 //             135°, roofing_monotonic) and the skin (top_bottom_pattern, on layer 0
 //             top_bottom_pattern_0, at skin_angles[layer % n], default 45°, 135°, reaching
 //             skin_overlap_mm beyond its area, skin_monotonic), and with fill_perimeter_gaps the
-//             gaps of concentric skin (toolpaths/SkinPaths.h);
-//   infill  — the infill area arranged by toolpaths/InfillLayers.h (infill as support, gradual
-//             infill, combined layers) and printed by toolpaths/MeshInfill.h (infill_pattern at
+//             gaps of concentric skin (toolpaths/skin/SkinPaths.h);
+//   infill  — the infill area arranged by toolpaths/infill/InfillLayers.h (infill as support, gradual
+//             infill, combined layers) and printed by toolpaths/infill/MeshInfill.h (infill_pattern at
 //             infill_line_distance, its origin at the mesh's middle moved by infill_offset_x/_y);
 //             none when infill_line_distance is 0;
-//   ironing — with ironing_enabled, the layer's top surface (toolpaths/Ironing.h), last.
+//   ironing — with ironing_enabled, the layer's top surface (toolpaths/surface/Ironing.h), last.
 // With magic_mesh_surface_mode "surface" the outlines (and open pieces) are printed once along
 // themselves as outer wall, and nothing else.
-// Widths, speeds, flows and extruders per feature and layer: toolpaths/FeatureStyle.h.
+// Widths, speeds, flows and extruders per feature and layer: toolpaths/core/FeatureStyle.h.
 // Layers are processed in parallel (common/ParallelFor.h); the result does not depend on `threads`.
 #include <optional>
 #include <vector>
@@ -27,8 +27,8 @@
 
 #include "settings/Settings.h"
 #include "slicing/Slicer.h"
-#include "toolpaths/ExtrusionPath.h"
-#include "toolpaths/Skin.h"
+#include "toolpaths/core/ExtrusionPath.h"
+#include "toolpaths/skin/Skin.h"
 
 namespace mixengine {
 

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "geometry/Matrix3.h"
-#include "mesh/MeshBuilder.h"
-#include "mesh/ModelReader.h"
+#include "mesh/build/MeshBuilder.h"
+#include "mesh/formats/ModelReader.h"
 
 namespace mixengine::fuzz {
 

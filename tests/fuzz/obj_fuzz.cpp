@@ -1,7 +1,7 @@
 // libFuzzer target: the Wavefront OBJ reader and mesh building.
 #include "FuzzSupport.h"
 #include "common/Error.h"
-#include "mesh/ObjReader.h"
+#include "mesh/formats/ObjReader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static mixengine::fuzz::MemoryFile file("fuzz.obj");

@@ -1,7 +1,7 @@
 // libFuzzer target: the STL reader (binary/ASCII detection, both parsers) and mesh building.
 #include "FuzzSupport.h"
 #include "common/Error.h"
-#include "mesh/StlReader.h"
+#include "mesh/formats/StlReader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static mixengine::fuzz::MemoryFile file("fuzz.stl");

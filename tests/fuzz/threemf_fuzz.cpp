@@ -3,7 +3,7 @@
 // stops the run.
 #include "FuzzSupport.h"
 #include "common/Error.h"
-#include "mesh/ThreeMfReader.h"
+#include "mesh/formats/ThreeMfReader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static mixengine::fuzz::MemoryFile file("fuzz.3mf");

@@ -8,7 +8,7 @@ pushed through in units of one tank (volume_mm3 / stages), tank k (1..N) follows
 and the nozzle gives out c_N. This module integrates that system numerically, move by move, with the
 classical fourth-order Runge-Kutta method in steps of at most STEP_TAU (plus the integral of c_N, for the
 average mix that leaves during a move). It shares nothing with the engine's closed form
-(engine/mixing/ChamberModel.cpp); test_chamber.py checks it against the analytic step response
+(engine/mixing/chamber/ChamberModel.cpp); test_chamber.py checks it against the analytic step response
 e^-τ (1 + τ + τ²/2) of three tanks and the mean residence volume of a ramp.
 
 Only net new filament moves the melt: per channel a retraction (a negative amount) adds to that channel's

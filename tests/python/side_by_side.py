@@ -337,7 +337,7 @@ def machine(overrides=None):
 
 def raft_lift_mm(overrides=None):
     """How far both engines raise the model over a raft (adhesion_type raft; MixEngine's
-    toolpaths/RaftLayout.h, CuraEngine's raft.cpp): the raft's thickness + raft_airgap - layer_0_z_overlap
+    toolpaths/adhesion/RaftLayout.h, CuraEngine's raft.cpp): the raft's thickness + raft_airgap - layer_0_z_overlap
     (layer 0 sits that overlap higher); 0 without a raft."""
     g, e = resolve(overrides)
     if g.get("adhesion_type") != "raft":

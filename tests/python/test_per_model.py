@@ -60,7 +60,7 @@ SCENES = {  # name -> ([(part, per-model values)], global overrides)
 }
 SKIRT_AROUND_SUPPORT = {"tee_support", "anti_overhang", "support_mesh_in_place", "support_mesh_drop_down",
                         "support_mesh_alone"}
-SKIRT_GAP = "CuraEngine's skirt around support on the plate is longer (toolpaths/Adhesion.h, not issue 16)"
+SKIRT_GAP = "CuraEngine's skirt around support on the plate is longer (toolpaths/adhesion/Adhesion.h, not issue 16)"
 FILAMENT_TOLERANCE = 0.03
 FEATURE_TOLERANCE = 0.08
 FEATURE_FLOOR_MM = 15.0

@@ -2,8 +2,8 @@
 // building the indexed mesh. Prints wall and CPU time; no threshold. Its correctness is tested in
 // tests/unit/mesh/mesh_large_stl_test.cpp.
 #include "bench/micro/Stopwatch.h"
-#include "mesh/MeshBuilder.h"
-#include "mesh/ModelReader.h"
+#include "mesh/build/MeshBuilder.h"
+#include "mesh/formats/ModelReader.h"
 #include "unit/mesh/MeshTestFiles.h"
 
 int main() {

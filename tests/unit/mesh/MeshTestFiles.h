@@ -16,7 +16,7 @@
 #include <stdlib.h>
 
 #include "common/Error.h"
-#include "mesh/ModelReader.h"
+#include "mesh/formats/ModelReader.h"
 
 namespace mixengine::test {
 

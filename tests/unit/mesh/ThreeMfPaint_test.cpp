@@ -1,5 +1,5 @@
-// PrusaSlicer/OrcaSlicer painted facets (mesh/ThreeMfPaint.h): the attribute's encoding.
-#include "mesh/ThreeMfPaint.h"
+// PrusaSlicer/OrcaSlicer painted facets (mesh/formats/ThreeMfPaint.h): the attribute's encoding.
+#include "mesh/formats/ThreeMfPaint.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "mesh/MeshBuilder.h"
+#include "mesh/build/MeshBuilder.h"
 #include "unit/mesh/MeshTestFiles.h"
 
 namespace mixengine {

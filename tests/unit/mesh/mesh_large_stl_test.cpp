@@ -2,8 +2,8 @@
 // speed is measured, not asserted: tests/bench/micro/mesh_load_bench.cpp (tests/bench/micro.sh).
 #include <gtest/gtest.h>
 
-#include "mesh/MeshBuilder.h"
-#include "mesh/ModelReader.h"
+#include "mesh/build/MeshBuilder.h"
+#include "mesh/formats/ModelReader.h"
 #include "unit/mesh/MeshTestFiles.h"
 
 namespace mixengine {

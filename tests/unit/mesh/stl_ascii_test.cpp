@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "mesh/ModelReader.h"
+#include "mesh/formats/ModelReader.h"
 #include "unit/mesh/MeshTestFiles.h"
 
 namespace mixengine {

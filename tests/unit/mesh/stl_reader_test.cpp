@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "mesh/ModelReader.h"
+#include "mesh/formats/ModelReader.h"
 #include "unit/mesh/MeshTestFiles.h"
 
 namespace mixengine {

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 #include <zip.h>
 
-#include "mesh/ModelReader.h"
+#include "mesh/formats/ModelReader.h"
 #include "unit/mesh/MeshTestFiles.h"
 
 namespace mixengine {

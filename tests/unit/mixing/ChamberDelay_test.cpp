@@ -1,6 +1,6 @@
-// Mixing-chamber delay (mixing/ChamberDelay.h): the schedule shifted earlier by the chamber volume
+// Mixing-chamber delay (mixing/chamber/ChamberDelay.h): the schedule shifted earlier by the chamber volume
 // along the cumulative extruded volume.
-#include "mixing/ChamberDelay.h"
+#include "mixing/chamber/ChamberDelay.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// The chamber model (mixing/ChamberModel.h) against the analytic responses of stirred tanks in series,
-// written here from the textbook formulas (not from the engine's closed form).
-#include "mixing/ChamberModel.h"
+// The chamber model (mixing/chamber/ChamberModel.h) against the analytic responses of stirred tanks in
+// series, written here from the textbook formulas (not from the engine's closed form).
+#include "mixing/chamber/ChamberModel.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// The colour science of colour mode (mixing/ColorSpace.h, KubelkaMunk.h, ColorSolver.h):
+// The colour science of colour mode (mixing/color/ColorSpace.h, KubelkaMunk.h, ColorSolver.h):
 // Little CMS's CIEDE2000 on Sharma's published pairs, known answers of the solver (a channel's
 // own colour is 100 % of it, a predicted mix solves back to itself) and of the pigment model
 // (yellow + blue is green, white lightens, black darkens).
-#include "mixing/ColorSolver.h"
+#include "mixing/color/ColorSolver.h"
 
 #include <gtest/gtest.h>
 

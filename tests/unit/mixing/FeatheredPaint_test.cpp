@@ -1,14 +1,14 @@
-// Feathered paint (mixing/FeatheredPaint.h): a 20 × 20 × 10 mm box whose faces are split at x = 0, the
+// Feathered paint (mixing/fields/FeatheredPaint.h): a 20 × 20 × 10 mm box whose faces are split at x = 0, the
 // left half painted region 0 (filament A), the right half region 1 (B), paint reaching the whole box. The
 // boundary is the plane x = 0, so the asked share of B at x is the ramp (x + blend/2) / blend.
-#include "mixing/FeatheredPaint.h"
+#include "mixing/fields/FeatheredPaint.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "common/Error.h"
-#include "mixing/PaintSchedule.h"
+#include "mixing/fields/PaintSchedule.h"
 
 namespace mixengine {
 namespace {

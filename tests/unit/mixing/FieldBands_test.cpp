@@ -1,5 +1,5 @@
-// Gradients along x, y and radially cut into bands (mixing/FieldBands.h).
-#include "mixing/FieldBands.h"
+// Gradients along x, y and radially cut into bands (mixing/fields/FieldBands.h).
+#include "mixing/fields/FieldBands.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Commands that lead the chamber (mixing/LeadCommands.h): its forward pass against the chamber model
-// push by push, and the solution against what a field asks for.
-#include "mixing/LeadCommands.h"
+// Commands that lead the chamber (mixing/transition/LeadCommands.h): its forward pass against the chamber
+// model push by push, and the solution against what a field asks for.
+#include "mixing/transition/LeadCommands.h"
 
 #include <gtest/gtest.h>
 

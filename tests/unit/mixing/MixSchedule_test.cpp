@@ -1,6 +1,6 @@
-// The mix schedule (mixing/MixSchedule.h): seed 001's three cases for its four printed examples,
+// The mix schedule (mixing/fields/MixSchedule.h): seed 001's three cases for its four printed examples,
 // the hard switch, multi-stop gradients, mm units and the fixed ratio of dual mode.
-#include "mixing/MixSchedule.h"
+#include "mixing/fields/MixSchedule.h"
 
 #include <gtest/gtest.h>
 

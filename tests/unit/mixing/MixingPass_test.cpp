@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "common/Error.h"
-#include "mixing/KubelkaMunk.h"
+#include "mixing/color/KubelkaMunk.h"
 
 namespace mixengine {
 namespace {

@@ -1,7 +1,7 @@
-// The mixing settings (mixing/MixingSettings.h): defaults without the definition file, validation
+// The mixing settings (mixing/setup/MixingSettings.h): defaults without the definition file, validation
 // with one-line errors naming the setting, the formats of ratios and stops, and seed 001's aliases
 // (settings/FrontendValues.h, withCanonicalKeys).
-#include "mixing/MixingSettings.h"
+#include "mixing/setup/MixingSettings.h"
 
 #include <gtest/gtest.h>
 

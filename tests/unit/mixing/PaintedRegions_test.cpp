@@ -1,12 +1,12 @@
-// Painted regions (mixing/PaintedRegions.h) and cutting moves where the region changes
-// (mixing/RegionSplit.h), on a 20 mm cube whose faces are painted by side.
-#include "mixing/PaintedRegions.h"
+// Painted regions (mixing/fields/PaintedRegions.h) and cutting moves where the region changes
+// (mixing/fields/RegionSplit.h), on a 20 mm cube whose faces are painted by side.
+#include "mixing/fields/PaintedRegions.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "mixing/RegionSplit.h"
+#include "mixing/fields/RegionSplit.h"
 
 namespace mixengine {
 namespace {

@@ -1,5 +1,5 @@
-// The firmware resolution (mixing/Quantiser.h): whole steps that add up to exactly the resolution.
-#include "mixing/Quantiser.h"
+// The firmware resolution (mixing/setup/Quantiser.h): whole steps that add up to exactly the resolution.
+#include "mixing/setup/Quantiser.h"
 
 #include <gtest/gtest.h>
 

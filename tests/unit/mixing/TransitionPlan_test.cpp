@@ -1,7 +1,7 @@
-// Transition planning (mixing/LayerOrder.h, mixing/TransitionPlan.h, mixing/PurgeTower.h) on small
-// hand-made plans: two regions per layer, A on the left and B on the right, each with a hidden fill
-// line and a visible outer-wall line.
-#include "mixing/TransitionPlan.h"
+// Transition planning (mixing/transition/LayerOrder.h, mixing/transition/TransitionPlan.h,
+// mixing/transition/PurgeTower.h) on small hand-made plans: two regions per layer, A on the left and B on the
+// right, each with a hidden fill line and a visible outer-wall line.
+#include "mixing/transition/TransitionPlan.h"
 
 #include <gtest/gtest.h>
 

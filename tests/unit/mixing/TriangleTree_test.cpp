@@ -1,11 +1,11 @@
-// The nearest-triangle tree (mixing/TriangleTree.h) against a scan of every triangle.
-#include "mixing/TriangleTree.h"
+// The nearest-triangle tree (mixing/fields/TriangleTree.h) against a scan of every triangle.
+#include "mixing/fields/TriangleTree.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "mixing/PaintedRegions.h"
+#include "mixing/fields/PaintedRegions.h"
 
 namespace mixengine {
 namespace {

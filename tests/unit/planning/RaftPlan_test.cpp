@@ -7,8 +7,8 @@
 #include <set>
 
 #include "../toolpaths/ToolpathTestSupport.h"
+#include "geometry/PolygonOps.h"
 #include "planning/PrintPlanner.h"
-#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 namespace {

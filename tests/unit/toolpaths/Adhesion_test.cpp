@@ -1,12 +1,12 @@
-// Skirt and brim (toolpaths/Adhesion.h) around squares, with fdmprinter's resolved settings.
-#include "toolpaths/Adhesion.h"
+// Skirt and brim (toolpaths/adhesion/Adhesion.h) around squares, with fdmprinter's resolved settings.
+#include "toolpaths/adhesion/Adhesion.h"
 
 #include <gtest/gtest.h>
 
 #include <numbers>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {
@@ -87,7 +87,7 @@ TEST(Adhesion, SkirtGoesAroundTheHullOfEverything) {
 
 TEST(Adhesion, NoneAndRaft) {
     EXPECT_TRUE(adhesion({{"adhesion_type", "none"}}, {square(0, 0, 10'000)}).paths.empty());
-    // A raft is no skirt: toolpaths/Raft.h builds it, nothing here and no warning.
+    // A raft is no skirt: toolpaths/adhesion/Raft.h builds it, nothing here and no warning.
     const AdhesionResult raft = adhesion({{"adhesion_type", "raft"}}, {square(0, 0, 10'000)});
     EXPECT_TRUE(raft.paths.empty());
     EXPECT_TRUE(raft.warnings.empty());

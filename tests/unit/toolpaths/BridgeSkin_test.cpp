@@ -1,6 +1,6 @@
-// Bridged skin (toolpaths/BridgeSkin.h): which skin parts are bridges and along which angle their
+// Bridged skin (toolpaths/skin/BridgeSkin.h): which skin parts are bridges and along which angle their
 // lines run, as CuraEngine 4.13's bridge.cpp decides.
-#include "toolpaths/BridgeSkin.h"
+#include "toolpaths/skin/BridgeSkin.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Bridged walls (toolpaths/BridgeWalls.h): the air mask and the wall split where it crosses air.
-#include "toolpaths/BridgeWalls.h"
+// Bridged walls (toolpaths/walls/BridgeWalls.h): the air mask and the wall split where it crosses air.
+#include "toolpaths/walls/BridgeWalls.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Connected infill lines (toolpaths/ConnectedLines.h): lines joined along the area's edge.
-#include "toolpaths/ConnectedLines.h"
+// Connected infill lines (toolpaths/infill/ConnectedLines.h): lines joined along the area's edge.
+#include "toolpaths/infill/ConnectedLines.h"
 
 #include <gtest/gtest.h>
 

@@ -1,13 +1,13 @@
-// Draft shield (toolpaths/DraftShield.h): its outline, layers and style, and the skirt around it.
-#include "toolpaths/DraftShield.h"
+// Draft shield (toolpaths/adhesion/DraftShield.h): its outline, layers and style, and the skirt around it.
+#include "toolpaths/adhesion/DraftShield.h"
 
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/Adhesion.h"
-#include "toolpaths/PolygonOps.h"
-#include "toolpaths/Support.h"
-#include "toolpaths/TreePointOps.h"
+#include "geometry/PointQueries.h"
+#include "geometry/PolygonOps.h"
+#include "toolpaths/adhesion/Adhesion.h"
+#include "toolpaths/support/Support.h"
 
 namespace mixengine {
 namespace {

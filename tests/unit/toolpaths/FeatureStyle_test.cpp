@@ -1,5 +1,5 @@
-// Per-feature width, speed, flow and extruder per layer (toolpaths/FeatureStyle.h).
-#include "toolpaths/FeatureStyle.h"
+// Per-feature width, speed, flow and extruder per layer (toolpaths/core/FeatureStyle.h).
+#include "toolpaths/core/FeatureStyle.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
-// Infill arrangement (toolpaths/InfillLayers.h): infill as support, gradual infill, combined layers.
-#include "toolpaths/InfillLayers.h"
+// Infill arrangement (toolpaths/infill/InfillLayers.h): infill as support, gradual infill, combined layers.
+#include "toolpaths/infill/InfillLayers.h"
 
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

@@ -1,5 +1,5 @@
-// Infill multiplier (toolpaths/InfillMultiplier.h): every line as N parallel lines.
-#include "toolpaths/InfillMultiplier.h"
+// Infill multiplier (toolpaths/infill/InfillMultiplier.h): every line as N parallel lines.
+#include "toolpaths/infill/InfillMultiplier.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Infill patterns (toolpaths/InfillPatterns.h): amounts and shapes on a square.
-#include "toolpaths/InfillPatterns.h"
+// Infill patterns (toolpaths/infill/InfillPatterns.h): amounts and shapes on a square.
+#include "toolpaths/infill/InfillPatterns.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
-// Ironing (toolpaths/Ironing.h): the top surface, the inset per pattern, the lines' spacing and
+// Ironing (toolpaths/surface/Ironing.h): the top surface, the inset per pattern, the lines' spacing and
 // angle, monotonic order, and where MeshToolpaths irons (every top surface or the highest only).
-#include "toolpaths/Ironing.h"
+#include "toolpaths/surface/Ironing.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "ToolpathTestSupport.h"
+#include "geometry/PolygonOps.h"
 #include "toolpaths/MeshToolpaths.h"
-#include "toolpaths/PolygonOps.h"
 
 namespace mixengine {
 namespace {

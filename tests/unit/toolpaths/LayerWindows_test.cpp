@@ -1,10 +1,10 @@
-// Sliding-window intersections and unions (toolpaths/LayerWindows.h) against the direct definition.
-#include "toolpaths/LayerWindows.h"
+// Sliding-window intersections and unions (toolpaths/core/LayerWindows.h) against the direct definition.
+#include "toolpaths/core/LayerWindows.h"
 
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

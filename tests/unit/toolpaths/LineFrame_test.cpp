@@ -1,5 +1,5 @@
-// The line frame of line and zig-zag infill (toolpaths/LineFrame.h) and its grid arithmetic.
-#include "toolpaths/LineFrame.h"
+// The line frame of line and zig-zag infill (toolpaths/infill/LineFrame.h) and its grid arithmetic.
+#include "toolpaths/infill/LineFrame.h"
 
 #include <gtest/gtest.h>
 

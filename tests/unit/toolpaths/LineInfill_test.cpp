@@ -1,5 +1,5 @@
-// Line infill (toolpaths/LineInfill.h): parallel lines on the plate's grid, clipped to the area.
-#include "toolpaths/LineInfill.h"
+// Line infill (toolpaths/infill/LineInfill.h): parallel lines on the plate's grid, clipped to the area.
+#include "toolpaths/infill/LineInfill.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// A mesh's infill on a layer (toolpaths/MeshInfill.h): densities, thickness, settings.
-#include "toolpaths/MeshInfill.h"
+// A mesh's infill on a layer (toolpaths/infill/MeshInfill.h): densities, thickness, settings.
+#include "toolpaths/infill/MeshInfill.h"
 
 #include <gtest/gtest.h>
 

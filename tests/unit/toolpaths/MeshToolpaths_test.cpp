@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

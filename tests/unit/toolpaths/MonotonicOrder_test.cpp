@@ -1,5 +1,5 @@
-// Monotonic line order (toolpaths/MonotonicOrder.h): runs of adjacent lines across the area.
-#include "toolpaths/MonotonicOrder.h"
+// Monotonic line order (toolpaths/skin/MonotonicOrder.h): runs of adjacent lines across the area.
+#include "toolpaths/skin/MonotonicOrder.h"
 
 #include <gtest/gtest.h>
 

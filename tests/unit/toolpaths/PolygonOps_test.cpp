@@ -1,5 +1,5 @@
-// Area helpers (toolpaths/PolygonOps.h) on squares and strips.
-#include "toolpaths/PolygonOps.h"
+// Area helpers (geometry/PolygonOps.h) on squares and strips.
+#include "geometry/PolygonOps.h"
 
 #include <gtest/gtest.h>
 

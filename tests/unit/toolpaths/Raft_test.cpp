@@ -1,8 +1,8 @@
-// The raft (toolpaths/RaftLayout.h, toolpaths/Raft.h): its layers' numbers and heights, the model's
-// lift, the outline and the lines of each raft layer, with the Ender-3's raft values (the numbers
+// The raft (toolpaths/adhesion/RaftLayout.h, toolpaths/adhesion/Raft.h): its layers' numbers and heights, the
+// model's lift, the outline and the lines of each raft layer, with the Ender-3's raft values (the numbers
 // CuraEngine 4.13 prints for them: layers −6 … −3 at z 0.24, 0.54, 0.74, 0.94 mm, filler layers at
 // 1.115 and 1.29 mm, the model's layer 0 at 1.44 mm and layer 1 at 1.49 mm).
-#include "toolpaths/Raft.h"
+#include "toolpaths/adhesion/Raft.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <set>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

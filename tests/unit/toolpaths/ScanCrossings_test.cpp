@@ -1,5 +1,5 @@
-// Scanline crossings (toolpaths/ScanCrossings.h): where vertical lines cross polygon edges.
-#include "toolpaths/ScanCrossings.h"
+// Scanline crossings (toolpaths/infill/ScanCrossings.h): where vertical lines cross polygon edges.
+#include "toolpaths/infill/ScanCrossings.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-// Seam placement (toolpaths/Seam.h): which vertex a wall loop starts at.
-#include "toolpaths/Seam.h"
+// Seam placement (toolpaths/walls/Seam.h): which vertex a wall loop starts at.
+#include "toolpaths/walls/Seam.h"
 
 #include <gtest/gtest.h>
 

@@ -1,16 +1,16 @@
-// Issue 15's shape modes in the toolpath stage: spiralize (toolpaths/Spiralize.h), fuzzy skin
-// (toolpaths/FuzzySkin.h), make overhang printable (toolpaths/ConicalOverhang.h) and mold
-// (toolpaths/Mold.h), on hand-made outlines with figures worked out by hand.
+// Issue 15's shape modes in the toolpath stage: spiralize (toolpaths/surface/Spiralize.h), fuzzy skin
+// (toolpaths/surface/FuzzySkin.h), make overhang printable (toolpaths/surface/ConicalOverhang.h) and mold
+// (toolpaths/surface/Mold.h), on hand-made outlines with figures worked out by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/ConicalOverhang.h"
-#include "toolpaths/FuzzySkin.h"
-#include "toolpaths/Mold.h"
-#include "toolpaths/PolygonOps.h"
-#include "toolpaths/Spiralize.h"
+#include "geometry/PolygonOps.h"
+#include "toolpaths/surface/ConicalOverhang.h"
+#include "toolpaths/surface/FuzzySkin.h"
+#include "toolpaths/surface/Mold.h"
+#include "toolpaths/surface/Spiralize.h"
 
 namespace mixengine {
 namespace {

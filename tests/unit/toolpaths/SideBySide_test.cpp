@@ -1,11 +1,11 @@
-// Side-by-side groups (toolpaths/SideBySide.h) and the area operations that run them apart
-// (toolpaths/PolygonOps.h): the result must be the one a single operation gives.
-#include "toolpaths/SideBySide.h"
+// Side-by-side groups (geometry/SideBySide.h) and the area operations that run them apart
+// (geometry/PolygonOps.h): the result must be the one a single operation gives.
+#include "geometry/SideBySide.h"
 
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

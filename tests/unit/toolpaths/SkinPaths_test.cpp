@@ -1,13 +1,13 @@
-// Skin paths of one layer (toolpaths/SkinPaths.h): loops, roofing inside them, skin, monotonic
+// Skin paths of one layer (toolpaths/skin/SkinPaths.h): loops, roofing inside them, skin, monotonic
 // sequences and the gaps of concentric skin.
-#include "toolpaths/SkinPaths.h"
+#include "toolpaths/skin/SkinPaths.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

@@ -1,12 +1,12 @@
-// Top/bottom skin areas (toolpaths/Skin.h) on stacks of squares.
-#include "toolpaths/Skin.h"
+// Top/bottom skin areas (toolpaths/skin/Skin.h) on stacks of squares.
+#include "toolpaths/skin/Skin.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

@@ -1,5 +1,5 @@
-// Cubic subdivision infill (toolpaths/SubdivCubes.h): an octree fine at the walls, coarse inside.
-#include "toolpaths/SubdivCubes.h"
+// Cubic subdivision infill (toolpaths/infill/SubdivCubes.h): an octree fine at the walls, coarse inside.
+#include "toolpaths/infill/SubdivCubes.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <set>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

@@ -1,10 +1,10 @@
-// Support areas (toolpaths/SupportAreas.h) under a T shape and an H shape.
-#include "toolpaths/SupportAreas.h"
+// Support areas (toolpaths/support/SupportAreas.h) under a T shape and an H shape.
+#include "toolpaths/support/SupportAreas.h"
 
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

@@ -1,8 +1,8 @@
-// The lines of one support layer (toolpaths/SupportPaths.h) with an infill arrangement: gradual
+// The lines of one support layer (toolpaths/support/SupportPaths.h) with an infill arrangement: gradual
 // support densities and support layers combined into thicker ones.
-#include "toolpaths/SupportPaths.h"
+#include "toolpaths/support/SupportPaths.h"
 
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 #include <gtest/gtest.h>
 

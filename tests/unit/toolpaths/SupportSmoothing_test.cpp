@@ -1,10 +1,10 @@
-// The outward smoothing of joined support areas (toolpaths/SupportSmoothing.h): sharp notches are
+// The outward smoothing of joined support areas (toolpaths/support/SupportSmoothing.h): sharp notches are
 // filled with a shortcut of the given length, everything else is left as it is.
-#include "toolpaths/SupportSmoothing.h"
+#include "toolpaths/support/SupportSmoothing.h"
 
 #include <gtest/gtest.h>
 
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

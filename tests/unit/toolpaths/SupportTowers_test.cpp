@@ -1,13 +1,14 @@
-// Support towers (toolpaths/SupportTowers.h) under a hook: a 2 mm arm out of a wall whose end hangs down.
-#include "toolpaths/SupportTowers.h"
+// Support towers (toolpaths/support/SupportTowers.h) under a hook: a 2 mm arm out of a wall whose end hangs
+// down.
+#include "toolpaths/support/SupportTowers.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
-#include "toolpaths/SupportAreas.h"
+#include "geometry/PolygonOps.h"
+#include "toolpaths/support/SupportAreas.h"
 
 namespace mixengine {
 namespace {

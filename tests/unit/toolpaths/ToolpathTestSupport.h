@@ -10,8 +10,8 @@
 #include "settings/Resolver.h"
 #include "slicing/LayerHeights.h"
 #include "slicing/Slicer.h"
-#include "toolpaths/ExtrusionPath.h"
 #include "toolpaths/GroupToolpaths.h"
+#include "toolpaths/core/ExtrusionPath.h"
 
 namespace mixengine::test {
 

@@ -1,11 +1,11 @@
-// Tree support (toolpaths/TreeSupport.h, TreeNodes.h, TreePointOps.h) under a plate on a stem.
-#include "toolpaths/TreeSupport.h"
+// Tree support (toolpaths/support/TreeSupport.h, TreeNodes.h, TreePointOps.h) under a plate on a stem.
+#include "toolpaths/support/TreeSupport.h"
 
 #include <gtest/gtest.h>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
-#include "toolpaths/TreePointOps.h"
+#include "geometry/PointQueries.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

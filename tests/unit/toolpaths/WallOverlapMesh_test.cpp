@@ -1,5 +1,5 @@
 // Overlap compensation switched by the settings on a mesh's walls (toolpaths/MeshToolpaths.h with
-// toolpaths/WallOverlap.h): a 0.6 mm fin's outer wall and a 1.4 mm rib's inner wall run back along
+// toolpaths/walls/WallOverlap.h): a 0.6 mm fin's outer wall and a 1.4 mm rib's inner wall run back along
 // themselves 0.2 mm away with 0.4 mm lines.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Overlap compensation of walls (toolpaths/WallOverlap.h): the second pass over a line printed
+// Overlap compensation of walls (toolpaths/walls/WallOverlap.h): the second pass over a line printed
 // closer than a line width loses the overlapping share of its flow.
-#include "toolpaths/WallOverlap.h"
+#include "toolpaths/walls/WallOverlap.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Wall generation (toolpaths/Walls.h): concentric insets with exact geometry on squares, thin
+// Wall generation (toolpaths/walls/Walls.h): concentric insets with exact geometry on squares, thin
 // parts, holes and the skin reference regions.
-#include "toolpaths/Walls.h"
+#include "toolpaths/walls/Walls.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <map>
 
 #include "ToolpathTestSupport.h"
-#include "toolpaths/PolygonOps.h"
+#include "geometry/PolygonOps.h"
 
 namespace mixengine {
 namespace {

@@ -1,5 +1,5 @@
-// Zigzag (toolpaths/ZigZag.h): the lines of a square joined along its edge into one polyline.
-#include "toolpaths/ZigZag.h"
+// Zigzag (toolpaths/infill/ZigZag.h): the lines of a square joined along its edge into one polyline.
+#include "toolpaths/infill/ZigZag.h"
 
 #include <gtest/gtest.h>
 

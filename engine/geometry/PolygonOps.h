@@ -1,0 +1,64 @@
+#pragma once
+// Area operations on closed polygons in microns (Clipper, non-zero fill), shared by the toolpath
+// generators. Areas follow geometry/Point.h: outer contours counter-clockwise, holes clockwise.
+// Loops that lie side by side are run apart (geometry/SideBySide.h): the same area, not always
+// Clipper's vertex order; geometry/Clip.h has the single Clipper passes.
+#include <vector>
+
+#include "geometry/Point.h"
+
+namespace mixengine {
+
+/// Offset with round joins (arc tolerance 10 µm); negative = inwards. Used where CuraEngine's
+/// lines are round: skirt, brim, support distances, ooze shield.
+Paths offsetPolygons(const Paths& polygons, coord_um delta_um);
+
+/// What is known of an area's loops. `United`: they are as a Clipper union, difference,
+/// intersection or offset with non-zero (or positive) fill returned them and unedited since (not
+/// simplified): no overlaps, no crossings, holes clockwise, so uniting them again changes nothing.
+enum class Loops { Any, United };
+
+/// Offset with mitred joins as CuraEngine 4.13 offsets its walls, skin and infill areas: the
+/// polygons are united first (so a zero-width bridge left by an earlier inset is gone; left out
+/// for Loops::United input, which that union would return as it is), the miter limit is 1.2 ×
+/// delta (corners sharper than about 113° are squared off).
+Paths offsetMiter(const Paths& polygons, coord_um delta_um, Loops loops = Loops::Any);
+/// The same with another miter limit (CuraEngine's Polygons::offset uses 1.2: corners sharper than
+/// about 113° are bevelled).
+Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit);
+
+/// Removes the parts narrower than 2·radius (erode, then grow back with mitred joins), so the
+/// corners of what is left stay as they were. (The erosion's output is united: only the first
+/// offset unites `polygons`, and not for Loops::United.)
+Paths openPolygons(const Paths& polygons, coord_um radius_um, Loops loops = Loops::Any);
+
+Paths unionOf(const Paths& polygons);
+Paths unionOf(const Paths& a, const Paths& b);
+Paths intersectAll(const Paths& a, const Paths& b);
+Paths differenceOf(const Paths& a, const Paths& b);
+
+/// Removes vertices closer than `tolerance_um` to a neighbour or to the line through their
+/// neighbours (Clipper's CleanPolygons); loops that degenerate disappear.
+Paths cleanPolygons(const Paths& polygons, coord_um tolerance_um);
+
+/// Open polylines clipped to the area (the pieces inside it).
+Paths clipLines(const Paths& lines, const Paths& area);
+
+/// Signed total area in µm² (holes count negative).
+double areaUm2(const Paths& polygons);
+
+/// The islands of an area: each outer contour with the holes directly inside it.
+std::vector<Paths> splitIslands(const Paths& polygons);
+
+/// Drops islands whose area (holes subtracted) is below `min_area_um2`.
+Paths removeSmallIslands(const Paths& polygons, double min_area_um2);
+/// removeSmallIslands(differenceOf(a, b), min_area_um2) in one Clipper pass.
+Paths differenceWithoutSmallIslands(const Paths& a, const Paths& b, double min_area_um2);
+
+/// Axis-aligned bounds; empty input gives an all-zero rectangle.
+Box2 boundsOf(const Paths& polygons);
+
+/// Total length of the polylines, closed ones including the closing segment.
+double lengthUm(const Path& path, bool closed);
+
+}  // namespace mixengine

@@ -1,0 +1,46 @@
+#pragma once
+// Skirt and brim on the first layer (Cura's adhesion_type and its keys):
+//   skirt — loops around the convex hull of everything on layer 0 (models, support, prime tower):
+//           the first skirt_gap + w/2 outside it, then one line width further out each, at least
+//           skirt_line_count loops and more until they total skirt_brim_minimal_length;
+//   brim  — loops around the models' (and the support's) layer-0 outlines (outer contours only with
+//           brim_outside_only): the first brim_gap + w/2 outside them, brim_line_count of them
+//           (more while shorter than skirt_brim_minimal_length);
+//   shields — with a draft or ooze shield (AdhesionInput::shields) the skirt goes around the
+//           approximate convex hull of the shields and of the hull grown by skirt_gap − w/2, its
+//           first loop w outside that; a brim fills the shields' foot from the inside with loops one
+//           line width apart, brim_line_count rounded up to even widths deep, short of the brim
+//           around the models by a line width;
+//   none  — nothing; raft — nothing here either (toolpaths/adhesion/Raft.h builds it); any other value
+//           prints a skirt and the caller is warned.
+// w = skirt_brim_line_width × initial_layer_line_width_factor; speed skirt_brim_speed; flow
+// skirt_brim_material_flow × material_flow_layer_0; extruder adhesion_extruder_nr
+// (skirt_brim_extruder_nr when the machine has it); Feature Skirt. Outermost loop first.
+#include <string>
+#include <vector>
+
+#include "geometry/Point.h"
+#include "settings/Settings.h"
+#include "toolpaths/core/ExtrusionPath.h"
+
+namespace mixengine {
+
+struct AdhesionInput {
+    const Settings* global = nullptr;
+    const std::vector<Settings>* extruders = nullptr;
+    Paths models;   ///< every mesh's layer-0 outlines and the support's layer-0 area
+    Paths extras;   ///< points of other things on layer 0 the skirt goes around (support, tower)
+    Paths shields;  ///< the draft shield's and the ooze shield's first-layer outlines
+};
+
+struct AdhesionResult {
+    std::vector<ExtrusionPath> paths;
+    std::vector<std::string> warnings;
+};
+
+AdhesionResult generateAdhesion(const AdhesionInput& input);
+
+/// Convex hull of all points of `polygons`, counter-clockwise (empty for no points).
+Path convexHull(const Paths& polygons);
+
+}  // namespace mixengine

@@ -1,0 +1,88 @@
+#pragma once
+// Infill patterns by Cura's names, all built from one line distance d (Cura's resolved
+// infill_line_distance / support_line_distance / skin spacing, which already carries the pattern's
+// multiplier: grid ×2, triangles/trihexagon/cubic ×3, tetrahedral/quarter_cubic ×2), as CuraEngine
+// 4.13's Infill class builds them:
+//   lines             — one line set at the angle, d apart;
+//   zigzag            — the same lines joined along the area's edge (toolpaths/infill/ZigZag.h);
+//   grid              — line sets at angle and angle + 90°, each d apart;
+//   triangles         — angle, +60°, +120°, each d apart;
+//   trihexagon        — as triangles with the third set shifted by d/2;
+//   cubic             — angle, +120°, +240°, each d apart, shifted by z/√2 so cubes build up;
+//   tetrahedral, quarter_cubic — two directions of line pairs 2d apart, shifted with z;
+//   concentric        — loops d apart, the first d − w/2 inside the area (its centre line one line
+//                       distance from the edge of a line along the area's edge);
+//   gyroid            — toolpaths/infill/GyroidInfill.h with period 2.41·d.
+//   cubicsubdiv       — the lines of an octree of cubes at this height (toolpaths/infill/SubdivCubes.h, the
+//                       caller's subdiv_lines) cut to
+//                       the area grown by the overlap (no wall inset, not connected, as CuraEngine);
+//                       as cubic without the octree.
+// cross, cross_3d and lightning print as lines at d (the same material per area, not the same
+// shape).
+//
+// Placement: every line set goes through the pattern origin (origin_um: CuraEngine's infill origin,
+// the mesh's middle plus infill_offset_x/_y; its shift across a set at angle a is
+// x·cos a − y·sin a, truncated to microns) shifted by shift_um (CuraEngine's infill shift, used by
+// gradual infill) and by the pattern's own shift; segments shorter than w/5 are dropped. Concentric
+// and gyroid ignore the origin, as CuraEngine.
+//
+// Around the pattern (Infill::generate):
+//   - the lines fill the area grown by overlap_um and shrunk by wall_count·w, and by w/2 more
+//     where they are connected (zigzag, or connect_lines: zig_zaggify_infill, for the line-based
+//     patterns: toolpaths/infill/ConnectedLines.h; gyroid's lines are not connected);
+//   - multiplier N > 1: toolpaths/infill/InfillMultiplier.h, inside the area shrunk by wall_count·w (and
+//     w/2 with connect_lines); for even N the lines are made unconnected and the connections come
+//     from the multiplier's cells;
+//   - wall_count loops (infill_wall_line_count) w/2, 3w/2, … inside the area, printed as closed fill.
+#include <string>
+#include <vector>
+
+#include "geometry/Point.h"
+#include "geometry/PolygonOps.h"
+#include "toolpaths/core/ExtrusionPath.h"
+
+namespace mixengine {
+
+enum class InfillPattern {
+    Lines,
+    ZigZag,
+    Grid,
+    Triangles,
+    TriHexagon,
+    Cubic,
+    CubicSubdiv,
+    Tetrahedral,
+    QuarterCubic,
+    Concentric,
+    Gyroid,
+};
+
+/// Cura's value → pattern; an unknown value is an InputError naming `key`.
+InfillPattern infillPatternOf(const std::string& text, const std::string& key);
+
+struct InfillParams {
+    InfillPattern pattern = InfillPattern::Lines;
+    coord_um line_distance_um = 0;  ///< 0 = nothing
+    double angle_degrees = 45;
+    coord_um z_um = 0;  ///< height of the layer (cubic, tetrahedral, gyroid)
+    coord_um line_width_um = 400;
+    Feature feature = Feature::Fill;
+    double speed_mm_s = 60;
+    double flow = 1.0;
+    int extruder = 0;
+    bool zigzag_end_pieces = false;  ///< zigzag: also print the area's ends (support_connect_zigzags)
+    int zag_skip_count = 0;          ///< zigzag: leave out every n-th connection (toolpaths/infill/ZigZag.h)
+    Point2 origin_um{0, 0};          ///< every line set passes through it
+    Loops area_loops = Loops::Any;   ///< what is known of the area's loops (geometry/PolygonOps.h)
+    coord_um shift_um = 0;           ///< extra shift of every line set across its lines
+    coord_um overlap_um = 0;         ///< the lines reach this far beyond the area
+    int wall_count = 0;              ///< loops around the area (infill_wall_line_count)
+    int multiplier = 1;              ///< parallel lines per line (infill_multiplier)
+    bool connect_lines = false;      ///< zig_zaggify_infill
+    const Paths* subdiv_lines = nullptr;  ///< cubicsubdiv: the octree's lines at z_um (the caller's)
+};
+
+/// The pattern's lines inside `area` (lines end on its boundary grown by the overlap).
+std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams& params);
+
+}  // namespace mixengine

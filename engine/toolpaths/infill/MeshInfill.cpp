@@ -1,0 +1,198 @@
+#include "toolpaths/infill/MeshInfill.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "common/ParallelFor.h"
+#include "geometry/PolygonOps.h"
+
+namespace mixengine {
+namespace {
+
+/// CuraEngine's round_divide: a / b rounded half up (a ≥ 0, b > 0).
+long long roundDivide(coord_um a, coord_um b) {
+    return (a + b / 2) / b;
+}
+
+coord_um lengthOr(const Settings& s, std::string_view key, coord_um fallback) {
+    return s.has(key) ? s.lengthMicrons(key) : fallback;
+}
+
+int countOf(const Settings& s, std::string_view key) {
+    return s.has(key) ? static_cast<int>(std::clamp<long long>(s.integer(key), 0, 1'000'000)) : 0;
+}
+
+int combinedLayers(const Settings& s) {
+    const coord_um layer_height = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
+    const coord_um thickness = lengthOr(s, "infill_sparse_thickness", layer_height);
+    return static_cast<int>(
+        std::clamp<long long>(roundDivide(std::max<coord_um>(thickness, 0), layer_height), 1, 1'000'000));
+}
+
+/// The densities' line distance and shift (see the header).
+InfillParams densityParams(const InfillParams& base, std::size_t k, std::size_t last) {
+    InfillParams p = base;
+    const coord_um spread = base.line_distance_um << (k + 1);
+    p.shift_um = spread / 2;
+    p.line_distance_um = k == last ? spread / 2 : spread;
+    return p;
+}
+
+double perimeterUm(const Paths& area) {
+    double total = 0;
+    for (const Path& path : area)
+        total += lengthUm(path, true);
+    return total;
+}
+
+void append(std::vector<ExtrusionPath>&& paths, std::vector<ExtrusionPath>& out) {
+    out.insert(out.end(), std::make_move_iterator(paths.begin()), std::make_move_iterator(paths.end()));
+}
+
+/// Open lines of `paths` clipped to `tool`; loops are kept.
+std::vector<ExtrusionPath> keepInside(std::vector<ExtrusionPath> paths, const Paths& tool) {
+    std::vector<ExtrusionPath> out;
+    for (ExtrusionPath& path : paths) {
+        if (path.closed) {
+            out.push_back(std::move(path));
+            continue;
+        }
+        for (Path& piece : clipLines({path.points}, tool)) {
+            ExtrusionPath part = path;
+            part.points = std::move(piece);
+            out.push_back(std::move(part));
+        }
+    }
+    return out;
+}
+
+void singleLayer(const LayerInfill& layer, const InfillParams& base, std::vector<ExtrusionPath>& out) {
+    const std::size_t last = layer.by_density.size() - 1;
+    const coord_um w = base.line_width_um;
+    const coord_um cut = base.wall_count * w + (base.connect_lines ? w / 2 + 5 : 0);
+    const Paths& sparsest = layer.by_density[last][0];
+    for (std::size_t k = last + 1; k-- > 0;) {
+        const Paths& area = layer.by_density[k][0];
+        if (area.empty())
+            continue;
+        InfillParams p = densityParams(base, k, last);
+        p.multiplier = base.connect_lines && last != 0 ? 1 : base.multiplier;
+        p.wall_count = k < last ? 0 : base.wall_count;
+        p.area_loops = Loops::United;  // the islands of a union
+        std::vector<ExtrusionPath> paths =
+            generateInfill(removeSmallIslands(area, 4.0 * perimeterUm(area)), p);
+        append(k < last ? keepInside(std::move(paths), offsetMiter(sparsest, -cut)) : std::move(paths), out);
+    }
+}
+
+void thickerLayers(const LayerInfill& layer, const InfillParams& base, std::vector<ExtrusionPath>& out) {
+    const std::size_t last = layer.by_density.size() - 1;
+    for (std::size_t t = 1; t < layer.by_density[0].size(); ++t) {
+        for (std::size_t k = last + 1; k-- > 0;) {
+            if (t >= layer.by_density[k].size() || layer.by_density[k][t].empty())
+                continue;
+            InfillParams p = densityParams(base, k, last);
+            p.wall_count = 0;
+            p.zigzag_end_pieces = true;
+            p.flow = base.flow * double(t + 1);
+            append(generateInfill(layer.by_density[k][t], p), out);
+        }
+    }
+}
+
+}  // namespace
+
+InfillLayerParams infillLayerParams(const Settings& s) {
+    InfillLayerParams p;
+    const coord_um layer_height = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
+    p.support_only = s.flag("infill_support_enabled");
+    if (p.support_only) {
+        const double angle = s.has("infill_support_angle") ? s.angleRadians("infill_support_angle") : 0.0;
+        p.support_reach_um = static_cast<coord_um>((std::tan(angle) - 0.01) * double(layer_height));
+    }
+    p.gradual_steps = countOf(s, "gradual_infill_steps");
+    // At least one layer per step (CuraEngine would loop for ever on 0).
+    p.gradual_step_layers = static_cast<int>(
+        std::max<long long>(1, roundDivide(lengthOr(s, "gradual_infill_step_height", 0), layer_height)));
+    p.small_gaps_heuristic = s.flag("skin_no_small_gaps_heuristic");
+    p.combine_layers = combinedLayers(s);
+    p.initial_bottom_layers = countOf(s, "initial_bottom_layers");
+    p.top_layers = countOf(s, "top_layers");
+    return p;
+}
+
+InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const FeatureStyle& style,
+                              const Point2& mesh_middle) {
+    InfillParams p;
+    p.line_distance_um = s.lengthMicrons("infill_line_distance");
+    p.pattern =
+        infillPatternOf(s.has("infill_pattern") ? s.text("infill_pattern") : "lines", "infill_pattern");
+    const bool alternate = p.pattern == InfillPattern::Lines || p.pattern == InfillPattern::ZigZag;
+    std::vector<double> angles = s.has("infill_angles") ? s.realList("infill_angles") : std::vector<double>{};
+    if (angles.empty())
+        angles = alternate ? std::vector<double>{45, 135} : std::vector<double>{45};
+    p.angle_degrees = angles[static_cast<std::size_t>(layer / combinedLayers(s)) % angles.size()];
+    p.z_um = z_um;
+    p.line_width_um = style.width_um;
+    p.speed_mm_s = style.speed_mm_s;
+    p.flow = style.flow;
+    p.extruder = style.extruder;
+    p.origin_um = {mesh_middle.X + lengthOr(s, "infill_offset_x", 0),
+                   mesh_middle.Y + lengthOr(s, "infill_offset_y", 0)};
+    p.overlap_um = lengthOr(s, "infill_overlap_mm", 0);
+    p.wall_count = countOf(s, "infill_wall_line_count");
+    p.multiplier = std::max(1, countOf(s, "infill_multiplier"));
+    p.connect_lines = s.flag("zig_zaggify_infill") || p.pattern == InfillPattern::ZigZag;
+    return p;
+}
+
+std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,
+                                             const Point2& mesh_middle, int threads) {
+    if (!s.has("infill_pattern") || s.text("infill_pattern") != "cubicsubdiv")
+        return nullptr;
+    SubdivCubeParams p;
+    p.line_distance_um = s.lengthMicrons("infill_line_distance");
+    if (p.line_distance_um <= 0)
+        return nullptr;
+    p.radius_addition_um = lengthOr(s, "sub_div_rad_add", 0);
+    const std::vector<double> angles =
+        s.has("infill_angles") ? s.realList("infill_angles") : std::vector<double>{};
+    p.angle_degrees = angles.empty() ? 0.0 : angles.front();
+    p.origin_um = {mesh_middle.X + lengthOr(s, "infill_offset_x", 0),
+                   mesh_middle.Y + lengthOr(s, "infill_offset_y", 0)};
+    p.layer_height_um = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
+    p.machine_size_um = {lengthOr(s, "machine_width", 0), lengthOr(s, "machine_depth", 0),
+                         lengthOr(s, "machine_height", 0)};
+    const int walls = countOf(s, "wall_line_count");
+    const coord_um w0 = lengthOr(s, "wall_line_width_0", 400), wx = lengthOr(s, "wall_line_width_x", 400);
+    const coord_um inset = walls >= 2 ? w0 + wx / 2 : walls == 1 ? w0 / 2 : 0;
+    std::vector<Paths> boundaries(layers.size());
+    parallelFor(layers.size(), threads,
+                [&](std::size_t i) { boundaries[i] = offsetMiter(layers[i].outlines, -inset); });
+    return std::make_unique<SubdivCubes>(p, boundaries);
+}
+
+std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base) {
+    std::vector<ExtrusionPath> out;
+    if (base.line_distance_um <= 0 || layer.by_density.empty())
+        return out;
+    thickerLayers(layer, base, out);
+    singleLayer(layer, base, out);
+    return out;
+}
+
+std::optional<Point2> randomInfillStart(const std::vector<ExtrusionPath>& infill, int layer) {
+    std::vector<const ExtrusionPath*> lines, loops;
+    for (const ExtrusionPath& path : infill)
+        (path.closed ? loops : lines).push_back(&path);
+    std::minstd_rand random(static_cast<std::minstd_rand::result_type>(std::max(layer, 0)) + 1U);
+    if (!lines.empty())
+        return lines[random() % lines.size()]->points.front();
+    if (loops.empty())
+        return std::nullopt;
+    const Path& loop = loops[random() % loops.size()]->points;
+    return loop[random() % loop.size()];
+}
+
+}  // namespace mixengine

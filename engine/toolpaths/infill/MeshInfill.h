@@ -1,0 +1,57 @@
+#pragma once
+// A mesh's sparse infill on one layer, from its arranged areas (toolpaths/infill/InfillLayers.h) and its
+// settings (Cura's keys), as CuraEngine 4.13 prints it (FffGcodeWriter::process*LayerInfill):
+//
+//   pattern     — infill_pattern (toolpaths/infill/InfillPatterns.h) at infill_angles[(layer / N) % n]
+//                 (default 45° and 135° for lines and zigzag, 45° otherwise; N the combined layer
+//                 count of infill_sparse_thickness), reaching infill_overlap_mm beyond the area;
+//   origin      — the mesh's middle (its bounding box's) moved by infill_offset_x / _y: the line
+//                 sets pass through it;
+//   density k   — of the layer's last (sparsest) density L: lines 2^(k+1)·d apart shifted by 2^k·d
+//                 for k < L, 2^L·d apart for L, d = infill_line_distance; so where every density
+//                 prints, the lines of all of them make spacing d. Lines of the denser areas stay
+//                 inside the sparsest area (less the infill walls);
+//   one layer   — the thickness-1 areas, each without its islands smaller than 4 µm² per µm of the
+//                 area's perimeter; the sparsest gets infill_wall_line_count walls; the multiplier
+//                 (infill_multiplier) is 1 when lines are connected and there are several densities;
+//   thicker     — the areas printed t layers thick come first, with t × the flow, no walls, zigzag
+//                 with its end pieces.
+// zig_zaggify_infill (or the zigzag pattern) connects the lines.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "geometry/Point.h"
+#include "settings/Settings.h"
+#include "slicing/Slicer.h"
+#include "toolpaths/core/ExtrusionPath.h"
+#include "toolpaths/core/FeatureStyle.h"
+#include "toolpaths/infill/InfillLayers.h"
+#include "toolpaths/infill/InfillPatterns.h"
+#include "toolpaths/infill/SubdivCubes.h"
+
+namespace mixengine {
+
+/// The arrangement's parameters from the mesh's settings.
+InfillLayerParams infillLayerParams(const Settings& s);
+
+/// The pattern's parameters on `layer` at height z for density 0 of a single layer: line
+/// distance infill_line_distance, the origin at `mesh_middle` + the infill offsets.
+InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const FeatureStyle& style,
+                              const Point2& mesh_middle);
+
+/// cubicsubdiv's octree (toolpaths/infill/SubdivCubes.h) for a mesh whose infill_pattern is cubicsubdiv
+/// (nothing otherwise): boundaries from its sliced layers' outlines, moved in to the centre line of
+/// wall min(2, wall_line_count); origin as meshInfillParams'.
+std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,
+                                             const Point2& mesh_middle, int threads);
+
+/// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
+std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base);
+
+/// infill_randomize_start_location: the first point of an infill line picked at random (a
+/// generator seeded with the layer number, as CuraEngine seeds rand() with it; a random vertex of
+/// a loop when there are no lines); nothing without infill. The same on every run.
+std::optional<Point2> randomInfillStart(const std::vector<ExtrusionPath>& infill, int layer);
+
+}  // namespace mixengine

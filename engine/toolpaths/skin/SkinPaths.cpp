@@ -1,0 +1,162 @@
+#include "toolpaths/skin/SkinPaths.h"
+
+#include "geometry/PolygonOps.h"
+#include "toolpaths/infill/LineInfill.h"
+#include "toolpaths/skin/MonotonicOrder.h"
+
+namespace mixengine {
+namespace {
+
+constexpr coord_um kInsetSlackUm = 10;  // CuraEngine's first skin loop: 10 µm less far in
+constexpr coord_um kGapSlackUm = 15;    // and its perimeter gaps: 15 µm of slack against slivers
+
+/// Where one skin part's paths go, and the sequence numbers handed out so far.
+struct SkinOutput {
+    std::vector<ExtrusionPath>& paths;
+    Paths gaps;  ///< left by concentric fills
+    std::uint32_t sequences = 0;
+};
+
+/// `count` loops inside `part`; `inner` becomes the area inside the innermost one (the whole part
+/// when none fits).
+Paths skinLoops(const Paths& part, int count, coord_um width_um, Paths& inner) {
+    Paths loops, last;
+    for (int i = 0; i < count; ++i) {
+        // `part` is an island of splitIslands' union: united.
+        Paths ring = i == 0 ? offsetMiter(part, -width_um / 2 + kInsetSlackUm, Loops::United)
+                            : offsetMiter(last, -width_um, Loops::United);
+        if (ring.empty())
+            break;
+        loops.insert(loops.end(), ring.begin(), ring.end());
+        last = std::move(ring);
+    }
+    inner = last.empty() ? part : offsetMiter(last, -width_um / 2, Loops::United);
+    return loops;
+}
+
+/// Loops one line width apart, the first (w/2 − overlap) inside `area`; what they leave uncovered
+/// is added to `gaps` when that is wanted.
+Paths concentricLoops(const Paths& area, const SkinFillParams& fill, Paths* gaps) {
+    const coord_um w = fill.style.width_um;
+    Paths loops;
+    Paths ring = offsetMiter(area, fill.overlap_um - w / 2);
+    if (gaps)
+        *gaps = unionOf(*gaps, differenceOf(area, offsetMiter(ring, w / 2 + kGapSlackUm, Loops::United)));
+    while (!ring.empty()) {
+        loops.insert(loops.end(), ring.begin(), ring.end());
+        Paths next = offsetMiter(ring, -w, Loops::United);
+        if (gaps)
+            *gaps = unionOf(*gaps, differenceOf(offsetMiter(ring, -w / 2 - kGapSlackUm, Loops::United),
+                                                offsetMiter(next, w / 2, Loops::United)));
+        ring = std::move(next);
+    }
+    return loops;
+}
+
+InfillParams patternParams(const SkinFillParams& fill, coord_um z_um) {
+    InfillParams p;
+    p.pattern = fill.pattern;
+    p.line_distance_um = static_cast<coord_um>(double(fill.style.width_um) / fill.density);
+    p.angle_degrees = fill.angle_degrees;
+    p.z_um = z_um;
+    p.line_width_um = fill.style.width_um;
+    p.feature = Feature::Skin;
+    p.speed_mm_s = fill.style.speed_mm_s;
+    p.flow = fill.style.flow;
+    p.extruder = fill.style.extruder;
+    return p;
+}
+
+/// The open lines of `lines` as one sequence in monotonic order (loops stay as they are, first).
+void appendMonotonic(std::vector<ExtrusionPath> lines, const SkinFillParams& fill, SkinOutput& out) {
+    Paths open;
+    for (ExtrusionPath& path : lines) {
+        if (path.closed)
+            out.paths.push_back(std::move(path));
+        else
+            open.push_back(std::move(path.points));
+    }
+    const std::uint32_t sequence = ++out.sequences;
+    const coord_um max_adjacent = fill.style.width_um * 11 / 10;
+    for (const Path& line : monotonicOrder(std::move(open), fill.angle_degrees, max_adjacent)) {
+        ExtrusionPath path = styledPath(line, false, Feature::Skin, fill.style);
+        path.sequence = sequence;
+        out.paths.push_back(std::move(path));
+    }
+}
+
+void appendFill(const Paths& area, const SkinFillParams& fill, const SkinPathParams& params,
+                SkinOutput& out) {
+    if (area.empty())
+        return;
+    if (fill.pattern == InfillPattern::Concentric) {
+        appendStyledLoops(concentricLoops(area, fill, params.gap_style ? &out.gaps : nullptr), Feature::Skin,
+                          fill.style, out.paths);
+        return;
+    }
+    std::vector<ExtrusionPath> lines =
+        generateInfill(offsetMiter(area, fill.overlap_um, Loops::United), patternParams(fill, params.z_um));
+    if (fill.monotonic) {
+        appendMonotonic(std::move(lines), fill, out);
+        return;
+    }
+    for (ExtrusionPath& line : lines)
+        out.paths.push_back(std::move(line));
+}
+
+void appendGapLines(const Paths& gaps, const SkinPathParams& params, std::vector<ExtrusionPath>& out) {
+    if (gaps.empty() || !params.gap_style || params.gap_style->width_um <= 0)
+        return;
+    const FeatureStyle& style = *params.gap_style;
+    const Paths area = offsetMiter(gaps, params.skin.overlap_um, Loops::United);
+    for (const Path& line : lineSegments(area, style.width_um, params.gap_angle_degrees, 0))
+        out.push_back(styledPath(line, false, Feature::Skin, style));
+}
+
+void appendSkinPart(const Paths& part, const Paths& roofing_area, const SkinPathParams& p, SkinOutput& out) {
+    const bool skin_concentric = p.skin.pattern == InfillPattern::Concentric;
+    const bool roof_concentric = p.roofing.pattern == InfillPattern::Concentric;
+    const bool roofed = !roofing_area.empty() && !intersectAll(part, roofing_area).empty();
+    // As CuraEngine: no loops around a concentric skin, unless its roofing is of another pattern.
+    const bool loops_wanted = !skin_concentric || (roofed && !p.first_layer && !roof_concentric);
+    Paths inner = part;
+    Paths loops = loops_wanted ? skinLoops(part, p.outline_count, p.skin.style.width_um, inner) : Paths{};
+    Paths roof_fill = roofed ? intersectAll(inner, roofing_area) : Paths{};
+    Paths skin_fill = roofed ? differenceOf(inner, roofing_area) : inner;
+    if (!loops.empty() && skin_fill.empty() && !roof_fill.empty() && roof_concentric && !p.first_layer) {
+        loops.clear();  // all roofing, concentric: its loops replace the skin's
+        roof_fill = intersectAll(part, roofing_area);
+    }
+    appendStyledLoops(loops, Feature::Skin, p.skin.style, out.paths);
+    appendFill(roof_fill, p.roofing, p, out);
+    const std::optional<SkinFillParams> bridge = p.bridge ? p.bridge(part) : std::nullopt;
+    const std::size_t before = out.paths.size();
+    appendFill(skin_fill, bridge ? *bridge : p.skin, p, out);
+    for (std::size_t i = before; bridge && i < out.paths.size(); ++i) {
+        out.paths[i].bridge = true;
+        out.paths[i].fan_ratio = bridge->bridge_fan_ratio.value_or(-1);
+    }
+    appendGapLines(out.gaps, p, out.paths);
+    out.gaps.clear();
+}
+
+}  // namespace
+
+std::vector<ExtrusionPath> generateSkinPaths(const Paths& skin_area, const Paths& roofing_area,
+                                             const SkinPathParams& params) {
+    std::vector<ExtrusionPath> paths;
+    if (skin_area.empty() || params.skin.style.width_um <= 0)
+        return paths;
+    SkinOutput out{paths, {}, 0};
+    for (const Paths& part : splitIslands(skin_area))
+        appendSkinPart(part, roofing_area, params, out);
+    return paths;
+}
+
+std::vector<ExtrusionPath> perimeterGapLines(const Paths& gaps, const SkinPathParams& params) {
+    std::vector<ExtrusionPath> lines;
+    appendGapLines(gaps, params, lines);
+    return lines;
+}
+
+}  // namespace mixengine

@@ -1,0 +1,441 @@
+#include "toolpaths/support/Support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "common/ParallelFor.h"
+#include "geometry/Angles.h"
+#include "geometry/Clip.h"
+#include "geometry/PolygonOps.h"
+#include "toolpaths/infill/InfillLayers.h"
+#include "toolpaths/support/SupportAreas.h"
+#include "toolpaths/support/SupportPaths.h"
+#include "toolpaths/support/TreeSupport.h"
+
+namespace mixengine {
+namespace {
+
+int layersFor(coord_um distance_um, coord_um layer_height_um, bool round_up) {
+    if (distance_um <= 0 || layer_height_um <= 0)
+        return 0;
+    return static_cast<int>(round_up ? (distance_um + layer_height_um - 1) / layer_height_um
+                                     : (distance_um + layer_height_um / 2) / layer_height_um);
+}
+
+int extruderOf(const Settings& s, std::string_view key) {
+    const int nr = s.has(key) ? s.extruderIndex(key) : 0;
+    return nr < 0 ? 0 : nr;
+}
+
+/// The maximum diameter of what towers support, 0 when `s` turns towers off.
+coord_um towerMaxDiameter(const Settings& s) {
+    if (!s.has("support_use_towers") || !s.boolean("support_use_towers"))
+        return 0;
+    return std::max<coord_um>(0, s.lengthMicrons("support_tower_maximum_supported_diameter"));
+}
+
+SupportTowerParams towerParams(const Settings& s, coord_um layer_height) {
+    SupportTowerParams t;
+    t.max_supported_diameter_um = towerMaxDiameter(s);
+    if (t.max_supported_diameter_um == 0)
+        return t;
+    t.diameter_um = s.lengthMicrons("support_tower_diameter");
+    const double slope = std::tan(radiansFromDegrees(s.angleDegrees("support_tower_roof_angle")));
+    // A flat roof (0°) is the whole diameter at once.
+    t.roof_step_um = slope > 1e-6 ? static_cast<coord_um>(double(layer_height) / slope) : t.diameter_um;
+    return t;
+}
+
+/// The joined support's smoothing shortcut (toolpaths/support/SupportSmoothing.h): as CuraEngine, the widest
+/// of the support line and, when on, the roof and floor lines.
+coord_um smoothingDistance(const Settings& s) {
+    auto width = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
+    coord_um widest = width("support_line_width");
+    if (s.flag("support_roof_enable"))
+        widest = std::max(widest, width("support_roof_line_width"));
+    if (s.flag("support_bottom_enable"))
+        widest = std::max(widest, width("support_bottom_line_width"));
+    return widest;
+}
+
+SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
+    SupportAreaParams p;
+    p.top_gap_layers = layersFor(s.lengthMicrons("support_top_distance"), layer_height, true);
+    p.bottom_gap_layers = layersFor(s.lengthMicrons("support_bottom_distance"), layer_height, true);
+    p.xy_distance_um = s.lengthMicrons("support_xy_distance");
+    p.xy_distance_overhang_um = s.has("support_xy_distance_overhang")
+                                    ? s.lengthMicrons("support_xy_distance_overhang")
+                                    : p.xy_distance_um;
+    p.z_overrides_xy =
+        !s.has("support_xy_overrides_z") || s.text("support_xy_overrides_z") == "z_overrides_xy";
+    p.buildplate_only = s.has("support_type") && s.text("support_type") == "buildplate";
+    p.join_distance_um = s.has("support_join_distance") ? s.lengthMicrons("support_join_distance") : 0;
+    p.offset_um = s.has("support_offset") ? s.lengthMicrons("support_offset") : 0;
+    p.min_area_um2 = s.has("minimum_support_area") ? s.real("minimum_support_area") * 1e6 : 0.0;
+    if (s.flag("support_conical_enabled")) {
+        const double angle = s.angleDegrees("support_conical_angle");
+        const double slope = std::tan(radiansFromDegrees(std::abs(angle))) - 0.01;
+        const coord_um step =
+            static_cast<coord_um>(slope * double(layer_height));  // truncated, as CuraEngine
+        p.conical_step_um = angle > 0 ? -step : angle < 0 ? step : 0;
+        p.conical_min_width_um = s.lengthMicrons("support_conical_min_width");
+    }
+    p.towers = towerParams(s, layer_height);
+    p.smoothing_um = smoothingDistance(s);
+    if (s.flag("support_roof_enable"))
+        p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
+    if (s.flag("support_bottom_enable"))
+        p.floor_layers =
+            std::max(1, layersFor(s.lengthMicrons("support_bottom_height"), layer_height, false));
+    return p;
+}
+
+/// angles[layer mod n] (layer may be negative: raft filler layers), or `fallback` for no angles.
+double angleFor(const Settings& s, std::string_view key, int layer, double fallback) {
+    const std::vector<double> angles = s.has(key) ? s.realList(key) : std::vector<double>{};
+    if (angles.empty())
+        return fallback;
+    const int n = static_cast<int>(angles.size());
+    return angles[static_cast<std::size_t>(((layer % n) + n) % n)];
+}
+
+SupportFill fillFrom(const Settings& s, std::string_view prefix, int layer) {
+    const std::string p(prefix);  // "support_roof" or "support_bottom"
+    SupportFill fill;
+    fill.pattern = infillPatternOf(s.text(p + "_pattern"), p + "_pattern");
+    fill.line_distance_um = s.lengthMicrons(p + "_line_distance");
+    fill.angle_degrees = angleFor(s, p + "_angles", layer, 90);
+    const std::string speed = p == "support_roof" ? "speed_support_roof" : "speed_support_bottom";
+    fill.style = featureStyle(s, {p + "_line_width", speed, p + "_material_flow", p + "_extruder_nr"}, layer);
+    return fill;
+}
+
+/// The fills of `layer`; −1 stands for the raft's filler layers.
+SupportLayerFills layerFills(const SupportInput& in, int layer) {
+    const Settings& g = *in.global;
+    const std::string_view body_key = layer <= 0 && g.has("support_extruder_nr_layer_0")
+                                          ? "support_extruder_nr_layer_0"
+                                          : "support_infill_extruder_nr";
+    const int body_nr = extruderOf(g, body_key);
+    const Settings& body = trainSettings(g, in.extruders, body_nr);
+    SupportLayerFills fills;
+    fills.body.pattern = infillPatternOf(body.text("support_pattern"), "support_pattern");
+    fills.body.line_distance_um = body.lengthMicrons(
+        layer == 0 && body.has("support_initial_layer_line_distance") ? "support_initial_layer_line_distance"
+                                                                      : "support_line_distance");
+    fills.body.angle_degrees = angleFor(body, "support_infill_angles", layer, 0);
+    fills.body.connect_zigzags = body.flag("support_connect_zigzags");
+    if (body.flag("support_skip_some_zags") && body.has("support_zag_skip_count"))
+        fills.body.zag_skip_count =
+            static_cast<int>(std::max<long long>(0, body.integer("support_zag_skip_count")));
+    fills.body.wall_count =
+        body.has("support_wall_count") ? static_cast<int>(body.integer("support_wall_count")) : 0;
+    if (layer <= 0) {  // as CuraEngine: the first layer of support is a grid with one more wall
+        if (fills.body.pattern == InfillPattern::Lines || fills.body.pattern == InfillPattern::ZigZag)
+            fills.body.pattern = InfillPattern::Grid;
+        fills.body.wall_count += 1;
+    }
+    // as CuraEngine: the body's infill overlaps its walls by infill_overlap_mm (none without walls)
+    if (fills.body.wall_count > 0 && body.has("infill_overlap_mm"))
+        fills.body.overlap_um = body.lengthMicrons("infill_overlap_mm");
+    fills.body.style = featureStyle(
+        body, {"support_line_width", "speed_support_infill", "support_material_flow", body_key}, layer);
+    fills.body.style.extruder = body_nr;
+    if (in.raft)  // as CuraEngine: no initial_layer_line_width_factor for support under a raft
+        fills.body.style.width_um = body.lengthMicrons("support_line_width");
+    const Settings& roof = trainSettings(g, in.extruders, extruderOf(g, "support_roof_extruder_nr"));
+    const Settings& floor = trainSettings(g, in.extruders, extruderOf(g, "support_bottom_extruder_nr"));
+    if (roof.has("support_roof_pattern"))
+        fills.roof = fillFrom(roof, "support_roof", layer);
+    if (floor.has("support_bottom_pattern"))
+        fills.floor = fillFrom(floor, "support_bottom", layer);
+    return fills;
+}
+
+bool supportsOverhangs(const SupportMesh& mesh) {
+    return mesh.role.printsAlone() && mesh.settings->boolean("support_enable");
+}
+
+/// Per layer the union of the outlines of the meshes `which` picks (empty vector: none picked).
+template <typename Pick>
+std::vector<Paths> outlinesOf(const SupportInput& in, Pick which, int threads) {
+    std::vector<const SupportMesh*> picked;
+    for (const SupportMesh& mesh : in.meshes) {
+        if (which(mesh))
+            picked.push_back(&mesh);
+    }
+    if (picked.empty())
+        return {};
+    std::vector<Paths> layers(in.heights->size());
+    parallelFor(layers.size(), threads, [&](std::size_t i) {
+        Paths all;
+        for (const SupportMesh* mesh : picked) {
+            if (i < mesh->layers->size())
+                all.insert(all.end(), (*mesh->layers)[i].outlines.begin(), (*mesh->layers)[i].outlines.end());
+        }
+        layers[i] = unionOf(all);
+    });
+    return layers;
+}
+
+SupportMeshAreas supportMeshAreas(const SupportInput& in, int threads) {
+    SupportMeshAreas areas;
+    areas.drop_down = outlinesOf(
+        in,
+        [](const SupportMesh& m) {
+            return m.role.support_mesh && m.settings->boolean("support_mesh_drop_down");
+        },
+        threads);
+    areas.in_place = outlinesOf(
+        in,
+        [](const SupportMesh& m) {
+            return m.role.support_mesh && !m.settings->boolean("support_mesh_drop_down");
+        },
+        threads);
+    return areas;
+}
+
+/// The body's infill arrangement (toolpaths/infill/InfillLayers.h) as CuraEngine's gradual support
+/// (gradual_support_infill_steps, every gradual_support_infill_step_height; its upper layers are
+/// looked at about every 8 layers) and combined support layers (support_infill_sparse_thickness);
+/// nullopt when neither is on.
+std::optional<InfillLayerParams> arrangement(const Settings& body, coord_um layer_height) {
+    const coord_um h = std::max<coord_um>(layer_height, 1);
+    InfillLayerParams p;
+    if (body.has("gradual_support_infill_steps"))
+        p.gradual_steps =
+            static_cast<int>(std::max<long long>(0, body.integer("gradual_support_infill_steps")));
+    if (body.has("gradual_support_infill_step_height"))
+        p.gradual_step_layers = static_cast<int>(
+            std::max<coord_um>(1, (body.lengthMicrons("gradual_support_infill_step_height") + h / 2) / h));
+    p.small_gaps_heuristic = true;
+    if (body.has("support_infill_sparse_thickness"))
+        p.combine_layers = static_cast<int>(
+            std::max<coord_um>(1, (body.lengthMicrons("support_infill_sparse_thickness") + h / 2) / h));
+    if (p.gradual_steps <= 0 && p.combine_layers <= 1)
+        return std::nullopt;
+    return p;
+}
+
+/// The bodies' infill arrangement; empty when neither gradual support nor combined layers are on.
+std::vector<LayerInfill> arrangedBodies(const std::vector<SupportLayerAreas>& areas, const Settings& body,
+                                        coord_um layer_height, int threads) {
+    const std::optional<InfillLayerParams> params = arrangement(body, layer_height);
+    if (!params)
+        return {};
+    std::vector<Paths> bodies(areas.size());
+    for (std::size_t i = 0; i < areas.size(); ++i)
+        bodies[i] = areas[i].support;
+    return arrangeInfill(bodies, *params, threads);
+}
+
+bool isTree(const SupportMesh& mesh) {
+    return mesh.settings->has("support_structure") && mesh.settings->text("support_structure") == "tree";
+}
+
+/// The mesh's overhang points (toolpaths/support/SupportTowers.h) added to `points`, with its towers on;
+/// inset by half the outer wall's line width (its centre line, as CuraEngine), without walls half the support
+/// line width.
+void addOverhangPoints(const SupportMesh& mesh, const std::vector<Paths>& blockers,
+                       std::vector<std::vector<Paths>>& points) {
+    const Settings& s = *mesh.settings;
+    const coord_um max_diameter = towerMaxDiameter(s);
+    if (max_diameter == 0)
+        return;
+    const bool walls = s.has("wall_line_count") && s.integer("wall_line_count") > 0;
+    const coord_um inset = s.lengthMicrons(walls ? "wall_line_width_0" : "support_line_width") / 2;
+    const std::vector<std::vector<Paths>> own =
+        detectOverhangPoints(*mesh.layers, max_diameter, inset, blockers.empty() ? nullptr : &blockers);
+    for (std::size_t i = 0; i < own.size() && i < points.size(); ++i)
+        points[i].insert(points[i].end(), own[i].begin(), own[i].end());
+}
+
+/// The overhangs of the meshes with support_enable and normal support, united per layer.
+Overhangs collectOverhangs(const SupportInput& in, int threads) {
+    Overhangs all;
+    all.basic.resize(in.heights->size());
+    all.full.resize(in.heights->size());
+    all.points.resize(in.heights->size());
+    const std::vector<Paths> blockers = outlinesOf(
+        in, [](const SupportMesh& m) { return m.role.anti_overhang_mesh; }, threads);
+    for (const SupportMesh& mesh : in.meshes) {
+        if (!supportsOverhangs(mesh) || isTree(mesh))
+            continue;
+        const Overhangs own =
+            detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees("support_angle"), threads,
+                            blockers.empty() ? nullptr : &blockers);
+        parallelFor(all.basic.size(), threads, [&](std::size_t i) {
+            if (i >= own.basic.size())
+                return;
+            all.basic[i] = all.basic[i].empty() ? own.basic[i] : unionOf(all.basic[i], own.basic[i]);
+            all.full[i] = all.full[i].empty() ? own.full[i] : unionOf(all.full[i], own.full[i]);
+        });
+        addOverhangPoints(mesh, blockers, all.points);
+    }
+    return all;
+}
+
+/// The support brim's loops inside `outline` (see the header); `outline` becomes what is left inside
+/// them.
+std::vector<ExtrusionPath> supportBrim(const Settings& s, int extruder, Paths& outline) {
+    std::vector<ExtrusionPath> loops;
+    const int count =
+        s.has("support_brim_line_count") ? static_cast<int>(s.integer("support_brim_line_count")) : 0;
+    if (outline.empty() || count <= 0)
+        return loops;
+    FeatureStyle style = featureStyle(s,
+                                      {"skirt_brim_line_width", "skirt_brim_speed",
+                                       "skirt_brim_material_flow", "support_infill_extruder_nr"},
+                                      0);
+    style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");
+    style.extruder = extruder;
+    const coord_um w = std::max<coord_um>(style.width_um, 1);
+    const double smallest_hole_um2 = 100.0 * double(w) * double(w);
+    for (int i = 0; i < count; ++i) {
+        Paths ring = offsetPolygons(outline, -(w / 2 + coord_um(i) * w));
+        if (ring.empty())
+            break;
+        std::erase_if(ring, [&](const Path& p) {
+            const double area = signedAreaUm2(p);
+            return area < 0 && area > -smallest_hole_um2;
+        });
+        appendStyledLoops(ring, Feature::Skirt, style, loops);
+    }
+    outline = intersectAll(outline, offsetPolygons(outline, -coord_um(count) * w));
+    return loops;
+}
+
+/// The model's layer-0 outlines (outer contours only with brim_outside_only, its holes left out).
+Paths brimBase(const Paths& layer0, bool outside_only) {
+    const Paths all = unionOf(layer0);
+    if (!outside_only)
+        return all;
+    Paths outer;
+    for (const Path& p : all) {
+        if (counterClockwise(p))
+            outer.push_back(p);
+    }
+    return outer;
+}
+
+}  // namespace
+
+Paths brimCoveredArea(const Settings& global, const std::vector<Settings>* extruders, const Paths& layer0) {
+    if (layer0.empty() || global.text("adhesion_type") != "brim")
+        return {};
+    const Settings& body = trainSettings(global, extruders, extruderOf(global, "support_infill_extruder_nr"));
+    if (!body.has("brim_replaces_support") || !body.boolean("brim_replaces_support"))
+        return {};
+    const Settings& adhesion = trainSettings(global, extruders, extruderOf(global, "adhesion_extruder_nr"));
+    const long long lines = std::max<long long>(0, adhesion.integer("brim_line_count"));
+    if (lines == 0)
+        return {};
+    const double width =
+        double(adhesion.lengthMicrons("skirt_brim_line_width")) *
+        (adhesion.has("initial_layer_line_width_factor") ? adhesion.ratio("initial_layer_line_width_factor")
+                                                         : 1.0);
+    const bool outside_only = !adhesion.has("brim_outside_only") || adhesion.boolean("brim_outside_only");
+    const Paths base = brimBase(layer0, outside_only);
+    Paths covered = offsetPolygons(base, std::llround(width * double(lines + lines % 2)));
+    if (outside_only)  // the support in the model's holes stays: no brim there
+        covered = differenceOf(covered, differenceOf(base, unionOf(layer0)));
+    return covered;
+}
+
+namespace {
+
+Box2 meshBounds(const std::vector<SlicedLayer>& layers) {
+    Paths all;
+    for (const SlicedLayer& layer : layers)
+        all.insert(all.end(), layer.outlines.begin(), layer.outlines.end());
+    return boundsOf(all);
+}
+
+/// The tree support of the meshes with support_enable and support_structure tree
+/// (toolpaths/support/TreeSupport.h); none: empty.
+std::vector<SupportLayerAreas> treeAreas(const SupportInput& in, int threads) {
+    std::vector<Overhangs> overhangs;
+    std::vector<const SupportMesh*> trees;
+    for (const SupportMesh& mesh : in.meshes) {
+        if (!supportsOverhangs(mesh) || !isTree(mesh))
+            continue;
+        overhangs.push_back(detectOverhangs(*mesh.layers, *in.heights,
+                                            mesh.settings->angleDegrees("support_angle"), threads));
+        trees.push_back(&mesh);
+    }
+    if (trees.empty())
+        return {};
+    std::vector<TreeMesh> meshes;
+    for (std::size_t i = 0; i < trees.size(); ++i)
+        meshes.push_back({trees[i]->settings, &overhangs[i].basic, meshBounds(*trees[i]->layers)});
+    return treeSupportAreas(*in.global, meshes, *in.model, threads);
+}
+
+/// Normal support's areas united with tree support's, layer by layer.
+std::vector<SupportLayerAreas> supportAreas(const SupportInput& in, coord_um layer_height, int threads) {
+    const Settings& g = *in.global;
+    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
+    const bool normal = std::any_of(in.meshes.begin(), in.meshes.end(), [](const SupportMesh& m) {
+        return (supportsOverhangs(m) && !isTree(m)) || m.role.support_mesh;
+    });
+    std::vector<SupportLayerAreas> areas =
+        normal ? computeSupportAreas(*in.model, collectOverhangs(in, threads), areaParams(body, layer_height),
+                                     threads, supportMeshAreas(in, threads))
+               : std::vector<SupportLayerAreas>(in.heights->size());
+    const std::vector<SupportLayerAreas> tree = treeAreas(in, threads);
+    parallelFor(std::min(tree.size(), areas.size()), threads, [&](std::size_t i) {
+        areas[i].support = unionOf(areas[i].support, tree[i].support);
+        areas[i].roof = unionOf(areas[i].roof, tree[i].roof);
+        areas[i].floor = unionOf(areas[i].floor, tree[i].floor);
+    });
+    return areas;
+}
+
+}  // namespace
+
+const Settings& trainSettings(const Settings& global, const std::vector<Settings>* extruders, int nr) {
+    if (extruders == nullptr || extruders->empty())
+        return global;
+    const std::size_t index = static_cast<std::size_t>(std::max(0, nr));
+    return (*extruders)[std::min(index, extruders->size() - 1)];
+}
+
+SupportResult generateSupport(const SupportInput& in, int threads) {
+    SupportResult result;
+    std::vector<std::vector<ExtrusionPath>>& paths = result.paths;
+    paths.resize(in.heights->size());
+    bool wanted = false;
+    for (const SupportMesh& mesh : in.meshes)
+        wanted = wanted || supportsOverhangs(mesh) || mesh.role.support_mesh;
+    if (!wanted)
+        return result;
+    const Settings& g = *in.global;
+    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
+    std::vector<SupportLayerAreas> areas = supportAreas(in, g.lengthMicrons("layer_height"), threads);
+    if (areas.empty())
+        return result;
+    if (!in.first_layer_exclusion.empty()) {  // brim_replaces_support
+        areas[0].support = differenceOf(areas[0].support, in.first_layer_exclusion);
+        areas[0].roof = differenceOf(areas[0].roof, in.first_layer_exclusion);
+    }
+    result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
+    if (!in.raft && body.flag("support_brim_enable"))
+        result.brim = supportBrim(body, extruderOf(g, "support_infill_extruder_nr"), areas[0].support);
+    const std::vector<LayerInfill> arranged =
+        arrangedBodies(areas, body, g.lengthMicrons("layer_height"), threads);
+    parallelFor(paths.size(), threads, [&](std::size_t i) {
+        const SupportLayerAreas& a = areas[i];
+        if (a.support.empty() && a.roof.empty() && a.floor.empty())
+            return;
+        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z,
+                                     arranged.empty() ? nullptr : &arranged[i]);
+    });
+    if (in.raft && !paths.empty() && !paths[0].empty()) {
+        result.filler = supportLayerPaths(areas[0], layerFills(in, -1), 0);
+        paths[0].clear();
+    }
+    return result;
+}
+
+}  // namespace mixengine

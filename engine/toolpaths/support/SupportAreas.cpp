@@ -1,0 +1,205 @@
+#include "toolpaths/support/SupportAreas.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/ParallelFor.h"
+#include "geometry/Angles.h"
+#include "geometry/PolygonOps.h"
+#include "toolpaths/core/LayerWindows.h"
+#include "toolpaths/support/SupportSmoothing.h"
+
+namespace mixengine {
+namespace {
+
+/// Where support may not be on layer n: the model grown by the xy distance.
+Paths disallowedArea(const Paths& model, const Paths& own_overhang, const SupportAreaParams& p) {
+    if (model.empty())
+        return {};
+    if (!p.z_overrides_xy || own_overhang.empty())
+        return offsetPolygons(model, p.xy_distance_um);
+    // Next to the layer's own overhang the smaller overhang distance is enough.
+    const Paths away = differenceOf(model, offsetPolygons(own_overhang, p.xy_distance_um));
+    return unionOf(offsetPolygons(model, p.xy_distance_overhang_um), offsetPolygons(away, p.xy_distance_um));
+}
+
+constexpr coord_um kSimplifyUm = 25;  // the model's outlines, once per layer
+constexpr coord_um kCleanUm = 5;      // the propagated support, every layer (must not accumulate)
+constexpr double kCuraMiterLimit = 1.2;
+constexpr double kSmoothingAngleDegrees = 135;  // CuraEngine's: sharper notches are filled
+
+/// Conical support: the support from above shrunk (or grown) by one layer's step, its parts
+/// narrower than the minimum width kept as they are.
+Paths conicalStep(const Paths& from_above, const SupportAreaParams& p) {
+    const coord_um half = p.conical_min_width_um / 2;
+    const Paths wide = offsetMiter(offsetMiter(from_above, -half), half + 20);
+    const Paths narrow = differenceOf(from_above, wide);
+    return unionOf(offsetMiter(from_above, p.conical_step_um), narrow);
+}
+
+/// The overhang points of `layer`, none when out of range.
+std::vector<Paths> pointsOf(const Overhangs& o, std::size_t layer) {
+    return layer < o.points.size() ? o.points[layer] : std::vector<Paths>{};
+}
+
+/// Towers under small support islands (toolpaths/support/SupportTowers.h), for layer i of n.
+void startTowersUnderIslands(TowerRoofs& roofs, const std::vector<Paths>& support,
+                             const std::vector<Paths>& model, std::size_t i, const SupportAreaParams& p) {
+    const std::size_t look = TowerRoofs::kSmallIslandLookLayers;
+    const std::size_t below = look + static_cast<std::size_t>(std::max(0, p.bottom_gap_layers));
+    if (i + look < support.size() && i >= below)
+        roofs.startUnderSmallIslands(support[i], support[i + look], model[i - below]);
+}
+
+/// Top-down: each layer's support is the layer above's plus the overhangs it must carry (and the
+/// towers' roofs), joined (closing by the join distance), minus the model here and bottom_gap layers
+/// below, simplified.
+std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<Paths>& model,
+                                 const std::vector<Paths>& blocked, const SupportAreaParams& p) {
+    const std::vector<Paths>& full = overhangs.full;
+    const std::size_t n = full.size();
+    const bool towers = p.towers.max_supported_diameter_um > 0;
+    TowerRoofs roofs(p.towers);
+    std::vector<Paths> support(n);
+    Paths current;
+    for (std::size_t i = n; i-- > 0;) {
+        const std::size_t source = i + static_cast<std::size_t>(p.top_gap_layers) + 1;
+        if (p.conical_step_um != 0 && !current.empty())
+            current = conicalStep(current, p);
+        if (source < n && !full[source].empty())
+            current = unionOf(current, full[source]);
+        if (towers && i + 2 < n) {  // as CuraEngine: a roof starts one layer under its point
+            roofs.startAt(pointsOf(overhangs, i + 1), pointsOf(overhangs, i));
+            roofs.addTo(current);
+        }
+        if (current.empty())
+            continue;
+        if (p.join_distance_um > 0)  // as CuraEngine: its offsets bevel at a miter limit of 1.2
+            current = offsetMiter(offsetMiter(current, p.join_distance_um, kCuraMiterLimit),
+                                  -p.join_distance_um, kCuraMiterLimit);
+        current = smoothOutward(current, kSmoothingAngleDegrees, p.smoothing_um);
+        current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
+        support[i] = current;
+        if (towers)
+            startTowersUnderIslands(roofs, support, model, i, p);
+    }
+    return support;
+}
+
+/// Support that has support neither below nor above it is dropped (single-layer specks).
+void removeFloating(std::vector<SupportLayerAreas>& layers, int threads) {
+    std::vector<Paths> kept(layers.size());
+    parallelFor(layers.size(), threads, [&](std::size_t i) {
+        if (i == 0 || i + 1 >= layers.size() || layers[i].support.empty()) {
+            kept[i] = layers[i].support;
+            return;
+        }
+        kept[i] = intersectAll(layers[i].support, unionOf(layers[i - 1].support, layers[i + 1].support));
+    });
+    for (std::size_t i = 0; i < layers.size(); ++i)
+        layers[i].support = std::move(kept[i]);
+}
+
+/// Top-down: the support meshes' areas, the drop-down ones carried down, less the model here and
+/// bottom_gap layers below.
+std::vector<Paths> supportMeshSupport(const SupportMeshAreas& meshes, const std::vector<Paths>& blocked) {
+    const std::size_t n = blocked.size();
+    std::vector<Paths> support(n);
+    Paths current;
+    for (std::size_t i = n; i-- > 0;) {
+        if (i < meshes.drop_down.size() && !meshes.drop_down[i].empty())
+            current = unionOf(current, meshes.drop_down[i]);
+        if (!current.empty())
+            current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
+        support[i] = current;
+        if (i < meshes.in_place.size() && !meshes.in_place[i].empty())
+            support[i] = unionOf(support[i], differenceOf(meshes.in_place[i], blocked[i]));
+    }
+    return support;
+}
+
+void keepColumnsOnThePlate(std::vector<SupportLayerAreas>& layers) {
+    for (std::size_t i = 1; i < layers.size(); ++i)
+        layers[i].support = intersectAll(layers[i].support, layers[i - 1].support);
+}
+
+void splitInterfaces(std::vector<SupportLayerAreas>& out, const std::vector<Paths>& model,
+                     const SupportAreaParams& p, int threads) {
+    const int n = static_cast<int>(model.size());
+    const int roof_window = p.roof_layers > 0 ? p.top_gap_layers + p.roof_layers : 0;
+    const int floor_window = p.floor_layers > 0 ? p.bottom_gap_layers + p.floor_layers : 0;
+    const std::vector<Paths> above = windowUnions(model, roof_window, threads);
+    const std::vector<Paths> below = windowUnions(model, floor_window, threads);
+    parallelFor(model.size(), threads, [&](std::size_t index) {
+        const int i = static_cast<int>(index);
+        SupportLayerAreas& layer = out[index];
+        if (layer.support.empty())
+            return;
+        if (roof_window > 0 && i + 1 < n) {
+            const std::size_t from = static_cast<std::size_t>(std::min(i + 1, std::max(0, n - roof_window)));
+            layer.roof = intersectAll(layer.support, above[from]);
+        }
+        if (floor_window > 0 && i > 0) {
+            const std::size_t from = static_cast<std::size_t>(std::max(0, i - floor_window));
+            layer.floor = differenceOf(intersectAll(layer.support, below[from]), layer.roof);
+        }
+        layer.support = differenceOf(layer.support, unionOf(layer.roof, layer.floor));
+    });
+}
+
+}  // namespace
+
+Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vector<LayerZ>& heights,
+                          double angle_degrees, int threads, const std::vector<Paths>* blockers) {
+    Overhangs result;
+    result.basic.resize(layers.size());
+    result.full.resize(layers.size());
+    const double slope = std::tan(radiansFromDegrees(std::clamp(angle_degrees, 0.0, 89.9))) - 0.01;
+    parallelFor(layers.size(), threads, [&](std::size_t i) {
+        if (i == 0 || layers[i].outlines.empty())
+            return;
+        const coord_um thickness = heights[i].print_z - heights[i - 1].print_z;
+        const coord_um allowed = std::max<coord_um>(0, std::llround(double(thickness) * slope));
+        const Paths& here = layers[i].outlines;
+        result.basic[i] = differenceOf(here, offsetPolygons(layers[i - 1].outlines, allowed));
+        if (blockers && i < blockers->size() && !(*blockers)[i].empty())
+            result.basic[i] = differenceOf(result.basic[i], (*blockers)[i]);
+        if (!result.basic[i].empty())
+            result.full[i] = intersectAll(offsetPolygons(result.basic[i], allowed + 100), here);
+    });
+    return result;
+}
+
+std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& model,
+                                                   const Overhangs& overhangs, const SupportAreaParams& p,
+                                                   int threads, const SupportMeshAreas& meshes) {
+    const std::size_t n = model.size();
+    std::vector<Paths> simple(n), blocked(n);
+    parallelFor(n, threads, [&](std::size_t i) { simple[i] = cleanPolygons(model[i], kSimplifyUm); });
+    const std::size_t gap = static_cast<std::size_t>(std::max(0, p.bottom_gap_layers));
+    parallelFor(n, threads, [&](std::size_t i) {
+        blocked[i] = gap > 0 && i >= gap ? unionOf(simple[i], simple[i - gap]) : simple[i];
+    });
+    const std::vector<Paths> propagated = propagateDown(overhangs, simple, blocked, p);
+    const std::vector<Paths> from_meshes = supportMeshSupport(meshes, blocked);
+    std::vector<SupportLayerAreas> out(n);
+    const std::size_t top = static_cast<std::size_t>(std::max(0, p.top_gap_layers));
+    parallelFor(n, threads, [&](std::size_t i) {
+        if (propagated[i].empty() && from_meshes[i].empty())
+            return;
+        Paths area = p.offset_um != 0 ? offsetMiter(propagated[i], p.offset_um) : propagated[i];
+        if (!from_meshes[i].empty())
+            area = unionOf(area, from_meshes[i]);
+        area = differenceOf(area, disallowedArea(simple[i], overhangs.basic[i], p));
+        if (top > 0 && i + top < n)  // the overhangs' extension must not reach into the top gap
+            area = differenceOf(area, simple[i + top]);
+        out[i].support = removeSmallIslands(area, p.min_area_um2);
+    });
+    if (p.buildplate_only)
+        keepColumnsOnThePlate(out);
+    removeFloating(out, threads);
+    splitInterfaces(out, model, p, threads);
+    return out;
+}
+
+}  // namespace mixengine
