@@ -17,11 +17,15 @@ GCodeExport::GCodeExport(const ExportParams& params)
                   params.retraction_extra_prime_mm3},
       retraction_hop_um_(params.retraction_hop_um),
       fan_number_(params.fan_number),
-      motion_(params.motion_flavor),
-      temperatures_(params.temperatures) {
+      motion_(params.flavor.motion),
+      temperatures_(params.temperatures, params.flavor.m105_before_wait) {
     state().prime_speed_mm_s = params.prime_speed_mm_s;
-    if (params.mach3_axes)
-        dialect_->setAxisLetter('A');
+    dialect_->setAxisLetter(axisLetter(0));
+}
+
+char GCodeExport::axisLetter(int extruder) const {
+    const FlavorTraits& flavor = params_.flavor;
+    return flavor.axis_per_extruder ? static_cast<char>(flavor.axis + extruder) : flavor.axis;
 }
 
 GCodeExport::ExtruderState& GCodeExport::state() {
@@ -74,7 +78,7 @@ void GCodeExport::endMove(std::string_view words) {
 void GCodeExport::selectExtruder(const ToolChange& change) {
     if (change.extruder == extruder_)
         return;
-    if (params_.bfb)
+    if (params_.flavor.rpm_extrusion)
         out_ += bfb_.stop();
     line("T" + std::to_string(change.extruder));
     extruder_ = change.extruder;
@@ -87,8 +91,7 @@ void GCodeExport::selectExtruder(const ToolChange& change) {
         fan_ratio_ = -1;
     }
     state();  // a first use starts with nothing retracted, primed at its own prime speed
-    if (params_.mach3_axes)
-        dialect_->setAxisLetter(static_cast<char>('A' + change.extruder));
+    dialect_->setAxisLetter(axisLetter(change.extruder));
     resetExtrusionAxis();
 }
 
@@ -124,7 +127,7 @@ void GCodeExport::comment(std::string_view text) {
 }
 
 double GCodeExport::filamentOnAxis(double filament_mm) const {
-    if (!params_.volumetric)
+    if (!params_.flavor.volumetric_e)
         return filament_mm;
     const double radius = params_.filament_diameter_mm / 2.0;
     return filament_mm * std::numbers::pi * radius * radius;
@@ -136,7 +139,7 @@ double GCodeExport::filamentMm(double volume_mm3) const {
 }
 
 double GCodeExport::volumeOnAxis(double volume_mm3) const {
-    return params_.volumetric ? volume_mm3 : filamentMm(volume_mm3);
+    return params_.flavor.volumetric_e ? volume_mm3 : filamentMm(volume_mm3);
 }
 
 void GCodeExport::bfbTravel(const Point2& to, coord_um z, double speed_mm_s) {
@@ -191,7 +194,7 @@ void GCodeExport::updateOffset(const Point2& to, double volume_mm3, double speed
 void GCodeExport::travel(const Point2& to, double speed_mm_s) {
     if (to == position_)
         return;
-    if (params_.bfb)
+    if (params_.flavor.rpm_extrusion)
         return bfbTravel(to, z_, speed_mm_s);
 
     if (e_offset_ != 0) {  // flow-rate compensation: travel writes E too (newExtrusionConfig)
@@ -220,7 +223,7 @@ void GCodeExport::writeZ(coord_um z, double speed_mm_s, bool hop) {
     layer_z_ = z - hop_um_;
     if (z == z_)
         return;
-    if (params_.bfb) {  // every BFB move carries Z: the next one goes there (as CuraEngine)
+    if (params_.flavor.rpm_extrusion) {  // every BFB move carries Z: the next one goes there (as CuraEngine)
         timeMove(position_, z, 0, speed_mm_s, moveFeature());
         z_ = z;
         return;
@@ -242,7 +245,7 @@ void GCodeExport::hopTo(coord_um hop_um, bool rewrite, double speed_mm_s) {
     const coord_um layer = layer_z_;
     hop_um_ = hop_um;
     if (z_ == layer + hop_um) {  // up already: the line again, without a move to time
-        if (params_.bfb)
+        if (params_.flavor.rpm_extrusion)
             return;
         startHop(speed);
         appendZ(z_);
@@ -253,7 +256,7 @@ void GCodeExport::hopTo(coord_um hop_um, bool rewrite, double speed_mm_s) {
 }
 
 void GCodeExport::extrude(const Point2& to, double volume_mm3, double speed_mm_s) {
-    if (params_.bfb)
+    if (params_.flavor.rpm_extrusion)
         return bfbExtrude(to, volume_mm3, speed_mm_s);
     if (retracted() || hop_um_ > 0 || state().extra_prime_mm3 > 0)
         unretract();
@@ -307,7 +310,7 @@ void GCodeExport::retract() {
 }
 
 void GCodeExport::retractTo(const RetractionConfig& config) {
-    if (params_.bfb)
+    if (params_.flavor.rpm_extrusion)
         return;  // the firmware retracts when the motor stops (M103)
     ExtruderState& s = state();
     const double change_mm = config.amount_mm - s.retracted_mm;
@@ -339,7 +342,7 @@ void GCodeExport::unretract() {
 }
 
 void GCodeExport::primeInPlace() {
-    if (params_.bfb) {
+    if (params_.flavor.rpm_extrusion) {
         if (params_.firmware_retract)
             out_ += bfb_.prime();
         return;
@@ -401,7 +404,7 @@ void GCodeExport::setFan(double ratio) {
         return;
     fan_ratio_ = ratio;
     const std::string fan = fan_number_ != 0 ? " P" + std::to_string(fan_number_) : "";
-    if (params_.makerbot_fan) {
+    if (params_.flavor.fan_on_off) {
         line(ratio > 0 ? "M126 T0" : "M127 T0");  // Makerbot: the fan is on or off, no speed
     } else if (ratio <= 0) {
         line("M107" + fan);

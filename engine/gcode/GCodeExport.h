@@ -13,6 +13,7 @@
 
 #include "gcode/Bfb.h"
 #include "gcode/ExtrusionAxis.h"
+#include "gcode/Flavor.h"
 #include "gcode/MixDialect.h"
 #include "gcode/MotionCommands.h"
 #include "gcode/TemperatureCommands.h"
@@ -31,8 +32,10 @@ struct RetractionConfig {
 };
 
 struct ExportParams {
+    /// The firmware flavor's row (gcode/Flavor.h): E in mm³, the extrusion axis letters, BFB's
+    /// RPM-driven extrusion, the fan, acceleration/jerk and M105 forms, ...
+    FlavorTraits flavor = flavorTraits(Flavor::Marlin);
     double filament_diameter_mm = 2.85;
-    bool volumetric = false;            ///< E in mm³ of material (RepRap (Volumetric), UltiGCode)
     bool relative_extrusion = false;    ///< M83
     double retraction_amount_mm = 6.5;  ///< the first extruder's retraction (ToolChange for the others)
     double retraction_speed_mm_s = 25;
@@ -41,12 +44,8 @@ struct ExportParams {
     coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
     double z_hop_speed_mm_s = 10;    ///< speed_z_hop: the lifts and lowerings of z-hops
     bool firmware_retract = false;   ///< G10/G11 instead of E moves (machine_firmware_retract)
-    bool makerbot_fan = false;       ///< M126 T0 / M127 T0 instead of M106 / M107 (Makerbot flavor)
-    bool mach3_axes = false;         ///< MACH3 flavor: extruder n's axis is 'A' + n instead of E
-    bool bfb = false;                ///< BFB flavor: RPM-driven extrusion, firmware retraction (gcode/Bfb.h)
     Kinematics kinematics;
     MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
-    MotionFlavor motion_flavor = MotionFlavor::Marlin;  ///< M204/M205 dialect (gcode/MotionCommands.h)
     TemperatureCommandParams temperatures;  ///< nozzle temperature commands (gcode/TemperatureCommands.h)
     int fan_number = 0;  ///< the first extruder's machine_extruder_cooling_fan_number (P<n> when not 0)
     /// Flow-rate compensation (flow_rate_max_extrusion_offset, in the axis unit; 0 = off) and
@@ -152,6 +151,8 @@ class GCodeExport {
     /// Filament per extruder (index = extruder_nr), length or mm³ when volumetric.
     std::vector<double> filamentPerExtruder() const;
     int extruder() const { return extruder_; }
+    /// The firmware flavor written (ExportParams::flavor).
+    const FlavorTraits& flavor() const { return params_.flavor; }
     Point2 position() const { return position_; }  ///< of the active nozzle, in plan coordinates
     coord_um z() const { return z_; }
     bool retracted() const { return states_[static_cast<std::size_t>(extruder_)].retracted_mm > 0; }
@@ -184,6 +185,7 @@ class GCodeExport {
         bool primed = false;
     };
     ExtruderState& state();
+    char axisLetter(int extruder) const;  ///< the extrusion axis of `extruder` (E, or MACH3's A, B, ...)
     double filamentOnAxis(double filament_mm) const;  ///< filament in the axis unit
     /// BFB: a move without extrusion (the motor stops first).
     void bfbTravel(const Point2& to, coord_um z, double speed_mm_s);

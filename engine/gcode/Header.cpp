@@ -8,54 +8,6 @@
 
 namespace mixengine {
 
-Flavor flavorFromSetting(const std::string& text) {
-    if (text == "RepRap (Marlin/Sprinter)")
-        return Flavor::Marlin;
-    if (text == "RepRap (Volumetric)")
-        return Flavor::MarlinVolumetric;
-    if (text == "RepRap (RepRap)")
-        return Flavor::RepRap;
-    if (text == "Griffin")
-        return Flavor::Griffin;
-    if (text == "UltiGCode")
-        return Flavor::UltiGCode;
-    if (text == "BFB")
-        return Flavor::Bfb;
-    if (text == "MACH3")
-        return Flavor::Mach3;
-    if (text == "Repetier")
-        return Flavor::Repetier;
-    if (text == "Makerbot")
-        return Flavor::Makerbot;
-    return Flavor::Other;
-}
-
-std::string flavorName(Flavor flavor) {
-    switch (flavor) {
-        case Flavor::Marlin:
-            return "Marlin";
-        case Flavor::MarlinVolumetric:
-            return "Marlin(Volumetric)";
-        case Flavor::RepRap:
-            return "RepRap";
-        case Flavor::Griffin:
-            return "Griffin";
-        case Flavor::UltiGCode:
-            return "UltiGCode";
-        case Flavor::Bfb:
-            return "BFB";
-        case Flavor::Mach3:
-            return "Mach3";
-        case Flavor::Repetier:
-            return "Repetier";
-        case Flavor::Makerbot:
-            return "Makerbot";
-        case Flavor::Other:
-            break;
-    }
-    return "Marlin";
-}
-
 namespace {
 
 /// Six significant digits, as CuraEngine prints filament amounts ("2.55346m", "123457mm3").
@@ -67,7 +19,7 @@ std::string significant(double value) {
 
 std::string filamentList(const PrintSummary& summary) {
     std::string text;
-    const bool volumetric = summary.flavor == Flavor::MarlinVolumetric;
+    const bool volumetric = flavorTraits(summary.flavor).volumetric_e;
     for (std::size_t i = 0; i < summary.filament_per_extruder.size(); ++i) {
         if (i)
             text += ", ";
@@ -94,7 +46,9 @@ std::string seconds(double s) {
 }
 
 std::string griffinHeader(const PrintSummary& summary) {
-    std::string h = ";START_OF_HEADER\n;HEADER_VERSION:0.1\n;FLAVOR:Griffin\n";
+    std::string h = ";START_OF_HEADER\n;HEADER_VERSION:0.1\n;FLAVOR:";
+    h += flavorTraits(summary.flavor).header_name;
+    h += "\n";
     h += ";GENERATOR.NAME:MixEngine\n;GENERATOR.VERSION:" + summary.engine_version + "\n";
     h += ";TARGET_MACHINE.NAME:" + summary.machine_name + "\n";
     for (std::size_t i = 0; i < summary.extruders.size(); ++i) {
@@ -119,7 +73,9 @@ std::string griffinHeader(const PrintSummary& summary) {
 }
 
 std::string ultiGCodeHeader(const PrintSummary& summary) {
-    std::string h = ";FLAVOR:UltiGCode\n;TIME:" + seconds(summary.print_time_s) + "\n";
+    std::string h = ";FLAVOR:";
+    h += flavorTraits(summary.flavor).header_name;
+    h += "\n;TIME:" + seconds(summary.print_time_s) + "\n";
     for (std::size_t i = 0; i < std::max<std::size_t>(summary.extruders.size(), 2); ++i) {
         const double volume = i < summary.extruders.size() ? summary.extruders[i].volume_used_mm3 : 0.0;
         h += ";MATERIAL" + (i == 0 ? std::string() : std::to_string(i + 1)) + ":" +
@@ -136,17 +92,15 @@ std::string makeHeader(const PrintSummary& summary) {
     std::string generated = "\n;Generated with MixEngine " + summary.engine_version + "\n";
     for (const std::string& line : summary.extra_lines)
         generated += ";" + line + "\n";
-    if (summary.flavor == Flavor::Griffin)
+    const FlavorTraits& flavor = flavorTraits(summary.flavor);
+    if (flavor.header == HeaderStyle::Griffin)
         return griffinHeader(summary) + generated;
-    if (summary.flavor == Flavor::UltiGCode)
+    if (flavor.header == HeaderStyle::UltiGCode)
         return ultiGCodeHeader(summary) + generated;
-    std::string h;
-    h += ";FLAVOR:" + flavorName(summary.flavor) + "\n";
-    h += ";TIME:" + std::to_string(static_cast<long long>(summary.print_time_s)) + "\n";
-    const bool reprap_family = summary.flavor == Flavor::Marlin ||
-                               summary.flavor == Flavor::MarlinVolumetric ||
-                               summary.flavor == Flavor::RepRap || summary.flavor == Flavor::Other;
-    if (reprap_family) {
+    std::string h = ";FLAVOR:";
+    h += flavor.header_name;
+    h += "\n;TIME:" + std::to_string(static_cast<long long>(summary.print_time_s)) + "\n";
+    if (flavor.header == HeaderStyle::Long) {
         h += ";Filament used: " + filamentList(summary) + "\n";
         h += ";Layer height: " + formatDecimal(summary.layer_height_mm, 3) + "\n";
     }

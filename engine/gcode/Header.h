@@ -4,27 +4,11 @@
 #include <string>
 #include <vector>
 
+#include "gcode/Flavor.h"
 #include "gcode/TimeEstimate.h"
 #include "geometry/Point.h"
 
 namespace mixengine {
-
-enum class Flavor {
-    Marlin,
-    MarlinVolumetric,
-    RepRap,
-    Griffin,
-    UltiGCode,
-    Bfb,
-    Mach3,
-    Repetier,
-    Makerbot,
-    Other
-};
-
-/// From machine_gcode_flavor ("RepRap (Marlin/Sprinter)", ...); unknown text → Other.
-Flavor flavorFromSetting(const std::string& text);
-std::string flavorName(Flavor flavor);  ///< ";FLAVOR:" text: "Marlin", "RepRap", ...
 
 /// What Griffin and UltiGCode headers tell of each extruder train.
 struct ExtruderHeader {
@@ -54,9 +38,10 @@ struct PrintSummary {
     std::vector<std::string> extra_lines;
 };
 
-/// The header for summary.flavor: Griffin's ;START_OF_HEADER block, UltiGCode's ;MATERIAL: lines,
-/// or the Marlin/RepRap lines (;FLAVOR:, ;TIME:, ;Filament used:, ;Layer height:, bounds); BFB and
-/// Mach3, Repetier and Makerbot, as CuraEngine, only ;FLAVOR:, ;TIME: and the bounds.
+/// The header for summary.flavor, laid out as its FlavorTraits::header says (gcode/Flavor.h):
+/// Griffin's ;START_OF_HEADER block, UltiGCode's ;MATERIAL: lines, or the Marlin/RepRap lines
+/// (;FLAVOR:, ;TIME:, ;Filament used:, ;Layer height:, bounds); BFB and Mach3, Repetier and
+/// Makerbot, as CuraEngine, only ;FLAVOR:, ;TIME: and the bounds.
 std::string makeHeader(const PrintSummary& summary);
 
 }  // namespace mixengine

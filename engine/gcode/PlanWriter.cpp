@@ -138,8 +138,7 @@ void writeStep(const PlanStep& step, coord_um layer_z, const PlanTables& plan, c
             break;
         case PlanStep::Kind::Prime:
             if (static_cast<std::size_t>(gcode.extruder()) < params.extruders.size())
-                writePrimeTrain(params.extruders[static_cast<std::size_t>(gcode.extruder())].prime,
-                                params.griffin, gcode);
+                writePrimeTrain(params.extruders[static_cast<std::size_t>(gcode.extruder())].prime, gcode);
             break;
         case PlanStep::Kind::SetBedTemperature:
             gcode.line("M140 S" + formatDecimal(step.temperature_c, 1));
@@ -160,7 +159,7 @@ void writeLayer(const PlannedLayer& layer, int number, const PlanTables& tables,
                 const PlanWriterParams& params, GCodeExport& gcode, WrittenLayers& out) {
     gcode.takeText();  // start a fresh chunk
     gcode.comment("LAYER:" + std::to_string(number));
-    if (params.reset_e_each_layer && !gcode.retracted())
+    if (gcode.flavor().resets_e_each_layer && !gcode.retracted())
         gcode.resetExtrusionAxis();
     gcode.startLayer(layer.z, params.layer_change_speed_mm_s);
     gcode.newExtrusionConfig();

@@ -1,5 +1,6 @@
 #pragma once
-// Writes the layers of a PrintPlan through a GCodeExport: ;LAYER:n, the plan's steps, and
+// Writes the layers of a PrintPlan through a GCodeExport: ;LAYER:n, G92 E0 in absolute mode (when
+// the flavor resets E each layer, gcode/Flavor.h), the plan's steps, and
 // ;TIME_ELAPSED: at the end of each layer. Every layer is written, an empty one too (where CuraEngine
 // leaves out a layer with nothing to print but still counts it in ;LAYER_COUNT:), so that the
 // ;LAYER: lines of the model match ;LAYER_COUNT:. Returns one text chunk per layer (Cura's socket sends
@@ -40,9 +41,7 @@ struct ExtruderOutput {
 
 struct PlanWriterParams {
     double layer_change_speed_mm_s = 10;    ///< Z moves
-    bool reset_e_each_layer = true;         ///< G92 E0 at each layer start in absolute mode
     std::vector<ExtruderOutput> extruders;  ///< index = extruder_nr (needed for SetExtruder steps)
-    bool griffin = false;                   ///< machine_gcode_flavor Griffin: primes with G280
 };
 
 WrittenLayers writePlan(const PrintPlan& plan, const PlanWriterParams& params, GCodeExport& gcode);

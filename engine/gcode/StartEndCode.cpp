@@ -23,11 +23,6 @@ void appendCode(std::string& out, const std::string& code) {
 
 namespace {
 
-std::string flavorText(const Settings& global) {
-    return global.has("machine_gcode_flavor") ? global.text("machine_gcode_flavor")
-                                              : "RepRap (Marlin/Sprinter)";
-}
-
 double initialNozzleTemperature(const Settings& extruder0) {
     const double first = extruder0.temperatureCelsius("material_print_temperature_layer_0");
     return first != 0 ? first : extruder0.temperatureCelsius("material_print_temperature");
@@ -36,8 +31,8 @@ double initialNozzleTemperature(const Settings& extruder0) {
 /// The temperature lines Cura prepends, as CuraEngine writes them per flavor: only Marlin sets the
 /// target with M140 and asks M105 before waiting; Makerbot waits for the nozzle with M104 + M116.
 std::string prependedTemperatures(const Settings& global, const Settings& extruder0,
-                                  const std::string& flavor) {
-    const bool marlin = flavor == "RepRap (Marlin/Sprinter)";
+                                  const FlavorTraits& flavor) {
+    const bool marlin = flavor.m105_before_wait;
     std::string out;
     const bool heated_bed = global.flag("machine_heated_bed");
     const double bed = global.temperatureCelsius("material_bed_temperature_layer_0");
@@ -59,8 +54,8 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
         if (global.boolean("material_print_temp_wait")) {
             if (marlin)
                 appendLine(out, "M105");
-            appendLine(out, flavor == "Makerbot" ? "M104 S" + formatDecimal(nozzle, 1) + "\nM116"
-                                                 : "M109 S" + formatDecimal(nozzle, 1));
+            appendLine(out, flavor.nozzle_wait_m116 ? "M104 S" + formatDecimal(nozzle, 1) + "\nM116"
+                                                    : "M109 S" + formatDecimal(nozzle, 1));
         }
     }
     return out;
@@ -71,13 +66,12 @@ bool heatedBuildVolume(const Settings& global) {
 }
 
 /// What CuraEngine switches off before the end code: the bed and the build volume.
-std::string heatersOff(const Settings& global) {
+std::string heatersOff(const Settings& global, const FlavorTraits& flavor) {
     std::string out;
     if (global.flag("machine_heated_bed"))
         appendLine(out, "M140 S0");
-    const std::string flavor = flavorText(global);
     if (heatedBuildVolume(global) && global.temperatureCelsius("build_volume_temperature") != 0 &&
-        flavor != "UltiGCode" && flavor != "Griffin")
+        flavor.build_volume_temperature)
         appendLine(out, "M141 S0");
     return out;
 }
@@ -97,32 +91,30 @@ std::string nozzlesOff(const std::vector<Settings>& extruders, int active) {
 
 }  // namespace
 
-StartTemperature startNozzleTemperature(const Settings& global, const Settings& extruder0) {
-    const std::string flavor = flavorText(global);
+StartTemperature startNozzleTemperature(const Settings& global, const FlavorTraits& flavor,
+                                        const Settings& extruder0) {
     const bool nozzle_control =
         !extruder0.has("machine_nozzle_temp_enabled") || extruder0.boolean("machine_nozzle_temp_enabled");
-    if (flavor == "Griffin")
+    if (flavor.heats_nozzle_after_start)
         return {true, initialNozzleTemperature(extruder0), true};
-    if (flavor == "UltiGCode" || !nozzle_control || !global.boolean("material_print_temp_prepend"))
+    if (!flavor.prepends_temperatures || !nozzle_control || !global.boolean("material_print_temp_prepend"))
         return {};
     return {true, initialNozzleTemperature(extruder0), global.boolean("material_print_temp_wait")};
 }
 
-std::string startCode(const Settings& global, const Settings& extruder0, bool relative_extrusion) {
-    const std::string flavor = flavorText(global);
-    const bool reprap = flavor == "RepRap (RepRap)";
-    const bool griffin = flavor == "Griffin";
+std::string startCode(const Settings& global, const FlavorTraits& flavor, const Settings& extruder0,
+                      bool relative_extrusion) {
     std::string out;
-    if (reprap || griffin)
+    if (flavor.start_selects_tool)
         appendLine(out,
                    "T" + std::to_string(extruder0.has("extruder_nr") ? extruder0.integer("extruder_nr") : 0));
-    if (!griffin && flavor != "UltiGCode")
+    if (flavor.prepends_temperatures)
         out += prependedTemperatures(global, extruder0, flavor);
     appendLine(out, "M82 ;absolute extrusion mode");
     appendCode(out, global.text("machine_start_gcode"));
-    if (heatedBuildVolume(global) && flavor != "UltiGCode" && !griffin)
+    if (heatedBuildVolume(global) && flavor.build_volume_temperature)
         appendLine(out, "M141 S" + formatDecimal(global.temperatureCelsius("build_volume_temperature"), 1));
-    if (griffin)
+    if (flavor.heats_nozzle_after_start)
         appendLine(out, "M109 S" + formatDecimal(initialNozzleTemperature(extruder0), 1));
     if (relative_extrusion)
         appendLine(out, "M83 ;relative extrusion mode");
@@ -132,7 +124,7 @@ std::string startCode(const Settings& global, const Settings& extruder0, bool re
 std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::vector<Settings>& extruders,
                         bool relative_extrusion) {
     gcode.retract();
-    std::string out = gcode.takeText() + heatersOff(global);
+    std::string out = gcode.takeText() + heatersOff(global, gcode.flavor());
     if (global.flag("acceleration_enabled")) {
         gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, false);
         gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, true);
@@ -146,21 +138,21 @@ std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::v
     }
     gcode.setFan(0);
     out += gcode.takeText();
-    return out + endCode(global, relative_extrusion) + nozzlesOff(extruders, gcode.extruder()) +
-           ";End of Gcode\n";
+    return out + endCode(global, gcode.flavor(), relative_extrusion) +
+           nozzlesOff(extruders, gcode.extruder()) + ";End of Gcode\n";
 }
 
 namespace {
 
 /// The prime itself (see writePrimeTrain).
-void primeOnce(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+void primeOnce(const PrimeTrain& prime, GCodeExport& gcode) {
     if (prime.blob) {
         const Point2 here = gcode.position();
         const Point2 to = prime.absolute ? prime.position_um
                                          : Point2{here.X + prime.position_um.X, here.Y + prime.position_um.Y};
         gcode.travel(to, prime.travel_speed_mm_s);
     }
-    if (griffin) {
+    if (gcode.flavor().firmware_prime) {
         gcode.line(prime.blob ? "G280" : "G280 S1");
         if (!prime.blob)
             gcode.line("G0 Z" + formatCoordMm(micronsToMm(gcode.z())));
@@ -169,21 +161,19 @@ void primeOnce(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
 
 }  // namespace
 
-void writePrimeTrain(const PrimeTrain& prime, bool griffin, GCodeExport& gcode) {
+void writePrimeTrain(const PrimeTrain& prime, GCodeExport& gcode) {
     if (gcode.markPrimed())
-        primeOnce(prime, griffin, gcode);
+        primeOnce(prime, gcode);
     gcode.retractTo(gcode.retraction());
 }
 
-std::string endCode(const Settings& global, bool relative_extrusion) {
+std::string endCode(const Settings& global, const FlavorTraits& flavor, bool relative_extrusion) {
     std::string out;
     if (relative_extrusion)
         appendLine(out, "M82 ;absolute extrusion mode");
     appendCode(out, global.text("machine_end_gcode"));
     // As CuraEngine: the file ends in absolute mode, except on RepRap firmware (relative by default).
-    const bool reprap =
-        global.has("machine_gcode_flavor") && global.text("machine_gcode_flavor") == "RepRap (RepRap)";
-    appendLine(out, reprap ? "M83 ;relative extrusion mode" : "M82 ;absolute extrusion mode");
+    appendLine(out, flavor.ends_relative ? "M83 ;relative extrusion mode" : "M82 ;absolute extrusion mode");
     return out;
 }
 

@@ -46,7 +46,7 @@ std::vector<std::string> TemperatureCommands::set(int extruder, double celsius, 
     if ((!wait || n.waited) && n.celsius == celsius)
         return {};
     std::vector<std::string> lines;
-    if (wait && params_.m105_before_wait)
+    if (wait && m105_before_wait_)
         lines.emplace_back("M105");
     std::string command = wait ? "M109" : "M104";
     if (extruder != active)

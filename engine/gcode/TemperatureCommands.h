@@ -1,6 +1,7 @@
 #pragma once
 // The nozzle temperature commands, as CuraEngine 4.13's writeTemperatureCommand writes them:
-//   M104 [T<n>] S<c> (set), M109 [T<n>] S<c> (set and wait; Marlin: M105 before it), T<n> only
+//   M104 [T<n>] S<c> (set), M109 [T<n>] S<c> (set and wait; Marlin: M105 before it, see
+//   FlavorTraits::m105_before_wait in gcode/Flavor.h), T<n> only
 //   for a nozzle other than the active one, S with up to one decimal;
 //   - nothing when the nozzle is already at that temperature (and, for M109, was waited for);
 //   - machine_nozzle_temp_enabled = false for the nozzle: nothing;
@@ -16,7 +17,6 @@
 namespace mixengine {
 
 struct TemperatureCommandParams {
-    bool m105_before_wait = false;          ///< RepRap (Marlin/Sprinter)
     bool share_heater = false;              ///< machine_extruders_share_heater
     bool always_write_active_tool = false;  ///< machine_always_write_active_tool
     std::vector<bool> controlled;           ///< machine_nozzle_temp_enabled by extruder_nr (absent: true)
@@ -24,7 +24,9 @@ struct TemperatureCommandParams {
 
 class TemperatureCommands {
   public:
-    explicit TemperatureCommands(TemperatureCommandParams params = {}) : params_(std::move(params)) {}
+    /// `m105_before_wait`: M105 before every M109 (the flavor's, gcode/Flavor.h).
+    explicit TemperatureCommands(TemperatureCommandParams params = {}, bool m105_before_wait = false)
+        : params_(std::move(params)), m105_before_wait_(m105_before_wait) {}
 
     /// What the start code left: nozzle `extruder` at `celsius`, waited for or not.
     void assume(int extruder, double celsius, bool waited);
@@ -41,6 +43,7 @@ class TemperatureCommands {
     void shareHeater(int extruder, double celsius, bool wait);
 
     TemperatureCommandParams params_;
+    bool m105_before_wait_;
     std::vector<Nozzle> nozzles_;
 };
 

@@ -169,9 +169,9 @@ std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& write
                 static_cast<int>(e),
                 scene.machine.extruders[e].millimetres("machine_extruders_shared_nozzle_initial_retraction"));
     }
-    if (!writer.griffin || writer.extruders.empty())
+    if (!gcode.flavor().firmware_prime || writer.extruders.empty())
         return "";
-    writePrimeTrain(writer.extruders.front().prime, true, gcode);
+    writePrimeTrain(writer.extruders.front().prime, gcode);
     return gcode.takeText();
 }
 
@@ -229,10 +229,11 @@ std::string startText(const Scene& scene, const ExportParams& export_params, con
     const Settings& global = scene.machine.global;
     const Settings& first = scene.machine.extruders.front();
     const bool relative = relativeExtrusion(global);
-    std::string start = startCode(global, first, relative);
+    const FlavorTraits& flavor = export_params.flavor;
+    std::string start = startCode(global, flavor, first, relative);
     if (!relative)
-        start += export_params.mach3_axes ? "G92 A0\n" : "G92 E0\n";
-    if (export_params.bfb)
+        start += std::string("G92 ") + flavor.axis + "0\n";
+    if (flavor.auto_retraction)
         start +=
             bfbAutoRetraction(first.lengthMicrons("retraction_amount"), first.boolean("retraction_enable"));
     start += prime;
@@ -256,17 +257,17 @@ WrittenLayers writeLayers(const PrintPlan& plan, const PlanWriterParams& params,
 void finishOutput(const Scene& scene, const ExportParams& export_params, GCodeExport& gcode,
                   GCodeOutput& output) {
     const Settings& global = scene.machine.global;
-    output.summary.flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
+    output.summary.flavor = export_params.flavor.flavor;
     output.summary.print_time_s = gcode.elapsedSeconds();
     output.summary.time_by_feature_s = gcode.secondsByFeature();
     output.summary.filament_per_extruder = gcode.filamentPerExtruder();
     output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
-    describeExtruders(scene, export_params.volumetric, output.summary);
+    describeExtruders(scene, export_params.flavor.volumetric_e, output.summary);
     output.summary.layer_height_mm = global.millimetres("layer_height");
     output.summary.engine_version = MIXENGINE_VERSION;
     output.header = makeHeader(output.summary);
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relativeExtrusion(global));
-    if (export_params.bfb)
+    if (export_params.flavor.crlf_line_ends)
         useBfbLineEnds(bfbVerbatim(scene), output);
 }
 
@@ -355,7 +356,8 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     const Settings& global = scene.machine.global;
     const ExportParams export_params = exportParams(scene);
     GCodeExport gcode(export_params);
-    const StartTemperature start = startNozzleTemperature(global, scene.machine.extruders.front());
+    const StartTemperature start =
+        startNozzleTemperature(global, export_params.flavor, scene.machine.extruders.front());
     if (start.set)
         gcode.assumeNozzleTemperature(0, start.celsius, start.waited);
     const PlanWriterParams writer = writerParams(scene);
@@ -371,9 +373,9 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     std::optional<Chamber> chamber_state;  // what the mixing chamber holds after the groups printed so far
     output.summary.min = {INT64_MAX, INT64_MAX, INT64_MAX};
     output.summary.max = {INT64_MIN, INT64_MIN, INT64_MIN};
-    const std::vector<std::string> verbatim =
-        export_params.bfb ? bfbVerbatim(scene) : std::vector<std::string>{};
-    LayerOutput layers(stream, export_params.bfb ? &verbatim : nullptr, output.layer_chunks);
+    const bool crlf = export_params.flavor.crlf_line_ends;
+    const std::vector<std::string> verbatim = crlf ? bfbVerbatim(scene) : std::vector<std::string>{};
+    LayerOutput layers(stream, crlf ? &verbatim : nullptr, output.layer_chunks);
     const std::size_t last_group = lastGroupWithMeshes(scene);
     int next_index = 0;
     int model_layers = 0;

@@ -29,9 +29,8 @@ ExportParams exportParams(const Scene& scene) {
     const Settings& global = scene.machine.global;
     const Settings& e0 = scene.machine.extruders.front();
     ExportParams p;
+    p.flavor = flavorOf(global.text("machine_gcode_flavor"));  // the one read of the flavor
     p.filament_diameter_mm = e0.millimetres("material_diameter");
-    const Flavor flavor = flavorFromSetting(global.text("machine_gcode_flavor"));
-    p.volumetric = flavor == Flavor::MarlinVolumetric || flavor == Flavor::UltiGCode;
     p.relative_extrusion =
         relativeExtrusion(global);  // mixing/setup/MixingSettings.h: M83 when a dialect needs it
     p.retraction_amount_mm = e0.boolean("retraction_enable") ? e0.millimetres("retraction_amount") : 0.0;
@@ -45,10 +44,6 @@ ExportParams exportParams(const Scene& scene) {
     p.fan_number = static_cast<int>(e0.integer("machine_extruder_cooling_fan_number"));
     p.kinematics = kinematicsOf(global);
     p.mixing = parseMixingOutput(global);
-    p.motion_flavor = motionFlavor(global.text("machine_gcode_flavor"));
-    p.makerbot_fan = global.text("machine_gcode_flavor") == "Makerbot";
-    p.mach3_axes = flavor == Flavor::Mach3;
-    p.bfb = flavor == Flavor::Bfb;
 
     if (global.has("flow_rate_max_extrusion_offset")) {
         p.flow_offset_max = global.real("flow_rate_max_extrusion_offset");
@@ -60,7 +55,6 @@ ExportParams exportParams(const Scene& scene) {
 TemperatureCommandParams temperatureCommandParams(const Scene& scene) {
     const Settings& global = scene.machine.global;
     TemperatureCommandParams t;
-    t.m105_before_wait = global.text("machine_gcode_flavor") == "RepRap (Marlin/Sprinter)";
     t.share_heater = global.boolean("machine_extruders_share_heater");
     t.always_write_active_tool = global.boolean("machine_always_write_active_tool");
     for (const Settings& e : scene.machine.extruders)
@@ -117,8 +111,6 @@ PlanWriterParams writerParams(const Scene& scene) {
     const Settings& global = scene.machine.global;
     PlanWriterParams writer;
     writer.layer_change_speed_mm_s = global.velocityMmPerS("speed_z_hop");
-    writer.griffin = global.text("machine_gcode_flavor") == "Griffin";
-    writer.reset_e_each_layer = global.text("machine_gcode_flavor") != "BFB";  // no E words to reset
     const bool offset_coords = !global.has("machine_use_extruder_offset_to_offset_coords") ||
                                global.boolean("machine_use_extruder_offset_to_offset_coords");
     for (std::size_t i = 0; i < scene.machine.extruders.size(); ++i) {

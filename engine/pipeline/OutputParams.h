@@ -12,9 +12,11 @@ namespace mixengine {
 /// machine_acceleration / acceleration_print, jerk, per-axis limits (Cura's keys).
 Kinematics kinematicsOf(const Settings& global);
 
+/// The writer's parameters; `flavor` is the row of machine_gcode_flavor (gcode/Flavor.h), the one
+/// place the setting is read: the rest of the G-code stage takes the flavor from here.
 ExportParams exportParams(const Scene& scene);
 
-/// How nozzle temperature commands are written (flavor, shared heater, active tool, nozzle control).
+/// How nozzle temperature commands are written (shared heater, active tool, nozzle control).
 TemperatureCommandParams temperatureCommandParams(const Scene& scene);
 
 PlanWriterParams writerParams(const Scene& scene);

@@ -49,7 +49,7 @@ TEST(Bfb, AutoRetractionAndLineEnds) {
 
 TEST(Bfb, ExportWritesNoEWordsAndCarriesZOnTheNextMove) {
     ExportParams p;
-    p.bfb = true;
+    p.flavor = flavorTraits(Flavor::Bfb);
     p.firmware_retract = true;
     p.filament_diameter_mm = 1.75;
     GCodeExport gcode(p);

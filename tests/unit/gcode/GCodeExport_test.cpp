@@ -58,7 +58,7 @@ TEST(GCodeExport, AbsoluteSequence) {
 // MACH3 (CuraEngine's extruderCharacter): extruder n's axis is 'A' + n in moves, retractions and resets.
 TEST(GCodeExport, Mach3WritesTheAAxisPerExtruder) {
     ExportParams p = marlin175();
-    p.mach3_axes = true;
+    p.flavor = flavorTraits(Flavor::Mach3);
     GCodeExport g(p);
     g.extrude({20'000, 0}, 1.0, 30);
     g.retract();
@@ -92,7 +92,7 @@ TEST(GCodeExport, RelativeSequence) {
 
 TEST(GCodeExport, VolumetricExtrusionInCubicMillimetres) {
     ExportParams p = marlin175();
-    p.volumetric = true;
+    p.flavor = flavorTraits(Flavor::MarlinVolumetric);
     GCodeExport g(p);
     g.extrude({10'000, 0}, 1.5, 30);
     g.extrude({20'000, 0}, 0.25, 30);
@@ -106,7 +106,7 @@ TEST(GCodeExport, VolumetricExtrusionInCubicMillimetres) {
 // "G1 F1500 E-41.46608" (6.5 mm × π·1.425² mm²); MixEngine writes 6.5 mm³.
 TEST(GCodeExport, VolumetricRetractionIsConvertedToCubicMillimetres) {
     ExportParams p = marlin175();
-    p.volumetric = true;
+    p.flavor = flavorTraits(Flavor::MarlinVolumetric);
     p.filament_diameter_mm = 2.85;
     GCodeExport g(p);
     g.extrude({10'000, 0}, 10.0, 30);
@@ -231,7 +231,7 @@ TEST(GCodeExport, TimeIsBookedByFeature) {
 TEST(GCodeExport, VolumetricTimeEstimateCountsMillimetresOfFilament) {
     for (const bool volumetric : {false, true}) {
         ExportParams p = marlin175();
-        p.volumetric = volumetric;
+        p.flavor = flavorTraits(volumetric ? Flavor::MarlinVolumetric : Flavor::Marlin);
         p.kinematics.acceleration_mm_s2 = 1e12;
         p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};
         p.kinematics.jerk_xy_mm_s = p.kinematics.jerk_z_mm_s = p.kinematics.jerk_e_mm_s = 1e9;

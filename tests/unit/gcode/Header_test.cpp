@@ -57,21 +57,9 @@ TEST(Header, NoFilamentIsZeroMetres) {
     EXPECT_NE(makeHeader(s).find("\n;Filament used: 0m\n"), std::string::npos) << makeHeader(s);
 }
 
-TEST(Header, FlavorFromSetting) {
-    EXPECT_EQ(flavorFromSetting("RepRap (Marlin/Sprinter)"), Flavor::Marlin);
-    EXPECT_EQ(flavorFromSetting("RepRap (Volumetric)"), Flavor::MarlinVolumetric);
-    EXPECT_EQ(flavorFromSetting("RepRap (RepRap)"), Flavor::RepRap);
-    EXPECT_EQ(flavorFromSetting("Griffin"), Flavor::Griffin);
-    EXPECT_EQ(flavorFromSetting("UltiGCode"), Flavor::UltiGCode);
-    EXPECT_EQ(flavorFromSetting("MACH3"), Flavor::Mach3);
-    EXPECT_EQ(flavorFromSetting("BFB"), Flavor::Bfb);
-    EXPECT_EQ(flavorFromSetting("marlin"), Flavor::Other);
-    EXPECT_EQ(flavorFromSetting(""), Flavor::Other);
-    EXPECT_EQ(flavorName(Flavor::Marlin), "Marlin");
-    EXPECT_EQ(flavorName(Flavor::MarlinVolumetric), "Marlin(Volumetric)");
-    EXPECT_EQ(flavorName(Flavor::RepRap), "RepRap");
-    EXPECT_EQ(flavorName(Flavor::Griffin), "Griffin");
-    EXPECT_EQ(flavorName(Flavor::UltiGCode), "UltiGCode");
+// Any other machine_gcode_flavor text (gcode/Flavor.h Unknown) gets Marlin's header.
+TEST(Header, UnknownFlavorWritesMarlinsHeader) {
+    EXPECT_EQ(makeHeader(summary(Flavor::Unknown)), makeHeader(summary(Flavor::Marlin)));
 }
 
 // CuraEngine 4.13 writes `static_cast<int>(print_time)` (GCodeExport::getFileHeader), i.e. truncates.
@@ -99,9 +87,10 @@ TEST(Header, FilamentHasSixSignificantDigitsLikeCuraEngine) {
 // ";FLAVOR:Mach3" / "Repetier" / "BFB" / "Makerbot" and no ";Filament used:" / ";Layer height:" lines
 // (those are written for Marlin, RepRap and Marlin(Volumetric) only).
 TEST(Header, OtherFlavoursKeepTheirNameLikeCuraEngine) {
-    const std::string header = makeHeader(summary(flavorFromSetting("MACH3")));
+    const std::string header = makeHeader(summary(Flavor::Mach3));
     EXPECT_EQ(header.rfind(";FLAVOR:Mach3\n;TIME:5626\n;MINX:", 0), 0U) << header;
-    EXPECT_EQ(flavorName(flavorFromSetting("Repetier")), "Repetier");
+    EXPECT_EQ(makeHeader(summary(Flavor::Repetier)).rfind(";FLAVOR:Repetier\n;TIME:5626\n;MINX:", 0), 0U);
+    EXPECT_EQ(makeHeader(summary(Flavor::Makerbot)).rfind(";FLAVOR:Makerbot\n;TIME:5626\n;MINX:", 0), 0U);
     EXPECT_EQ(makeHeader(summary(Flavor::Bfb)).rfind(";FLAVOR:BFB\n;TIME:5626\n;MINX:", 0), 0U);
 }
 

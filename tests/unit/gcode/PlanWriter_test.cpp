@@ -59,7 +59,7 @@ PrintPlan twoLayerPlan() {
 ExportParams params() {
     ExportParams p;
     p.filament_diameter_mm = 1.75;
-    p.volumetric = true;  // E equals the volume: easy to read
+    p.flavor = flavorTraits(Flavor::MarlinVolumetric);  // E equals the volume: easy to read
     p.retraction_amount_mm = 1.0;
     // Acceleration and jerk so high that every move takes distance / speed: easy to check.
     p.kinematics.acceleration_mm_s2 = 1e12;
@@ -119,9 +119,10 @@ TEST(GCodePlanWriter, NegativeLayerNumbersAndNoReset) {
     raft.z = 200;
     raft.steps = {extrude({1'000, 0}, 0.1)};
     plan.layers = {raft};
-    GCodeExport gcode(params());
+    ExportParams no_reset = params();
+    no_reset.flavor.resets_e_each_layer = false;
+    GCodeExport gcode(no_reset);
     PlanWriterParams p;
-    p.reset_e_each_layer = false;
     const WrittenLayers written = writePlan(plan, p, gcode);
     ASSERT_EQ(written.chunks.size(), 1U);
     EXPECT_EQ(written.chunks[0].rfind(";LAYER:-2\nG0 F600 Z0.2\nG1 F1800 X1 Y0 E0.1\n;TIME_ELAPSED:", 0), 0U)
@@ -191,7 +192,7 @@ TEST(GCodePlanWriter, ToolChangeWithNozzleOffset) {
 // its next extrusion primes the rest at its own prime speed.
 TEST(GCodePlanWriter, BackToAnExtruderLeftWithTheSwitchRetraction) {
     ExportParams e = params();
-    e.volumetric = false;
+    e.flavor = flavorTraits(Flavor::Marlin);
     e.retraction_amount_mm = 6.5;
     e.retraction_speed_mm_s = 25;
     e.prime_speed_mm_s = 15;

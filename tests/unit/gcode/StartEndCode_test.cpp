@@ -33,39 +33,45 @@ Settings extruder0(const char* layer0 = "215", const char* print = "200") {
                     {{"material_print_temperature_layer_0", layer0}, {"material_print_temperature", print}});
 }
 
+/// The flavor row of the settings' machine_gcode_flavor (pipeline/OutputParams reads it so).
+const FlavorTraits& flavorIn(const Settings& g) {
+    return flavorOf(g.text("machine_gcode_flavor"));
+}
+
 // Tokens were expanded before (by Cura, or settings/FrontendValues): startCode keeps them verbatim.
 const std::string kStart = "G28 ;Home\nG1 Y{machine_depth} ;{print_time}\n";
 
 TEST(GCodeStartEndCode, WaitForBedAndNozzle) {
-    EXPECT_EQ(startCode(global(), extruder0(), false),
+    EXPECT_EQ(startCode(global(), flavorIn(global()), extruder0(), false),
               "M140 S60\nM105\nM190 S60\nM104 S215\nM105\nM109 S215\n" + std::string(kM82) + kStart);
 }
 
 TEST(GCodeStartEndCode, NoPrependNoTemperatureLines) {
     const Settings g =
         global({{"material_bed_temp_prepend", "False"}, {"material_print_temp_prepend", "False"}});
-    EXPECT_EQ(startCode(g, extruder0(), false), kM82 + kStart);
+    EXPECT_EQ(startCode(g, flavorIn(g), extruder0(), false), kM82 + kStart);
 }
 
 TEST(GCodeStartEndCode, UnheatedBedGetsNoBedLines) {
     const Settings g = global({{"machine_heated_bed", "False"}});
-    EXPECT_EQ(startCode(g, extruder0("212.5"), false),
+    EXPECT_EQ(startCode(g, flavorIn(g), extruder0("212.5"), false),
               "M104 S212.5\nM105\nM109 S212.5\n" + std::string(kM82) + kStart);
 }
 
 TEST(GCodeStartEndCode, RelativeExtrusionSwitchesAfterTheStartCode) {
     const Settings g =
         global({{"material_bed_temp_prepend", "False"}, {"material_print_temp_prepend", "False"}});
-    EXPECT_EQ(startCode(g, extruder0(), true), kM82 + kStart + kM83);
-    EXPECT_EQ(endCode(g, true), std::string(kM82) + "M84\n" + kM82);
+    EXPECT_EQ(startCode(g, flavorIn(g), extruder0(), true), kM82 + kStart + kM83);
+    EXPECT_EQ(endCode(g, flavorIn(g), true), std::string(kM82) + "M84\n" + kM82);
 }
 
 TEST(GCodeStartEndCode, CodeIsWrittenVerbatim) {
     const Settings g = global({{"material_bed_temp_prepend", "False"},
                                {"material_print_temp_prepend", "False"},
                                {"machine_end_gcode", "G1 X{machine_depth}\nM84 ;{jobname}"}});
-    EXPECT_EQ(endCode(g, false).rfind("G1 X{machine_depth}\nM84 ;{jobname}\n", 0), 0U) << endCode(g, false);
-    EXPECT_NE(startCode(g, extruder0(), false).find("G1 Y{machine_depth} ;{print_time}\n"),
+    EXPECT_EQ(endCode(g, flavorIn(g), false).rfind("G1 X{machine_depth}\nM84 ;{jobname}\n", 0), 0U)
+        << endCode(g, flavorIn(g), false);
+    EXPECT_NE(startCode(g, flavorIn(g), extruder0(), false).find("G1 Y{machine_depth} ;{print_time}\n"),
               std::string::npos);
 }
 
@@ -75,7 +81,7 @@ TEST(GCodeStartEndCode, StartCodeEndingInNewlineGetsABlankLine) {
     const Settings g = global({{"material_bed_temp_prepend", "False"},
                                {"material_print_temp_prepend", "False"},
                                {"machine_start_gcode", "G28\n"}});
-    EXPECT_EQ(startCode(g, extruder0(), false), std::string(kM82) + "G28\n\n");
+    EXPECT_EQ(startCode(g, flavorIn(g), extruder0(), false), std::string(kM82) + "G28\n\n");
 }
 
 // BUG (engine/gcode/StartEndCode.cpp, startCode: `appendLine(out, "M105")` after M140 and after M104
@@ -85,9 +91,10 @@ TEST(GCodeStartEndCode, StartCodeEndingInNewlineGetsABlankLine) {
 TEST(GCodeStartEndCode, NoM105WithoutWaiting) {
     const Settings no_wait =
         global({{"material_bed_temp_wait", "False"}, {"material_print_temp_wait", "False"}});
-    EXPECT_EQ(startCode(no_wait, extruder0(), false), "M140 S60\nM104 S215\n" + std::string(kM82) + kStart);
+    EXPECT_EQ(startCode(no_wait, flavorIn(no_wait), extruder0(), false),
+              "M140 S60\nM104 S215\n" + std::string(kM82) + kStart);
     const Settings bed_wait = global({{"material_print_temp_wait", "False"}});
-    EXPECT_EQ(startCode(bed_wait, extruder0(), false),
+    EXPECT_EQ(startCode(bed_wait, flavorIn(bed_wait), extruder0(), false),
               "M140 S60\nM105\nM190 S60\nM104 S215\n" + std::string(kM82) + kStart);
 }
 
@@ -97,7 +104,7 @@ TEST(GCodeStartEndCode, NoM105WithoutWaiting) {
 // MixEngine writes "M140 S0 ... M190 S0" and "M104 S0 ... M109 S0".
 TEST(GCodeStartEndCode, ZeroInitialTemperaturesLikeCuraEngine) {
     const Settings g = global({{"material_bed_temperature_layer_0", "0"}});
-    EXPECT_EQ(startCode(g, extruder0("0", "205"), false),
+    EXPECT_EQ(startCode(g, flavorIn(g), extruder0("0", "205"), false),
               "M104 S205\nM105\nM109 S205\n" + std::string(kM82) + kStart);
 }
 
@@ -105,16 +112,16 @@ TEST(GCodeStartEndCode, ZeroInitialTemperaturesLikeCuraEngine) {
 // end code — "M82 ;absolute extrusion mode" (Marlin), "M83 ;relative extrusion mode" for
 // RepRap (RepRap) — also without relative_extrusion. MixEngine writes it only when relative.
 TEST(GCodeStartEndCode, EndCodeRestoresTheExtrusionModeLikeCuraEngine) {
-    EXPECT_EQ(endCode(global(), false), "M84\n" + std::string(kM82));
+    EXPECT_EQ(endCode(global(), flavorIn(global()), false), "M84\n" + std::string(kM82));
     const Settings reprap = global({{"machine_gcode_flavor", "RepRap (RepRap)"}});
-    EXPECT_EQ(endCode(reprap, false), "M84\n" + std::string(kM83));
+    EXPECT_EQ(endCode(reprap, flavorIn(reprap), false), "M84\n" + std::string(kM83));
 }
 
 // For RepRap (RepRap) CuraEngine writes "T0" first, no "M140" before "M190" and no "M105" lines (observed:
 // "T0 / M190 S60 / M104 S212.5 / M109 S212.5").
 TEST(GCodeStartEndCode, RepRapFlavourTemperatureLinesLikeCuraEngine) {
     const Settings reprap = global({{"machine_gcode_flavor", "RepRap (RepRap)"}});
-    EXPECT_EQ(startCode(reprap, extruder0("212.5"), false),
+    EXPECT_EQ(startCode(reprap, flavorIn(reprap), extruder0("212.5"), false),
               "T0\nM190 S60\nM104 S212.5\nM109 S212.5\n" + std::string(kM82) + kStart);
 }
 
@@ -122,13 +129,13 @@ TEST(GCodeStartEndCode, RepRapFlavourTemperatureLinesLikeCuraEngine) {
 // code, then "M109 S<initial temperature>".
 TEST(GCodeStartEndCode, GriffinWaitsForTheNozzleAfterTheStartCode) {
     const Settings griffin = global({{"machine_gcode_flavor", "Griffin"}});
-    EXPECT_EQ(startCode(griffin, extruder0("212.5"), false),
+    EXPECT_EQ(startCode(griffin, flavorIn(griffin), extruder0("212.5"), false),
               "T0\n" + std::string(kM82) + kStart + "M109 S212.5\n");
 }
 
 TEST(GCodeStartEndCode, UltiGCodeHasNoTemperatureLines) {
     const Settings ulti = global({{"machine_gcode_flavor", "UltiGCode"}});
-    EXPECT_EQ(startCode(ulti, extruder0("212.5"), false), std::string(kM82) + kStart);
+    EXPECT_EQ(startCode(ulti, flavorIn(ulti), extruder0("212.5"), false), std::string(kM82) + kStart);
 }
 
 }  // namespace
@@ -137,8 +144,9 @@ TEST(GCodeStartEndCode, UltiGCodeHasNoTemperatureLines) {
 namespace mixengine {
 namespace {
 
-ExportParams s5Export() {
+ExportParams s5Export(Flavor flavor = Flavor::Griffin) {
     ExportParams p;
+    p.flavor = flavorTraits(flavor);
     p.retraction_amount_mm = 6.5;
     p.retraction_hop_um = 2000;  // the prime's retraction does not hop
     return p;
@@ -150,9 +158,9 @@ TEST(GCodeStartEndCode, PrimeTrainOnGriffinWithoutBlob) {
     GCodeExport g(s5Export());
     g.moveZ(200, 10);
     g.takeText();
-    writePrimeTrain(PrimeTrain{}, true, g);
+    writePrimeTrain(PrimeTrain{}, g);
     EXPECT_EQ(g.takeText(), "G280 S1\nG0 Z0.2\nG1 F1500 E-6.5\n");
-    writePrimeTrain(PrimeTrain{}, true, g);
+    writePrimeTrain(PrimeTrain{}, g);
     EXPECT_EQ(g.takeText(), "");
 }
 
@@ -160,10 +168,10 @@ TEST(GCodeStartEndCode, PrimeTrainOnGriffinWithoutBlob) {
 // retract.
 TEST(GCodeStartEndCode, PrimeBlobTravelsToThePrimePosition) {
     GCodeExport g(s5Export());
-    writePrimeTrain({true, {333'000, 6'000}, true, 150}, true, g);
+    writePrimeTrain({true, {333'000, 6'000}, true, 150}, g);
     EXPECT_EQ(g.takeText(), "G0 F9000 X333 Y6\nG280\nG1 F1500 E-6.5\n");
-    GCodeExport marlin(s5Export());
-    writePrimeTrain({true, {5'000, 0}, false, 150}, false, marlin);
+    GCodeExport marlin(s5Export(Flavor::Marlin));
+    writePrimeTrain({true, {5'000, 0}, false, 150}, marlin);
     EXPECT_EQ(marlin.takeText(), "G0 F9000 X5 Y0\nG1 F1500 E-6.5\n");
 }
 
@@ -172,7 +180,7 @@ TEST(GCodeStartEndCode, PrimeBlobTravelsToThePrimePosition) {
 TEST(GCodeStartEndCode, SharedNozzleStartsPrimedAndPartlyRetracted) {
     GCodeExport g(s5Export());
     g.assumePrimed(0, 1.0);
-    writePrimeTrain(PrimeTrain{}, true, g);
+    writePrimeTrain(PrimeTrain{}, g);
     EXPECT_EQ(g.takeText(), "G1 F1500 E-5.5\n");
 }
 

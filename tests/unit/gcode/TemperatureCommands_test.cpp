@@ -20,13 +20,13 @@ TEST(TemperatureCommands, SetWaitOtherNozzleAndNothingTwice) {
 }
 
 TEST(TemperatureCommands, MarlinAsksForTemperaturesBeforeWaiting) {
-    TemperatureCommands t({true, false, false, {}});
+    TemperatureCommands t({false, false, {}}, true);
     EXPECT_EQ(t.set(0, 210, true, 0), (Lines{"M105", "M109 S210"}));
     EXPECT_EQ(t.set(0, 200, false, 0), Lines{"M104 S200"});
 }
 
 TEST(TemperatureCommands, ActiveToolWrittenAgainAfterNamingAnother) {
-    TemperatureCommands t({false, false, true, {}});
+    TemperatureCommands t({false, true, {}}, false);
     EXPECT_EQ(t.set(1, 100, false, 0), (Lines{"M104 T1 S100", "T0"}));
     EXPECT_EQ(t.set(0, 200, false, 0), Lines{"M104 S200"});
 }
@@ -34,7 +34,7 @@ TEST(TemperatureCommands, ActiveToolWrittenAgainAfterNamingAnother) {
 // One heater for both nozzles: commands for the idle nozzle are dropped, and the active one's setting
 // holds for both (switching to T1 at the same temperature needs no wait).
 TEST(TemperatureCommands, SharedHeaterFollowsTheActiveNozzleOnly) {
-    TemperatureCommands t({false, true, false, {true, true}});
+    TemperatureCommands t({true, false, {true, true}}, false);
     EXPECT_EQ(t.set(1, 150, false, 0), Lines{});
     EXPECT_EQ(t.set(0, 210, true, 0), Lines{"M109 S210"});
     EXPECT_EQ(t.set(1, 210, true, 1), Lines{});
@@ -42,7 +42,7 @@ TEST(TemperatureCommands, SharedHeaterFollowsTheActiveNozzleOnly) {
 }
 
 TEST(TemperatureCommands, NothingForANozzleWithoutTemperatureControl) {
-    TemperatureCommands t({false, false, false, {true, false}});
+    TemperatureCommands t({false, false, {true, false}}, false);
     EXPECT_EQ(t.set(1, 200, true, 1), Lines{});
     EXPECT_EQ(t.set(0, 200, false, 1), Lines{"M104 T0 S200"});
 }

@@ -22,9 +22,11 @@ Scene twoTrains(const std::string& flavor) {
 }
 
 TEST(OutputParams, ExportParamsAreVolumetricForVolumetricFlavors) {
-    EXPECT_FALSE(exportParams(twoTrains("RepRap (Marlin/Sprinter)")).volumetric);
-    EXPECT_TRUE(exportParams(twoTrains("RepRap (Volumetric)")).volumetric);
-    EXPECT_TRUE(exportParams(twoTrains("UltiGCode")).volumetric);
+    EXPECT_FALSE(exportParams(twoTrains("RepRap (Marlin/Sprinter)")).flavor.volumetric_e);
+    EXPECT_TRUE(exportParams(twoTrains("RepRap (Volumetric)")).flavor.volumetric_e);
+    EXPECT_TRUE(exportParams(twoTrains("UltiGCode")).flavor.volumetric_e);
+    EXPECT_EQ(exportParams(twoTrains("Griffin")).flavor.flavor, Flavor::Griffin);
+    EXPECT_EQ(exportParams(twoTrains("MakerBot")).flavor.flavor, Flavor::Unknown);
 }
 
 TEST(OutputParams, ExtruderVolumesFromFilamentLengthOrVolume) {
