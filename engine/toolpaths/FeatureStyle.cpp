@@ -5,6 +5,9 @@
 namespace mixengine {
 
 int ownExtruder(const Settings& s) {
+    // extruder_nr is an extruder train's setting (fdmextruder): the global scope has none, and prints with 0
+    if (!s.has(key::extruder_nr))
+        return 0;
     const int nr = s.extruderIndex(key::extruder_nr);
     return nr < 0 ? 0 : nr;
 }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../SettingsTestSupport.h"
+
 namespace mixengine {
 namespace {
 
@@ -25,12 +27,12 @@ SettingValues globalValues() {
 }
 
 Settings global(const SettingValues& changes = {}) {
-    return Settings("global settings", globalValues()).with("global settings", changes);
+    return test::defaultsWith("global settings", globalValues()).with("global settings", changes);
 }
 
 Settings extruder0(const char* layer0 = "215", const char* print = "200") {
-    return Settings("extruder 0",
-                    {{"material_print_temperature_layer_0", layer0}, {"material_print_temperature", print}});
+    return test::defaultsWith("extruder 0", {{"material_print_temperature_layer_0", layer0},
+                                             {"material_print_temperature", print}});
 }
 
 // Tokens were expanded before (by Cura, or settings/FrontendValues): startCode keeps them verbatim.
