@@ -192,7 +192,7 @@ std::string filamentName(const Settings& global, int channel, int channels) {
 }
 
 int channelCount(const Settings& global) {
-    return global.has("mixing_channels") ? static_cast<int>(global.integer("mixing_channels")) : 2;
+    return static_cast<int>(global.integer(key::mixing_channels));
 }
 
 void checkRequest(const SliceRequest& request, const CalibrateOptions& options, const Settings& global) {
@@ -204,7 +204,7 @@ void checkRequest(const SliceRequest& request, const CalibrateOptions& options, 
         throw InputError("calibrate-chamber: --next is not taken (one tower, one mesh group)");
     if (request.output.empty())
         throw InputError("calibrate-chamber: -o <file.gcode> is needed (the guide goes to standard output)");
-    if (global.has("adhesion_type") && global.text("adhesion_type") == "raft")
+    if (global.text(key::adhesion_type) == "raft")
         throw InputError(
             "calibrate-chamber: adhesion_type raft lifts the tower off the plate; use skirt, brim or none");
     const int channels = channelCount(global);

@@ -68,7 +68,7 @@ void loadModel(ParseState& state, const std::string& path) {
     mesh.default_extruder = state.extruder;
     if (const std::string* text = state.rotationText()) {
         mesh.transform =
-            Settings("command line", {{"mesh_rotation_matrix", *text}}).matrix3("mesh_rotation_matrix");
+            Settings("command line", {{"mesh_rotation_matrix", *text}}).matrix3(key::mesh_rotation_matrix);
     }
     state.group().meshes.push_back(std::move(mesh));
     state.focus = Focus::Mesh;

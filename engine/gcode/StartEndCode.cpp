@@ -24,8 +24,8 @@ void appendCode(std::string& out, const std::string& code) {
 namespace {
 
 double initialNozzleTemperature(const Settings& extruder0) {
-    const double first = extruder0.temperatureCelsius("material_print_temperature_layer_0");
-    return first != 0 ? first : extruder0.temperatureCelsius("material_print_temperature");
+    const double first = extruder0.temperatureCelsius(key::material_print_temperature_layer_0);
+    return first != 0 ? first : extruder0.temperatureCelsius(key::material_print_temperature);
 }
 
 /// The temperature lines Cura prepends, as CuraEngine writes them per flavor: only Marlin sets the
@@ -34,10 +34,10 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
                                   const FlavorTraits& flavor) {
     const bool marlin = flavor.m105_before_wait;
     std::string out;
-    const bool heated_bed = global.flag("machine_heated_bed");
-    const double bed = global.temperatureCelsius("material_bed_temperature_layer_0");
-    if (heated_bed && bed != 0 && global.boolean("material_bed_temp_prepend")) {
-        const bool wait = global.boolean("material_bed_temp_wait");
+    const bool heated_bed = global.boolean(key::machine_heated_bed);
+    const double bed = global.temperatureCelsius(key::material_bed_temperature_layer_0);
+    if (heated_bed && bed != 0 && global.boolean(key::material_bed_temp_prepend)) {
+        const bool wait = global.boolean(key::material_bed_temp_wait);
         if (marlin || !wait)
             appendLine(out, "M140 S" + formatDecimal(bed, 1));
         if (wait) {
@@ -46,12 +46,11 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
             appendLine(out, "M190 S" + formatDecimal(bed, 1));
         }
     }
-    const bool nozzle_control =
-        !extruder0.has("machine_nozzle_temp_enabled") || extruder0.boolean("machine_nozzle_temp_enabled");
-    if (global.boolean("material_print_temp_prepend") && nozzle_control) {
+    const bool nozzle_control = extruder0.boolean(key::machine_nozzle_temp_enabled);
+    if (global.boolean(key::material_print_temp_prepend) && nozzle_control) {
         const double nozzle = initialNozzleTemperature(extruder0);
         appendLine(out, "M104 S" + formatDecimal(nozzle, 1));
-        if (global.boolean("material_print_temp_wait")) {
+        if (global.boolean(key::material_print_temp_wait)) {
             if (marlin)
                 appendLine(out, "M105");
             appendLine(out, flavor.nozzle_wait_m116 ? "M104 S" + formatDecimal(nozzle, 1) + "\nM116"
@@ -62,15 +61,15 @@ std::string prependedTemperatures(const Settings& global, const Settings& extrud
 }
 
 bool heatedBuildVolume(const Settings& global) {
-    return global.flag("machine_heated_build_volume");
+    return global.boolean(key::machine_heated_build_volume);
 }
 
 /// What CuraEngine switches off before the end code: the bed and the build volume.
 std::string heatersOff(const Settings& global, const FlavorTraits& flavor) {
     std::string out;
-    if (global.flag("machine_heated_bed"))
+    if (global.boolean(key::machine_heated_bed))
         appendLine(out, "M140 S0");
-    if (heatedBuildVolume(global) && global.temperatureCelsius("build_volume_temperature") != 0 &&
+    if (heatedBuildVolume(global) && global.temperatureCelsius(key::build_volume_temperature) != 0 &&
         flavor.build_volume_temperature)
         appendLine(out, "M141 S0");
     return out;
@@ -80,8 +79,7 @@ std::string heatersOff(const Settings& global, const FlavorTraits& flavor) {
 std::string nozzlesOff(const std::vector<Settings>& extruders, int active) {
     std::string out;
     for (std::size_t e = 0; e < extruders.size(); ++e) {
-        if (extruders[e].has("machine_nozzle_temp_enabled") &&
-            !extruders[e].boolean("machine_nozzle_temp_enabled"))
+        if (!extruders[e].boolean(key::machine_nozzle_temp_enabled))
             continue;
         const bool current = static_cast<int>(e) == active;
         appendLine(out, current ? "M104 S0" : "M104 T" + std::to_string(e) + " S0");
@@ -93,27 +91,26 @@ std::string nozzlesOff(const std::vector<Settings>& extruders, int active) {
 
 StartTemperature startNozzleTemperature(const Settings& global, const FlavorTraits& flavor,
                                         const Settings& extruder0) {
-    const bool nozzle_control =
-        !extruder0.has("machine_nozzle_temp_enabled") || extruder0.boolean("machine_nozzle_temp_enabled");
+    const bool nozzle_control = extruder0.boolean(key::machine_nozzle_temp_enabled);
     if (flavor.heats_nozzle_after_start)
         return {true, initialNozzleTemperature(extruder0), true};
-    if (!flavor.prepends_temperatures || !nozzle_control || !global.boolean("material_print_temp_prepend"))
+    if (!flavor.prepends_temperatures || !nozzle_control || !global.boolean(key::material_print_temp_prepend))
         return {};
-    return {true, initialNozzleTemperature(extruder0), global.boolean("material_print_temp_wait")};
+    return {true, initialNozzleTemperature(extruder0), global.boolean(key::material_print_temp_wait)};
 }
 
 std::string startCode(const Settings& global, const FlavorTraits& flavor, const Settings& extruder0,
                       bool relative_extrusion) {
     std::string out;
     if (flavor.start_selects_tool)
-        appendLine(out,
-                   "T" + std::to_string(extruder0.has("extruder_nr") ? extruder0.integer("extruder_nr") : 0));
+        appendLine(out, "T" + std::to_string(extruder0.extruderIndex(key::extruder_nr)));
     if (flavor.prepends_temperatures)
         out += prependedTemperatures(global, extruder0, flavor);
     appendLine(out, "M82 ;absolute extrusion mode");
-    appendCode(out, global.text("machine_start_gcode"));
+    appendCode(out, global.text(key::machine_start_gcode));
     if (heatedBuildVolume(global) && flavor.build_volume_temperature)
-        appendLine(out, "M141 S" + formatDecimal(global.temperatureCelsius("build_volume_temperature"), 1));
+        appendLine(out,
+                   "M141 S" + formatDecimal(global.temperatureCelsius(key::build_volume_temperature), 1));
     if (flavor.heats_nozzle_after_start)
         appendLine(out, "M109 S" + formatDecimal(initialNozzleTemperature(extruder0), 1));
     if (relative_extrusion)
@@ -125,12 +122,12 @@ std::string finishPrint(GCodeExport& gcode, const Settings& global, const std::v
                         bool relative_extrusion) {
     gcode.retract();
     std::string out = gcode.takeText() + heatersOff(global, gcode.flavor());
-    if (global.flag("acceleration_enabled")) {
-        gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, false);
-        gcode.setMotion(global.accelerationMmPerS2("machine_acceleration"), 0, true);
+    if (global.boolean(key::acceleration_enabled)) {
+        gcode.setMotion(global.accelerationMmPerS2(key::machine_acceleration), 0, false);
+        gcode.setMotion(global.accelerationMmPerS2(key::machine_acceleration), 0, true);
     }
-    if (global.flag("jerk_enabled"))
-        gcode.setMotion(0, global.velocityMmPerS("machine_max_jerk_xy"), false);
+    if (global.boolean(key::jerk_enabled))
+        gcode.setMotion(0, global.velocityMmPerS(key::machine_max_jerk_xy), false);
     out += gcode.takeText();
     if (relative_extrusion) {  // absolute mode before the fan and the end code, as CuraEngine
         appendLine(out, "M82 ;absolute extrusion mode");
@@ -171,7 +168,7 @@ std::string endCode(const Settings& global, const FlavorTraits& flavor, bool rel
     std::string out;
     if (relative_extrusion)
         appendLine(out, "M82 ;absolute extrusion mode");
-    appendCode(out, global.text("machine_end_gcode"));
+    appendCode(out, global.text(key::machine_end_gcode));
     // As CuraEngine: the file ends in absolute mode, except on RepRap firmware (relative by default).
     appendLine(out, flavor.ends_relative ? "M83 ;relative extrusion mode" : "M82 ;absolute extrusion mode");
     return out;

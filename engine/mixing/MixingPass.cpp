@@ -197,7 +197,7 @@ struct GroupSchedules {
 };
 
 void warnAboutDialect(const MixingOutput& output, const Settings& global, Log& log) {
-    if (output.dialect == MixDialectKind::RrfColon && !global.boolean("relative_extrusion"))
+    if (output.dialect == MixDialectKind::RrfColon && !global.boolean(key::relative_extrusion))
         log.warning(
             "mixing_dialect rrf_colon: RepRapFirmware accepts E a:b only in relative extrusion mode; "
             "the G-code is written with relative extrusion (M83)");
@@ -206,8 +206,8 @@ void warnAboutDialect(const MixingOutput& output, const Settings& global, Log& l
 /// Mixing is the print's choice: a model asking for a mix in a single-filament print is told so.
 void warnAboutMeshModes(const MixingGroup& group, Log& log) {
     for (const MixingMesh& m : group.meshes) {
-        if (m.settings->has("mixing_mode") && m.settings->text("mixing_mode") != "single") {
-            log.warning("mixing_mode " + m.settings->text("mixing_mode") +
+        if (m.settings->has(key::mixing_mode) && m.settings->text(key::mixing_mode) != "single") {
+            log.warning("mixing_mode " + m.settings->text(key::mixing_mode) +
                         " of a model is not used: mixing is off for the print (mixing_mode single); set the "
                         "print's mixing_mode to dual, gradient or color");
             return;
@@ -302,26 +302,26 @@ TransitionSettings transitionSettings(const Settings& global, const ChamberSpec&
     t.chamber = chamber;
     t.tolerance = tolerance;
     t.tower = parsePurgeTower(global);
-    const coord_um w = global.has("machine_width") ? global.lengthMicrons("machine_width") : 200'000;
-    const coord_um d = global.has("machine_depth") ? global.lengthMicrons("machine_depth") : 200'000;
-    if (global.flag("machine_center_is_zero")) {
+    const coord_um w = global.lengthMicrons(key::machine_width);
+    const coord_um d = global.lengthMicrons(key::machine_depth);
+    if (global.boolean(key::machine_center_is_zero)) {
         t.site.plate_min = {-w / 2, -d / 2};
         t.site.plate_max = {w / 2, d / 2};
     } else {
         t.site.plate_max = {w, d};
     }
-    if (global.has("prime_tower_position_x") && global.has("prime_tower_position_y"))
-        t.site.preferred_anchor = Point2{global.lengthMicrons("prime_tower_position_x"),
-                                         global.lengthMicrons("prime_tower_position_y")};
-    for (const char* key : {"prime_tower_line_width", "line_width", "machine_nozzle_size"})
-        if (global.has(key) && global.lengthMicrons(key) > 0) {
-            t.line_width_um = global.lengthMicrons(key);
+    t.site.preferred_anchor = Point2{global.lengthMicrons(key::prime_tower_position_x),
+                                     global.lengthMicrons(key::prime_tower_position_y)};
+    for (const Key<SettingUnit::Millimetres> width :
+         {key::prime_tower_line_width, key::line_width, key::machine_nozzle_size})
+        if (global.lengthMicrons(width) > 0) {
+            t.line_width_um = global.lengthMicrons(width);
             break;
         }
-    if (global.has("speed_prime_tower") && global.real("speed_prime_tower") > 0) {
-        t.speed_mm_s = global.real("speed_prime_tower");
+    if (global.velocityMmPerS(key::speed_prime_tower) > 0) {
+        t.speed_mm_s = global.velocityMmPerS(key::speed_prime_tower);
         // as every feature: speed_print_layer_0 on the first layer, ramping up over speed_slowdown_layers
-        t.speed_at = [&global](int layer) { return layerSpeed(global, "speed_prime_tower", layer); };
+        t.speed_at = [&global](int layer) { return layerSpeed(global, key::speed_prime_tower, layer); };
     }
     return t;
 }
@@ -331,7 +331,8 @@ std::string sequenceHint(const MixingGroup& group, const std::vector<std::vector
                          const TransitionReport& report) {
     if (report.changes == 0 || !regions.empty() || group.meshes.size() < 2)
         return "";
-    if (group.settings->has("print_sequence") && group.settings->text("print_sequence") == "one_at_a_time")
+    if (group.settings->has(key::print_sequence) &&
+        group.settings->text(key::print_sequence) == "one_at_a_time")
         return "";
     for (std::size_t a = 0; a < group.meshes.size(); ++a)
         for (std::size_t b = a + 1; b < group.meshes.size(); ++b) {

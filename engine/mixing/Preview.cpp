@@ -71,8 +71,7 @@ SidePreview SidePreview::forSettings(const Settings& global) {
     const MixingOutput output = parseMixingOutput(global);
     std::vector<Rgb> colors = parseChannelColors(global, output.enabled() ? output.channels : 1);
     const bool gradient_colors = output.mode == MixingMode::Gradient &&
-                                 global.has("mixing_gradient_colors") &&
-                                 global.text("mixing_gradient_colors").find('#') != std::string::npos;
+                                 global.text(key::mixing_gradient_colors).find('#') != std::string::npos;
     if (output.mode == MixingMode::Color || gradient_colors)
         return SidePreview(std::make_shared<const PigmentModel>(colors), colors);
     return SidePreview(std::move(colors));

@@ -42,20 +42,13 @@ Objective parseObjective(const std::string& text, const std::string& what) {
 
 OrientOptions optionsFromSettings(const Settings& global) {
     OrientOptions o;
-    if (global.has("dual_orientation_method"))
-        o.method = parseMethod(global.text("dual_orientation_method"), "dual_orientation_method");
-    if (global.has("dual_orientation_measure"))
-        o.measure = parseMeasure(global.text("dual_orientation_measure"), "dual_orientation_measure");
-    if (global.has("dual_orientation_objective"))
-        o.objective = parseObjective(global.text("dual_orientation_objective"), "dual_orientation_objective");
-    if (global.has("dual_orientation_resolution"))
-        o.resolution = static_cast<int>(global.integer("dual_orientation_resolution"));
-    if (global.has("dual_orientation_verify_count"))
-        o.verify = static_cast<int>(global.integer("dual_orientation_verify_count"));
-    if (global.has("dual_orientation_grid_step"))
-        o.grid_step_deg = global.angleDegrees("dual_orientation_grid_step");
-    if (global.has("support_angle"))
-        o.overhang_angle_deg = global.angleDegrees("support_angle");
+    o.method = parseMethod(global.text(key::dual_orientation_method), "dual_orientation_method");
+    o.measure = parseMeasure(global.text(key::dual_orientation_measure), "dual_orientation_measure");
+    o.objective = parseObjective(global.text(key::dual_orientation_objective), "dual_orientation_objective");
+    o.resolution = static_cast<int>(global.integer(key::dual_orientation_resolution));
+    o.verify = static_cast<int>(global.integer(key::dual_orientation_verify_count));
+    o.grid_step_deg = global.angleDegrees(key::dual_orientation_grid_step);
+    o.overhang_angle_deg = global.angleDegrees(key::support_angle);
     if (o.resolution < 8 || o.resolution > 1024)
         throw InputError("dual_orientation_resolution: " + std::to_string(o.resolution) +
                          " is not in 8..1024");
@@ -68,16 +61,16 @@ Vec3 nozzleOffsetMm(const std::vector<Settings>& extruders) {
     if (extruders.size() < 2)
         throw InputError("orient: the machine has " + std::to_string(extruders.size()) +
                          " extruder train(s); the nozzle offset needs two");
-    return {extruders[1].millimetres("machine_nozzle_offset_x") -
-                extruders[0].millimetres("machine_nozzle_offset_x"),
-            extruders[1].millimetres("machine_nozzle_offset_y") -
-                extruders[0].millimetres("machine_nozzle_offset_y"),
+    return {extruders[1].millimetres(key::machine_nozzle_offset_x) -
+                extruders[0].millimetres(key::machine_nozzle_offset_x),
+            extruders[1].millimetres(key::machine_nozzle_offset_y) -
+                extruders[0].millimetres(key::machine_nozzle_offset_y),
             0.0};
 }
 
 void orientForDualNozzle(const std::vector<std::pair<Mesh*, int>>& meshes_by_extruder, const Settings& global,
                          const std::vector<Settings>& extruders, Log& log) {
-    if (!global.has("dual_orientation_optimize") || !global.boolean("dual_orientation_optimize"))
+    if (!global.boolean(key::dual_orientation_optimize))
         return;
     std::vector<const Mesh*> part[2];
     std::vector<Mesh*> moved;

@@ -25,7 +25,7 @@ namespace mixengine {
 namespace {
 
 SlicingTolerance toleranceOf(const Settings& s) {
-    const std::string text = s.has("slicing_tolerance") ? s.text("slicing_tolerance") : "middle";
+    const std::string text = s.text(key::slicing_tolerance);
     if (text == "inclusive")
         return SlicingTolerance::Inclusive;
     if (text == "exclusive")
@@ -34,7 +34,7 @@ SlicingTolerance toleranceOf(const Settings& s) {
 }
 
 bool adaptiveOn(const Settings& s) {
-    return s.flag("adaptive_layer_height_enabled");
+    return s.boolean(key::adaptive_layer_height_enabled);
 }
 
 /// adaptive_layer_height_enabled: the group's layers from the slopes of its printed meshes
@@ -49,11 +49,11 @@ std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance to
         faces.insert(faces.end(), own.begin(), own.end());
     }
     AdaptiveLayerParams params;
-    params.layer_height_um = s.lengthMicrons("layer_height");
-    params.layer_height_0_um = s.lengthMicrons("layer_height_0");
-    params.variation_um = s.lengthMicrons("adaptive_layer_height_variation");
-    params.step_um = s.lengthMicrons("adaptive_layer_height_variation_step");
-    params.threshold_um = s.lengthMicrons("adaptive_layer_height_threshold");
+    params.layer_height_um = s.lengthMicrons(key::layer_height);
+    params.layer_height_0_um = s.lengthMicrons(key::layer_height_0);
+    params.variation_um = s.lengthMicrons(key::adaptive_layer_height_variation);
+    params.step_um = s.lengthMicrons(key::adaptive_layer_height_variation_step);
+    params.threshold_um = s.lengthMicrons(key::adaptive_layer_height_threshold);
     params.middle = tolerance == SlicingTolerance::Middle;
     return adaptiveLayerHeights(faces, params);
 }
@@ -64,7 +64,7 @@ void reshapeOutlines(const SceneGroup& group, SlicedGroup& sliced) {
     std::vector<MoldMesh> molds;
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m)
         molds.push_back({&sliced.meshes[m], &group.meshes[m].settings});
-    applyMolds(molds, group.settings.lengthMicrons("layer_height"));
+    applyMolds(molds, group.settings.lengthMicrons(key::layer_height));
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
         if (conicalOverhangWanted(group.meshes[m].settings))
             applyConicalOverhang(sliced.meshes[m], conicalOverhangParams(group.meshes[m].settings));
@@ -163,11 +163,11 @@ std::string meshNames(const Scene& scene) {
 /// machine_extruders_shared_nozzle_initial_retraction; on Griffin the first extruder is primed
 /// (gcode/StartEndCode.h writePrimeTrain). Returns the text for the end of the start code.
 std::string primeFirstExtruder(const Scene& scene, const PlanWriterParams& writer, GCodeExport& gcode) {
-    if (scene.machine.global.boolean("machine_extruders_share_nozzle")) {
+    if (scene.machine.global.boolean(key::machine_extruders_share_nozzle)) {
         for (std::size_t e = 0; e < scene.machine.extruders.size(); ++e)
-            gcode.assumePrimed(
-                static_cast<int>(e),
-                scene.machine.extruders[e].millimetres("machine_extruders_shared_nozzle_initial_retraction"));
+            gcode.assumePrimed(static_cast<int>(e),
+                               scene.machine.extruders[e].millimetres(
+                                   key::machine_extruders_shared_nozzle_initial_retraction));
     }
     if (!gcode.flavor().firmware_prime || writer.extruders.empty())
         return "";
@@ -185,12 +185,12 @@ bool anyLayerMesh(const std::vector<VolumeRole>& roles) {
 
 /// BFB: the user's G-code blocks, which keep their own line ends (gcode/Bfb.h).
 std::vector<std::string> bfbVerbatim(const Scene& scene) {
-    std::vector<std::string> verbatim = {scene.machine.global.text("machine_start_gcode"),
-                                         scene.machine.global.text("machine_end_gcode")};
+    std::vector<std::string> verbatim = {scene.machine.global.text(key::machine_start_gcode),
+                                         scene.machine.global.text(key::machine_end_gcode)};
     for (const Settings& e : scene.machine.extruders)
-        for (const char* key : {"machine_extruder_start_code", "machine_extruder_end_code"})
-            if (e.has(key))
-                verbatim.push_back(e.text(key));
+        for (const Key<SettingUnit::Text> key :
+             {key::machine_extruder_start_code, key::machine_extruder_end_code})
+            verbatim.push_back(e.text(key));
     return verbatim;
 }
 
@@ -209,7 +209,7 @@ void useBfbLineEnds(const std::vector<std::string>& verbatim, GCodeOutput& outpu
 coord_um stitchDistanceUm(const Settings& s) {
     constexpr coord_um kStitchUm = 10'000;
     constexpr coord_um kSurfaceModeGapUm = 100;
-    const bool normal = !s.has("magic_mesh_surface_mode") || s.text("magic_mesh_surface_mode") == "normal";
+    const bool normal = s.text(key::magic_mesh_surface_mode) == "normal";
     return normal ? kStitchUm : kSurfaceModeGapUm;
 }
 
@@ -234,8 +234,8 @@ std::string startText(const Scene& scene, const ExportParams& export_params, con
     if (!relative)
         start += std::string("G92 ") + flavor.axis + "0\n";
     if (flavor.auto_retraction)
-        start +=
-            bfbAutoRetraction(first.lengthMicrons("retraction_amount"), first.boolean("retraction_enable"));
+        start += bfbAutoRetraction(first.lengthMicrons(key::retraction_amount),
+                                   first.boolean(key::retraction_enable));
     start += prime;
     start += ";LAYER_COUNT:" + std::to_string(model_layers) + "\n";
     return start;
@@ -263,7 +263,7 @@ void finishOutput(const Scene& scene, const ExportParams& export_params, GCodeEx
     output.summary.filament_per_extruder = gcode.filamentPerExtruder();
     output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
     describeExtruders(scene, export_params.flavor.volumetric_e, output.summary);
-    output.summary.layer_height_mm = global.millimetres("layer_height");
+    output.summary.layer_height_mm = global.millimetres(key::layer_height);
     output.summary.engine_version = MIXENGINE_VERSION;
     output.header = makeHeader(output.summary);
     output.suffix = finishPrint(gcode, global, scene.machine.extruders, relativeExtrusion(global));
@@ -275,15 +275,14 @@ void finishOutput(const Scene& scene, const ExportParams& export_params, GCodeEx
 
 VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
     VolumeRole role;
-    role.infill_mesh = s.flag("infill_mesh");
-    role.cutting_mesh = s.flag("cutting_mesh");
-    role.support_mesh = s.flag("support_mesh");
-    role.anti_overhang_mesh = s.flag("anti_overhang_mesh");
-    role.surface_only = s.has("magic_mesh_surface_mode") && s.text("magic_mesh_surface_mode") == "surface";
-    role.union_all = !s.has("meshfix_union_all") || s.boolean("meshfix_union_all");
-    role.infill_mesh_order =
-        s.has("infill_mesh_order") ? static_cast<int>(s.integer("infill_mesh_order")) : 0;
-    role.overlap_um = s.has("multiple_mesh_overlap") ? s.lengthMicrons("multiple_mesh_overlap") : 0;
+    role.infill_mesh = s.boolean(key::infill_mesh);
+    role.cutting_mesh = s.boolean(key::cutting_mesh);
+    role.support_mesh = s.boolean(key::support_mesh);
+    role.anti_overhang_mesh = s.boolean(key::anti_overhang_mesh);
+    role.surface_only = s.text(key::magic_mesh_surface_mode) == "surface";
+    role.union_all = s.boolean(key::meshfix_union_all);
+    role.infill_mesh_order = static_cast<int>(s.integer(key::infill_mesh_order));
+    role.overlap_um = s.lengthMicrons(key::multiple_mesh_overlap);
     role.bounds = mesh.bounds();
     return role;
 }
@@ -318,29 +317,28 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     SliceOptions options;
     options.tolerance = toleranceOf(s);
     sliced.heights = adaptiveOn(s) ? adaptiveHeights(group, options.tolerance)
-                                   : computeLayerHeights(max_z, s.lengthMicrons("layer_height_0"),
-                                                         s.lengthMicrons("layer_height"));
+                                   : computeLayerHeights(max_z, s.lengthMicrons(key::layer_height_0),
+                                                         s.lengthMicrons(key::layer_height));
     options.threads = threads;
     for (const SceneMesh& m : group.meshes) {
         SliceOptions own = options;
-        own.union_all = !m.settings.has("meshfix_union_all") || m.settings.boolean("meshfix_union_all");
-        own.keep_open_polygons = m.settings.flag("meshfix_keep_open_polygons");
+        own.union_all = m.settings.boolean(key::meshfix_union_all);
+        own.keep_open_polygons = m.settings.boolean(key::meshfix_keep_open_polygons);
         own.max_gap_um = stitchDistanceUm(m.settings);
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, own, log));
     }
     OutlineCleanupParams cleanup;
-    cleanup.minimum_circumference_um = s.lengthMicrons("minimum_polygon_circumference");
-    cleanup.maximum_resolution_um = simplify ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
-    cleanup.maximum_deviation_um = simplify ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
+    cleanup.minimum_circumference_um = s.lengthMicrons(key::minimum_polygon_circumference);
+    cleanup.maximum_resolution_um = simplify ? s.lengthMicrons(key::meshfix_maximum_resolution) : 0;
+    cleanup.maximum_deviation_um = simplify ? s.lengthMicrons(key::meshfix_maximum_deviation) : 0;
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
         cleanOutlines(sliced.meshes[m], cleanup, threads);
         const Settings& own = group.meshes[m].settings;
-        if (own.flag("meshfix_union_all_remove_holes"))
+        if (own.boolean(key::meshfix_union_all_remove_holes))
             removeHoles(sliced.meshes[m], threads);
         sliced.roles.push_back(volumeRoleOf(own, group.meshes[m].mesh));
     }
-    const VolumeParams volumes{s.flag("carve_multiple_volumes"),
-                               !s.has("alternate_carve_order") || s.boolean("alternate_carve_order")};
+    const VolumeParams volumes{s.boolean(key::carve_multiple_volumes), s.boolean(key::alternate_carve_order)};
     combineVolumes(sliced.meshes, sliced.roles, volumes, threads);
     if (!anyLayerMesh(sliced.roles)) {  // only modifiers: nothing prints, as CuraEngine (0 layers)
         sliced.heights.clear();
@@ -366,7 +364,7 @@ GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObs
     // As CuraEngine, the first layer is planned from layer_start_x/_y of the first extruder (later
     // layers go on from where the one before ended).
     const Settings& first = scene.machine.extruders.front();
-    state.head = {first.lengthMicrons("layer_start_x"), first.lengthMicrons("layer_start_y")};
+    state.head = {first.lengthMicrons(key::layer_start_x), first.lengthMicrons(key::layer_start_y)};
 
     GCodeOutput output;
     MixingReport mixing;                   // every group's, added up

@@ -17,30 +17,27 @@ namespace {
 
 void placeMesh(Mesh& mesh, const Settings& group, const Settings& settings) {
     coord_um dx = 0, dy = 0, dz = 0;
-    if (!group.boolean("machine_center_is_zero")) {
-        dx += group.lengthMicrons("machine_width") / 2;
-        dy += group.lengthMicrons("machine_depth") / 2;
+    if (!group.boolean(key::machine_center_is_zero)) {
+        dx += group.lengthMicrons(key::machine_width) / 2;
+        dy += group.lengthMicrons(key::machine_depth) / 2;
     }
-    if (settings.flag("center_object")) {
+    if (settings.boolean(key::center_object)) {
         const AABB3 box = mesh.bounds();
         dx -= (box.min.x + box.max.x) / 2;
         dy -= (box.min.y + box.max.y) / 2;
         dz -= box.min.z;
     }
-    if (settings.has("mesh_position_x"))
-        dx += settings.lengthMicrons("mesh_position_x");
-    if (settings.has("mesh_position_y"))
-        dy += settings.lengthMicrons("mesh_position_y");
-    if (settings.has("mesh_position_z"))
-        dz += settings.lengthMicrons("mesh_position_z");
+    dx += settings.lengthMicrons(key::mesh_position_x);
+    dy += settings.lengthMicrons(key::mesh_position_y);
+    dz += settings.lengthMicrons(key::mesh_position_z);
     mesh.translate(dx, dy, dz);
 }
 
 /// Reports a placed mesh reaching outside the build volume; refuses one far larger than it.
 void checkPlacement(const Mesh& mesh, const Settings& group, Log& log) {
     const BuildVolume volume =
-        machineVolume(group.lengthMicrons("machine_width"), group.lengthMicrons("machine_depth"),
-                      group.lengthMicrons("machine_height"), group.boolean("machine_center_is_zero"));
+        machineVolume(group.lengthMicrons(key::machine_width), group.lengthMicrons(key::machine_depth),
+                      group.lengthMicrons(key::machine_height), group.boolean(key::machine_center_is_zero));
     const std::string warning = checkBuildVolume(mesh.name, mesh.bounds(), volume);
     if (!warning.empty())
         log.warning(warning);
@@ -149,8 +146,7 @@ Scene prepareScene(const SliceRequest& request, Log& log) {
         // Dual-nozzle orientation pass (orient/OrientSettings.h): before placement.
         std::vector<std::pair<Mesh*, int>> by_extruder;
         for (SceneMesh& m : group.meshes)
-            by_extruder.emplace_back(
-                &m.mesh, m.settings.has("extruder_nr") ? m.settings.extruderIndex("extruder_nr") : 0);
+            by_extruder.emplace_back(&m.mesh, m.settings.extruderIndex(key::extruder_nr));
         orient::orientForDualNozzle(by_extruder, group.settings, scene.machine.extruders, log);
         for (SceneMesh& m : group.meshes) {
             placeMesh(m.mesh, group.settings, m.settings);

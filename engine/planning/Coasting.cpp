@@ -150,12 +150,12 @@ void coastPath(const std::vector<PlanStep>& steps, std::size_t begin, std::size_
 
 CoastingParams coastingParams(const Settings& extruder) {
     CoastingParams p;
-    p.enabled = extruder.flag("coasting_enable");
+    p.enabled = extruder.boolean(key::coasting_enable);
     if (!p.enabled)
         return p;
-    p.volume_mm3 = extruder.real("coasting_volume");
-    p.min_volume_mm3 = extruder.real("coasting_min_volume");
-    p.speed_ratio = extruder.ratio("coasting_speed");
+    p.volume_mm3 = extruder.real(key::coasting_volume);
+    p.min_volume_mm3 = extruder.real(key::coasting_min_volume);
+    p.speed_ratio = extruder.ratio(key::coasting_speed);
     p.enabled = p.volume_mm3 > 0;
     return p;
 }

@@ -7,19 +7,18 @@ namespace mixengine {
 
 CoolingParams coolingParams(const Settings& s) {
     CoolingParams p;
-    p.fan_enabled = s.boolean("cool_fan_enabled");
-    p.fan_min_ratio = s.ratio("cool_fan_speed_min");
-    p.fan_max_ratio = s.ratio("cool_fan_speed_max");
-    p.fan_first_ratio = s.ratio("cool_fan_speed_0");
-    p.fan_full_layer = static_cast<int>(s.integer("cool_fan_full_layer"));
-    p.min_layer_time_s = s.durationSeconds("cool_min_layer_time");
-    p.fan_max_layer_time_s = s.durationSeconds("cool_min_layer_time_fan_speed_max");
-    p.min_speed_mm_s = s.velocityMmPerS("cool_min_speed");
-    p.lift_head = s.flag("cool_lift_head");
-    if (s.has("machine_width") && !s.flag("machine_center_is_zero"))
-        p.bed_middle_um = {s.lengthMicrons("machine_width") / 2, s.lengthMicrons("machine_depth") / 2};
-    if (s.has("speed_travel"))
-        p.travel_speed_mm_s = s.velocityMmPerS("speed_travel");
+    p.fan_enabled = s.boolean(key::cool_fan_enabled);
+    p.fan_min_ratio = s.ratio(key::cool_fan_speed_min);
+    p.fan_max_ratio = s.ratio(key::cool_fan_speed_max);
+    p.fan_first_ratio = s.ratio(key::cool_fan_speed_0);
+    p.fan_full_layer = static_cast<int>(s.integer(key::cool_fan_full_layer));
+    p.min_layer_time_s = s.durationSeconds(key::cool_min_layer_time);
+    p.fan_max_layer_time_s = s.durationSeconds(key::cool_min_layer_time_fan_speed_max);
+    p.min_speed_mm_s = s.velocityMmPerS(key::cool_min_speed);
+    p.lift_head = s.boolean(key::cool_lift_head);
+    if (!s.boolean(key::machine_center_is_zero))
+        p.bed_middle_um = {s.lengthMicrons(key::machine_width) / 2, s.lengthMicrons(key::machine_depth) / 2};
+    p.travel_speed_mm_s = s.velocityMmPerS(key::speed_travel);
     return p;
 }
 

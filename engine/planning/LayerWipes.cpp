@@ -20,9 +20,8 @@ bool switchesFirst(const PlannedLayer& layer) {
 
 LayerWipeParams layerWipeParams(const Settings& extruder) {
     LayerWipeParams p;
-    p.enabled = extruder.flag("clean_between_layers");
-    if (extruder.has("max_extrusion_before_wipe"))
-        p.max_extrusion_mm3 = extruder.real("max_extrusion_before_wipe");
+    p.enabled = extruder.boolean(key::clean_between_layers);
+    p.max_extrusion_mm3 = extruder.real(key::max_extrusion_before_wipe);
     return p;
 }
 

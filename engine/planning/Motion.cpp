@@ -9,40 +9,54 @@
 namespace mixengine {
 namespace {
 
-/// The acceleration (`kind` "acceleration") or jerk ("jerk") key of an extrusion of `feature`:
-/// <kind>_<feature> (acceleration_wall_0, …, acceleration_ironing), raft_<layer>_<kind> for the raft.
-std::string featureKey(Feature feature, const std::string& kind) {
+/// The acceleration and jerk keys of a kind of move.
+struct MotionKeys {
+    Key<SettingUnit::MmPerS2> acceleration;
+    Key<SettingUnit::MmPerS> jerk;
+};
+
+constexpr MotionKeys kTravelKeys{key::acceleration_travel, key::jerk_travel};
+constexpr MotionKeys kTravelFirstKeys{key::acceleration_travel_layer_0, key::jerk_travel_layer_0};
+constexpr MotionKeys kPrintFirstKeys{key::acceleration_print_layer_0, key::jerk_print_layer_0};
+
+/// The keys of an extrusion of `feature`: <kind>_<feature> (acceleration_wall_0, …, jerk_ironing),
+/// raft_<layer>_<kind> for the raft, <kind>_print for the rest.
+MotionKeys featureMotionKeys(Feature feature) {
     switch (feature) {
         case Feature::RaftBase:
-            return "raft_base_" + kind;
+            return {key::raft_base_acceleration, key::raft_base_jerk};
         case Feature::RaftInterface:
-            return "raft_interface_" + kind;
+            return {key::raft_interface_acceleration, key::raft_interface_jerk};
         case Feature::RaftSurface:
-            return "raft_surface_" + kind;
+            return {key::raft_surface_acceleration, key::raft_surface_jerk};
+        case Feature::WallOuter:
+            return {key::acceleration_wall_0, key::jerk_wall_0};
+        case Feature::WallInner:
+            return {key::acceleration_wall_x, key::jerk_wall_x};
+        case Feature::Skin:
+            return {key::acceleration_topbottom, key::jerk_topbottom};
+        case Feature::Fill:
+            return {key::acceleration_infill, key::jerk_infill};
+        case Feature::Support:
+            return {key::acceleration_support_infill, key::jerk_support_infill};
+        case Feature::SupportInterface:
+            return {key::acceleration_support_roof, key::jerk_support_roof};
+        case Feature::Skirt:
+        case Feature::DraftShield:
+            return {key::acceleration_skirt_brim, key::jerk_skirt_brim};
+        case Feature::PrimeTower:
+            return {key::acceleration_prime_tower, key::jerk_prime_tower};
+        case Feature::Ironing:
+            return {key::acceleration_ironing, key::jerk_ironing};
         default:
-            break;
+            return {key::acceleration_print, key::jerk_print};
     }
-    static const std::map<Feature, std::string> suffix{
-        {Feature::WallOuter, "wall_0"},       {Feature::WallInner, "wall_x"},
-        {Feature::Skin, "topbottom"},         {Feature::Fill, "infill"},
-        {Feature::Support, "support_infill"}, {Feature::SupportInterface, "support_roof"},
-        {Feature::Skirt, "skirt_brim"},       {Feature::PrimeTower, "prime_tower"},
-        {Feature::Ironing, "ironing"},        {Feature::DraftShield, "skirt_brim"}};
-    const auto it = suffix.find(feature);
-    return kind + "_" + (it != suffix.end() ? it->second : std::string("print"));
 }
 
 /// True for the raft's features, which keep their own values on every layer.
 bool isRaft(Feature feature) {
     return feature == Feature::RaftBase || feature == Feature::RaftInterface ||
            feature == Feature::RaftSurface;
-}
-
-/// `key` on `layer`, blended from `first_key` over the slow-down layers (`smooth`); layers below
-/// the model (negative) take `key` itself, as CuraEngine does not slow them down.
-double layerValue(const Settings& s, const std::string& key, const std::string& first_key, int layer,
-                  bool smooth) {
-    return smooth ? slowdownValue(s, key, first_key, layer) : s.real(key);
 }
 
 struct Tracker {
@@ -62,15 +76,16 @@ const Settings& sourceOf(const MotionSources& sources, const Tracker& at, bool t
 void setMotion(PlanStep& step, const MotionSources& sources, const Tracker& at, int layer) {
     const bool travel = step.kind == PlanStep::Kind::Travel;
     const Settings& s = sourceOf(sources, at, travel);
-    const std::string first = travel ? "_travel_layer_0" : "_print_layer_0";
+    const MotionKeys keys = travel ? kTravelKeys : featureMotionKeys(at.feature);
+    const MotionKeys first = travel ? kTravelFirstKeys : kPrintFirstKeys;
+    // layers below the model (negative), skirts and the raft keep their own values, as in CuraEngine
     const bool smooth = travel || (markedFeature(at.feature) != Feature::Skirt && !isRaft(at.feature));
-    for (const std::string kind : {"acceleration", "jerk"}) {
-        if (!(kind == "acceleration" ? sources.acceleration_enabled : sources.jerk_enabled))
-            continue;
-        const std::string key = travel ? kind + "_travel" : featureKey(at.feature, kind);
-        const double value = layerValue(s, key, kind + first, layer, smooth);
-        (kind == "acceleration" ? step.acceleration_mm_s2 : step.jerk_mm_s) = value;
-    }
+    if (sources.acceleration_enabled)
+        step.acceleration_mm_s2 = smooth ? slowdownValue(s, keys.acceleration, first.acceleration, layer)
+                                         : s.accelerationMmPerS2(keys.acceleration);
+    if (sources.jerk_enabled)
+        step.jerk_mm_s =
+            smooth ? slowdownValue(s, keys.jerk, first.jerk, layer) : s.velocityMmPerS(keys.jerk);
 }
 
 }  // namespace
@@ -78,8 +93,8 @@ void setMotion(PlanStep& step, const MotionSources& sources, const Tracker& at, 
 MotionSources motionSources(const Settings& global, std::vector<const Settings*> meshes,
                             const std::vector<Settings>& extruders) {
     MotionSources sources;
-    sources.acceleration_enabled = global.flag("acceleration_enabled");
-    sources.jerk_enabled = global.flag("jerk_enabled");
+    sources.acceleration_enabled = global.boolean(key::acceleration_enabled);
+    sources.jerk_enabled = global.boolean(key::jerk_enabled);
     sources.meshes = std::move(meshes);
     sources.extruders = &extruders;
     return sources;

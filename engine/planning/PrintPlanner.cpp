@@ -38,36 +38,31 @@ std::vector<ExtrusionPath> ofExtruder(const std::vector<ExtrusionPath>& paths, i
 /// CuraEngine's reach for moving travel ends into the comb area: twice its comb offset, which is
 /// twice the innermost wall's width (× initial_layer_line_width_factor on layer 0).
 coord_um combMoveInside(const Settings& s, int layer) {
-    if (!s.has("wall_line_width_0"))
-        return 0;
-    const bool several = s.has("wall_line_count") && s.integer("wall_line_count") > 1;
-    double width = double(s.lengthMicrons(several ? "wall_line_width_x" : "wall_line_width_0"));
-    if (layer == 0 && s.has("initial_layer_line_width_factor"))
-        width *= s.ratio("initial_layer_line_width_factor");
+    const bool several = s.integer(key::wall_line_count) > 1;
+    double width = double(s.lengthMicrons(several ? key::wall_line_width_x : key::wall_line_width_0));
+    if (layer == 0)
+        width *= s.ratio(key::initial_layer_line_width_factor);
     return static_cast<coord_um>(std::llround(4 * width));
 }
 
 TravelParams travelParams(const Settings& s, int layer, coord_um thickness, const CombBoundary* comb,
                           const CombBoundary* free) {
     TravelParams p;
-    if (!s.has("retraction_combing") || s.text("retraction_combing") != "off")
+    if (s.text(key::retraction_combing) != "off")
         p.comb = comb;
-    if (!s.has("travel_avoid_other_parts") || s.boolean("travel_avoid_other_parts"))
+    if (s.boolean(key::travel_avoid_other_parts))
         p.free = free;
-    p.limit_support_retractions = s.flag("limit_support_retractions");
-    if (s.has("retraction_combing_max_distance"))
-        p.combing_max_distance_um = s.lengthMicrons("retraction_combing_max_distance");
+    p.limit_support_retractions = s.boolean(key::limit_support_retractions);
+    p.combing_max_distance_um = s.lengthMicrons(key::retraction_combing_max_distance);
     p.comb_move_inside_um = combMoveInside(s, layer);
-    if (s.has("meshfix_maximum_travel_resolution"))
-        p.max_travel_resolution_um = s.lengthMicrons("meshfix_maximum_travel_resolution");
-    p.travel_speed_mm_s = slowdownValue(s, "speed_travel", "speed_travel_layer_0", layer);
-    p.retraction_enable = s.boolean("retraction_enable");
-    p.retraction_min_travel_um = s.lengthMicrons("retraction_min_travel");
+    p.max_travel_resolution_um = s.lengthMicrons(key::meshfix_maximum_travel_resolution);
+    p.travel_speed_mm_s = slowdownValue(s, key::speed_travel, key::speed_travel_layer_0, layer);
+    p.retraction_enable = s.boolean(key::retraction_enable);
+    p.retraction_min_travel_um = s.lengthMicrons(key::retraction_min_travel);
     p.layer_thickness_um = thickness;
-    if (s.has("wall_0_wipe_dist") && !s.flag("magic_spiralize"))
-        p.wall_0_wipe_um = s.lengthMicrons("wall_0_wipe_dist");
-    if (s.has("infill_wipe_dist"))
-        p.infill_wipe_um = s.lengthMicrons("infill_wipe_dist");
+    if (!s.boolean(key::magic_spiralize))
+        p.wall_0_wipe_um = s.lengthMicrons(key::wall_0_wipe_dist);
+    p.infill_wipe_um = s.lengthMicrons(key::infill_wipe_dist);
     return p;
 }
 
@@ -111,7 +106,7 @@ std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s
     }
     order.push_back({g.skin});
     order.push_back({g.infill, true});
-    if (s.flag("infill_before_walls"))
+    if (s.boolean(key::infill_before_walls))
         std::rotate(order.begin(), order.end() - 1, order.end());
     order.push_back({g.ironing});
     return order;
@@ -121,7 +116,7 @@ std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s
 /// distances (infill_enable_travel_optimization).
 TravelParams infillTravel(TravelParams travel, const MeshLayerGroups& groups, const Settings& s) {
     travel.order_from = groups.infill_start;
-    travel.comb_aware_order = s.flag("infill_enable_travel_optimization");
+    travel.comb_aware_order = s.boolean(key::infill_enable_travel_optimization);
     return travel;
 }
 
@@ -162,8 +157,8 @@ std::size_t trainOf(int extruder, const std::vector<Settings>& extruders) {
 
 /// retract_at_layer_change: the first travel of a layer retracts (not in spiralize mode).
 void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
-    if (!extruder.has("retract_at_layer_change") || !extruder.boolean("retract_at_layer_change") ||
-        !extruder.boolean("retraction_enable") || extruder.flag("magic_spiralize"))
+    if (!extruder.boolean(key::retract_at_layer_change) || !extruder.boolean(key::retraction_enable) ||
+        extruder.boolean(key::magic_spiralize))
         return;
     for (std::size_t i = 0; i < layer.steps.size(); ++i) {
         PlanStep& step = layer.steps[i];
@@ -211,7 +206,7 @@ void planNozzleTemperatures(PrintPlan& plan, const GroupToolpaths& toolpaths, co
         return;
     SwitchTemperatureParams params;
     params.trains = trainTemperatureParams(extruders);
-    params.share_heater = global.boolean("machine_extruders_share_heater");
+    params.share_heater = global.boolean(key::machine_extruders_share_heater);
     params.last_layer = lastPrintLayers(toolpaths, extruders.size());
     planSwitchTemperatures(plan, params, start_extruder, start);
 }
@@ -231,15 +226,15 @@ bool printsTower(const GroupToolpaths& t, const LayerContext& ctx, bool switched
 void wipeOnTower(const GroupToolpaths& t, const std::vector<Settings>& extruders, int previous,
                  const LayerContext& ctx, Point2& head, PlannedLayer& planned) {
     const Settings& old = extruders[trainOf(previous, extruders)];
-    if (ctx.layer == 0 || previous == ctx.extruder || !old.boolean("prime_tower_wipe_enabled"))
+    if (ctx.layer == 0 || previous == ctx.extruder || !old.boolean(key::prime_tower_wipe_enabled))
         return;
     const Settings& now = *ctx.extruder_settings;
     PlanStep travel;
     travel.kind = PlanStep::Kind::Travel;
-    travel.to = {t.prime_tower_middle.X - old.lengthMicrons("machine_nozzle_offset_x") +
-                     now.lengthMicrons("machine_nozzle_offset_x"),
-                 t.prime_tower_middle.Y - old.lengthMicrons("machine_nozzle_offset_y") +
-                     now.lengthMicrons("machine_nozzle_offset_y")};
+    travel.to = {t.prime_tower_middle.X - old.lengthMicrons(key::machine_nozzle_offset_x) +
+                     now.lengthMicrons(key::machine_nozzle_offset_x),
+                 t.prime_tower_middle.Y - old.lengthMicrons(key::machine_nozzle_offset_y) +
+                     now.lengthMicrons(key::machine_nozzle_offset_y)};
     travel.speed_mm_s = travelParams(now, ctx.layer, ctx.thickness, nullptr, nullptr).travel_speed_mm_s;
     planned.steps.push_back(travel);
     head = travel.to;
@@ -270,13 +265,21 @@ void planExtruderOnLayer(const GroupToolpaths& t, const std::vector<Settings>& e
 
 /// machine_extruder_end_pos_* / _start_pos_* of train `s` (_abs: a head position, so plus the
 /// train's nozzle offset; else relative to `from`).
-Point2 extruderPosition(const Settings& s, const char* which, Point2 from) {
-    const std::string key = std::string("machine_extruder_") + which + "_pos_";
-    const Point2 pos{s.lengthMicrons(key + "x"), s.lengthMicrons(key + "y")};
-    if (!s.boolean(key + "abs"))
+struct PositionKeys {
+    Key<SettingUnit::Millimetres> x, y;
+    Key<SettingUnit::Bool> absolute;
+};
+constexpr PositionKeys kStartPosition{key::machine_extruder_start_pos_x, key::machine_extruder_start_pos_y,
+                                      key::machine_extruder_start_pos_abs};
+constexpr PositionKeys kEndPosition{key::machine_extruder_end_pos_x, key::machine_extruder_end_pos_y,
+                                    key::machine_extruder_end_pos_abs};
+
+Point2 extruderPosition(const Settings& s, const PositionKeys& keys, Point2 from) {
+    const Point2 pos{s.lengthMicrons(keys.x), s.lengthMicrons(keys.y)};
+    if (!s.boolean(keys.absolute))
         return {from.X + pos.X, from.Y + pos.Y};
-    return {pos.X + s.lengthMicrons("machine_nozzle_offset_x"),
-            pos.Y + s.lengthMicrons("machine_nozzle_offset_y")};
+    return {pos.X + s.lengthMicrons(key::machine_nozzle_offset_x),
+            pos.Y + s.lengthMicrons(key::machine_nozzle_offset_y)};
 }
 
 /// A SetExtruder step, and a Prime step when the extruder was not used before in the print. As
@@ -287,11 +290,11 @@ void switchTo(int extruder, const std::vector<Settings>& extruders, PlannerState
     const Settings& old = extruders[trainOf(state.extruder, extruders)];
     PlanStep end;
     end.kind = PlanStep::Kind::Travel;
-    end.to = extruderPosition(old, "end", state.head);
-    end.speed_mm_s = old.velocityMmPerS("speed_travel");
-    end.retract = old.boolean("retraction_enable") && end.to != state.head;
+    end.to = extruderPosition(old, kEndPosition, state.head);
+    end.speed_mm_s = old.velocityMmPerS(key::speed_travel);
+    end.retract = old.boolean(key::retraction_enable) && end.to != state.head;
     steps.push_back(end);
-    state.head = extruderPosition(extruders[trainOf(extruder, extruders)], "start", end.to);
+    state.head = extruderPosition(extruders[trainOf(extruder, extruders)], kStartPosition, end.to);
     PlanStep change;
     change.kind = PlanStep::Kind::SetExtruder;
     change.extruder = extruder;
@@ -349,7 +352,7 @@ void finishLayer(PlannedLayer& planned, bool after_first, int layer_extruder, Po
 constexpr coord_um kRaftCombMarginUm = 100;
 
 bool combsOnRaft(const Settings& global) {
-    return !global.has("retraction_combing") || global.text("retraction_combing") != "off";
+    return global.text(key::retraction_combing) != "off";
 }
 
 /// A raft or filler layer: its paths, extruder by extruder (the active one first), loops before
@@ -537,7 +540,7 @@ void planPrint(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings&
                 motionSources(global, std::move(mesh_settings), extruders),
                 {},
                 state,
-                global.has("travel_avoid_distance") ? global.lengthMicrons("travel_avoid_distance") : 0};
+                global.lengthMicrons(key::travel_avoid_distance)};
     std::vector<CoastingParams> coasting;
     std::vector<LayerWipeParams> wipes;
     for (const Settings& train : extruders) {

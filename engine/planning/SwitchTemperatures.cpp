@@ -13,10 +13,10 @@ std::vector<TrainTemperatureParams> trainTemperatureParams(const std::vector<Set
     for (const Settings& e : extruders) {
         TrainTemperatureParams t;
         t.nozzle = nozzleTemperatureParams(e);
-        t.initial_c = e.temperatureCelsius("material_initial_print_temperature");
-        t.final_c = e.temperatureCelsius("material_final_print_temperature");
-        t.standby_c = e.temperatureCelsius("material_standby_temperature");
-        t.min_window_s = e.durationSeconds("machine_min_cool_heat_time_window");
+        t.initial_c = e.temperatureCelsius(key::material_initial_print_temperature);
+        t.final_c = e.temperatureCelsius(key::material_final_print_temperature);
+        t.standby_c = e.temperatureCelsius(key::material_standby_temperature);
+        t.min_window_s = e.durationSeconds(key::machine_min_cool_heat_time_window);
         out.push_back(t);
     }
     return out;

@@ -33,24 +33,24 @@ std::vector<FlowTemperature> parseFlowTemperatureGraph(const std::string& text) 
 
 TemperatureParams temperatureParams(const Settings& global, const Settings& extruder) {
     TemperatureParams p;
-    p.heated_bed = global.boolean("machine_heated_bed");
-    p.bed_c = global.temperatureCelsius("material_bed_temperature");
-    p.bed_layer0_c = global.temperatureCelsius("material_bed_temperature_layer_0");
+    p.heated_bed = global.boolean(key::machine_heated_bed);
+    p.bed_c = global.temperatureCelsius(key::material_bed_temperature);
+    p.bed_layer0_c = global.temperatureCelsius(key::material_bed_temperature_layer_0);
     p.nozzle = nozzleTemperatureParams(extruder);
     return p;
 }
 
 NozzleTemperatureParams nozzleTemperatureParams(const Settings& extruder) {
     NozzleTemperatureParams n;
-    n.enabled = extruder.boolean("machine_nozzle_temp_enabled");
-    n.print_c = extruder.temperatureCelsius("material_print_temperature");
-    n.layer0_c = extruder.temperatureCelsius("material_print_temperature_layer_0");
-    n.flow_dependent = extruder.boolean("material_flow_dependent_temperature");
+    n.enabled = extruder.boolean(key::machine_nozzle_temp_enabled);
+    n.print_c = extruder.temperatureCelsius(key::material_print_temperature);
+    n.layer0_c = extruder.temperatureCelsius(key::material_print_temperature_layer_0);
+    n.flow_dependent = extruder.boolean(key::material_flow_dependent_temperature);
     if (n.flow_dependent)
-        n.graph = parseFlowTemperatureGraph(extruder.text("material_flow_temp_graph"));
-    n.heat_up_c_per_s = extruder.real("machine_nozzle_heat_up_speed");
-    n.cool_down_c_per_s = extruder.real("machine_nozzle_cool_down_speed");
-    n.extrusion_cool_c_per_s = extruder.real("material_extrusion_cool_down_speed");
+        n.graph = parseFlowTemperatureGraph(extruder.text(key::material_flow_temp_graph));
+    n.heat_up_c_per_s = extruder.real(key::machine_nozzle_heat_up_speed);
+    n.cool_down_c_per_s = extruder.real(key::machine_nozzle_cool_down_speed);
+    n.extrusion_cool_c_per_s = extruder.real(key::material_extrusion_cool_down_speed);
     return n;
 }
 

@@ -73,14 +73,15 @@ std::string expandGcodeTokens(const std::string& code, const Settings& scope,
                 const std::size_t nr = std::stoul(which);
                 if (nr < machine.extruders.size())
                     source = &machine.extruders[nr];
-            } else if (scope.has(which)) {
-                const std::string nr_text = scope.text(which);
+            } else if (const std::string* nr_value = scope.find(which)) {
+                const std::string& nr_text = *nr_value;
                 if (!nr_text.empty() && std::all_of(nr_text.begin(), nr_text.end(), ::isdigit) &&
                     std::stoul(nr_text) < machine.extruders.size())
                     source = &machine.extruders[std::stoul(nr_text)];
             }
         }
-        out += source->has(m[1].str()) ? source->text(m[1].str()) : m[0].str();
+        const std::string* value = source->find(m[1].str());
+        out += value != nullptr ? *value : m[0].str();
     }
     out.append(last, code.cend());
     return out;
@@ -88,7 +89,7 @@ std::string expandGcodeTokens(const std::string& code, const Settings& scope,
 
 void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
     const Settings& global = machine.global;
-    const std::string start = global.has("machine_start_gcode") ? global.text("machine_start_gcode") : "";
+    const std::string start = global.text(key::machine_start_gcode);
     SettingValues changes;
     if (!user.global.count("material_bed_temp_prepend")) {
         const bool referenced =
@@ -105,26 +106,24 @@ void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
         changes["material_print_temp_prepend"] = referenced ? "False" : "True";
     }
     const Settings& initial = machine.extruders.front();
-    for (const char* key : {"machine_start_gcode", "machine_end_gcode"}) {
-        if (global.has(key))
-            changes[key] = expandGcodeTokens(global.text(key), withClock(initial), machine);
-    }
-    if (global.has("material_bed_temperature"))
-        changes["print_bed_temperature"] = global.text("material_bed_temperature");
-    if (global.has("material_print_temperature"))
-        changes["print_temperature"] = global.text("material_print_temperature");
-    if (global.has("speed_travel"))
-        changes["travel_speed"] = global.text("speed_travel");
-    if (!global.has("initial_extruder_nr"))
+    changes["machine_start_gcode"] =
+        expandGcodeTokens(global.text(key::machine_start_gcode), withClock(initial), machine);
+    changes["machine_end_gcode"] =
+        expandGcodeTokens(global.text(key::machine_end_gcode), withClock(initial), machine);
+    changes["print_bed_temperature"] = global.text(key::material_bed_temperature);
+    changes["print_temperature"] = global.text(key::material_print_temperature);
+    changes["travel_speed"] = global.text(key::speed_travel);
+    // Cura sends the extruder it starts with (StartSliceJob); the command line does not.
+    if (!global.has(key::initial_extruder_nr))
         changes["initial_extruder_nr"] = "0";
     machine.global = Settings(global.scope(), withValues(global, changes));
 
     for (Settings& extruder : machine.extruders) {
         SettingValues own;
-        for (const char* key : {"machine_extruder_start_code", "machine_extruder_end_code"}) {
-            if (extruder.has(key))
-                own[key] = expandGcodeTokens(extruder.text(key), extruder, machine);
-        }
+        own["machine_extruder_start_code"] =
+            expandGcodeTokens(extruder.text(key::machine_extruder_start_code), extruder, machine);
+        own["machine_extruder_end_code"] =
+            expandGcodeTokens(extruder.text(key::machine_extruder_end_code), extruder, machine);
         for (const char* key : {"material_bed_temp_prepend", "material_print_temp_prepend"}) {
             if (auto it = changes.find(key); it != changes.end())
                 own[key] = it->second;

@@ -65,7 +65,7 @@ Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& given
     own.erase("extruder_nr");
     // Group-level values (-g) sit between the train and the mesh.
     for (const auto& [key, value] : group.all()) {
-        if (!machine.global.has(key) || machine.global.text(key) != value)
+        if (const std::string* global = machine.global.find(key); global == nullptr || *global != value)
             own.emplace(key, value);
     }
     SettingValues values;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "common/Error.h"
+#include "settings/ValueParse.h"
 
 namespace mixengine {
 namespace {
@@ -32,12 +33,12 @@ bool endsWith(const std::string& text, std::string_view suffix) {
 }  // namespace
 
 void checkLineWidths(const Settings& settings, const std::vector<std::string>& given) {
-    const std::string factor_key = "initial_layer_line_width_factor";
-    const double factor = settings.has(factor_key) ? settings.ratio(factor_key) : 1.0;
-    for (const auto& [key, text] : settings.all()) {
+    const std::string factor_key(key::initial_layer_line_width_factor.name);
+    const double factor = settings.ratio(key::initial_layer_line_width_factor);
+    for (const auto& [key, text] : settings.all()) {  // every *line_width, Cura's and any a profile adds
         if (!endsWith(key, "line_width"))
             continue;
-        const double width = settings.millimetres(key);
+        const double width = parseReal(key, text);
         if (width < kMinLineWidthMm) {
             throw InputError("setting '" + key + "': " + number(width) + " mm is narrower than the " +
                              number(kMinLineWidthMm) + " mm a line can be printed" + origin(key, given));

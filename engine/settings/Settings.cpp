@@ -6,7 +6,7 @@
 
 namespace mixengine {
 
-const std::string& Settings::text(std::string_view key) const {
+const std::string& Settings::textOf(std::string_view key) const {
     auto it = values_.find(key);
     if (it == values_.end()) {
         throw InputError("setting '" + std::string(key) + "' has no value in " + scope_ +
@@ -15,42 +15,45 @@ const std::string& Settings::text(std::string_view key) const {
     return it->second;
 }
 
-bool Settings::boolean(std::string_view key) const {
-    return parseBool(key, text(key));
+double Settings::number(std::string_view name) const {
+    return parseReal(name, textOf(name));
 }
-double Settings::real(std::string_view key) const {
-    return parseReal(key, text(key));
+bool Settings::boolean(Key<SettingUnit::Bool> key) const {
+    return parseBool(key.name, textOf(key.name));
 }
-long long Settings::integer(std::string_view key) const {
-    return parseInteger(key, text(key));
+double Settings::real(Key<SettingUnit::Real> key) const {
+    return number(key.name);
 }
-coord_um Settings::lengthMicrons(std::string_view key) const {
-    return parseLengthMicrons(key, text(key));
+long long Settings::integer(Key<SettingUnit::Integer> key) const {
+    return parseInteger(key.name, textOf(key.name));
 }
-double Settings::millimetres(std::string_view key) const {
-    return real(key);
+coord_um Settings::lengthMicrons(Key<SettingUnit::Millimetres> key) const {
+    return parseLengthMicrons(key.name, textOf(key.name));
 }
-double Settings::ratio(std::string_view key) const {
-    return parseRatio(key, text(key));
+double Settings::millimetres(Key<SettingUnit::Millimetres> key) const {
+    return number(key.name);
 }
-double Settings::angleRadians(std::string_view key) const {
-    return radiansFromDegrees(real(key));
+double Settings::ratio(Key<SettingUnit::Percent> key) const {
+    return parseRatio(key.name, textOf(key.name));
 }
-int Settings::extruderIndex(std::string_view key) const {
-    return static_cast<int>(integer(key));
+double Settings::angleRadians(Key<SettingUnit::Degrees> key) const {
+    return radiansFromDegrees(number(key.name));
 }
-Path Settings::polygonMicrons(std::string_view key) const {
-    return parsePolygonMicrons(key, text(key));
+int Settings::extruderIndex(Key<SettingUnit::Extruder> key) const {
+    return static_cast<int>(parseInteger(key.name, textOf(key.name)));
 }
-Paths Settings::polygonsMicrons(std::string_view key) const {
-    return parsePolygonsMicrons(key, text(key));
+Path Settings::polygonMicrons(Key<SettingUnit::Polygon> key) const {
+    return parsePolygonMicrons(key.name, textOf(key.name));
 }
-std::vector<double> Settings::realList(std::string_view key) const {
-    return parseRealList(key, text(key));
+Paths Settings::polygonsMicrons(Key<SettingUnit::Polygons> key) const {
+    return parsePolygonsMicrons(key.name, textOf(key.name));
+}
+std::vector<double> Settings::realList(Key<SettingUnit::RealList> key) const {
+    return parseRealList(key.name, textOf(key.name));
 }
 
-Matrix3 Settings::matrix3(std::string_view key) const {
-    auto rows = parseMatrix3(key, text(key));
+Matrix3 Settings::matrix3(Key<SettingUnit::Matrix> key) const {
+    auto rows = parseMatrix3(key.name, textOf(key.name));
     Matrix3 matrix;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)

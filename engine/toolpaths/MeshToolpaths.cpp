@@ -25,13 +25,14 @@
 namespace mixengine {
 namespace {
 
-int countOf(const Settings& s, std::string_view key, long long fallback = 0) {
-    return static_cast<int>(std::clamp<long long>(s.has(key) ? s.integer(key) : fallback, 0, 1'000'000));
+int countOf(const Settings& s, Key<SettingUnit::Integer> key) {
+    return static_cast<int>(std::clamp<long long>(s.integer(key), 0, 1'000'000));
 }
 
 /// angles[layer % n], or the defaults when the list is empty.
-double angleFor(const Settings& s, std::string_view key, int layer, const std::vector<double>& defaults) {
-    std::vector<double> angles = s.has(key) ? s.realList(key) : std::vector<double>{};
+double angleFor(const Settings& s, Key<SettingUnit::RealList> key, int layer,
+                const std::vector<double>& defaults) {
+    std::vector<double> angles = s.realList(key);
     if (angles.empty())
         angles = defaults;
     return angles[static_cast<std::size_t>(layer) % angles.size()];
@@ -59,27 +60,26 @@ struct SkinReferences {
 };
 
 bool outerSurfacesWanted(const Settings& s) {
-    return s.has("retraction_combing") && s.text("retraction_combing") == "no_outer_surfaces";
+    return s.text(key::retraction_combing) == "no_outer_surfaces";
 }
 
 SkinReferences skinReferences(const Settings& s) {
-    const int walls = countOf(s, "wall_line_count");
-    const coord_um w0 = s.lengthMicrons("wall_line_width_0"), wx = s.lengthMicrons("wall_line_width_x");
-    auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
-    return {skinReference(length("top_skin_preshrink"), walls, w0, wx),
-            skinReference(length("bottom_skin_preshrink"), walls, w0, wx),
-            countOf(s, "roofing_layer_count") > 0 || outerSurfacesWanted(s) ? std::min(2, walls) : -1};
+    const int walls = countOf(s, key::wall_line_count);
+    const coord_um w0 = s.lengthMicrons(key::wall_line_width_0), wx = s.lengthMicrons(key::wall_line_width_x);
+    auto length = [&](Key<SettingUnit::Millimetres> key) { return s.lengthMicrons(key); };
+    return {skinReference(length(key::top_skin_preshrink), walls, w0, wx),
+            skinReference(length(key::bottom_skin_preshrink), walls, w0, wx),
+            countOf(s, key::roofing_layer_count) > 0 || outerSurfacesWanted(s) ? std::min(2, walls) : -1};
 }
 
 /// initial_bottom_layers: below it a spiralized mesh prints as usual.
 int spiralBottomLayers(const Settings& s) {
-    return countOf(s, "initial_bottom_layers", countOf(s, "bottom_layers"));
+    return countOf(s, key::initial_bottom_layers);
 }
 
 /// fill_perimeter_gaps (not in spiralize mode).
 bool fillsPerimeterGaps(const Settings& s) {
-    return !(s.has("fill_perimeter_gaps") && s.text("fill_perimeter_gaps") == "nowhere") &&
-           !s.flag("magic_spiralize");
+    return !(s.text(key::fill_perimeter_gaps) == "nowhere") && !s.boolean(key::magic_spiralize);
 }
 
 WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
@@ -87,28 +87,26 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.top_reference = refs.top.wall;
     p.bottom_reference = refs.bottom.wall;
     p.roofing_reference = refs.roofing_wall;
-    p.wall_count = countOf(s, "wall_line_count");
-    if (layer % 2 == 1 && s.flag("alternate_extra_perimeter"))
+    p.wall_count = countOf(s, key::wall_line_count);
+    if (layer % 2 == 1 && s.boolean(key::alternate_extra_perimeter))
         ++p.wall_count;  // one wall more on every other layer
     if (layer % 2 == 1 && spiralizeOn(s) && layer < spiralBottomLayers(s))
         p.wall_count += 5;  // spiralize: a watertight bottom (toolpaths/surface/Spiralize.h)
     p.outer_width_um = styles.wall_0.width_um;
     p.inner_width_um = styles.wall_x.width_um;
-    p.outer_inset_um = s.has("wall_0_inset") ? s.lengthMicrons("wall_0_inset") : 0;
+    p.outer_inset_um = s.lengthMicrons(key::wall_0_inset);
     p.outer_speed_mm_s = styles.wall_0.speed_mm_s;
     p.inner_speed_mm_s = styles.wall_x.speed_mm_s;
     p.outer_flow = styles.wall_0.flow;
     p.inner_flow = styles.wall_x.flow;
     p.outer_extruder = styles.wall_0.extruder;
     p.inner_extruder = styles.wall_x.extruder;
-    p.group_by_outline = s.flag("optimize_wall_printing_order");
+    p.group_by_outline = s.boolean(key::optimize_wall_printing_order);
     p.perimeter_gaps = fillsPerimeterGaps(s);
-    p.filter_tiny_gaps = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
+    p.filter_tiny_gaps = s.boolean(key::filter_out_tiny_gaps);
     p.outer_first = outerWallFirst(s, layer);
-    p.simplify_resolution_um =
-        s.has("meshfix_maximum_resolution") ? s.lengthMicrons("meshfix_maximum_resolution") : 0;
-    p.simplify_deviation_um =
-        s.has("meshfix_maximum_deviation") ? s.lengthMicrons("meshfix_maximum_deviation") : 0;
+    p.simplify_resolution_um = s.lengthMicrons(key::meshfix_maximum_resolution);
+    p.simplify_deviation_um = s.lengthMicrons(key::meshfix_maximum_deviation);
     return p;
 }
 
@@ -117,29 +115,29 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
 /// piece of them, wall_min_flow the least; as CuraEngine 4.13, the inner walls at 1 µm less than their
 /// width, so that neighbouring walls, one width apart, do not count.
 void compensateOverlaps(std::vector<ExtrusionPath>& walls, const Settings& s, const WallParams& p) {
-    const double min_flow = s.has("wall_min_flow") ? s.ratio("wall_min_flow") : 0.0;
-    if (s.flag("travel_compensate_overlapping_walls_0_enabled"))
+    const double min_flow = s.ratio(key::wall_min_flow);
+    if (s.boolean(key::travel_compensate_overlapping_walls_0_enabled))
         compensateWallOverlaps(walls, Feature::WallOuter, {p.outer_width_um, min_flow});
-    if (s.flag("travel_compensate_overlapping_walls_x_enabled"))
+    if (s.boolean(key::travel_compensate_overlapping_walls_x_enabled))
         compensateWallOverlaps(walls, Feature::WallInner, {p.inner_width_um - 1, min_flow});
 }
 
 SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     SkinParams p;
-    p.top_layers = countOf(s, "top_layers");
-    p.bottom_layers = countOf(s, "bottom_layers");
-    p.initial_bottom_layers = countOf(s, "initial_bottom_layers", p.bottom_layers);
-    auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
+    p.top_layers = countOf(s, key::top_layers);
+    p.bottom_layers = countOf(s, key::bottom_layers);
+    p.initial_bottom_layers = countOf(s, key::initial_bottom_layers);
+    auto length = [&](Key<SettingUnit::Millimetres> key) { return s.lengthMicrons(key); };
     p.top_preshrink_um = refs.top.leftover_preshrink_um;
     p.bottom_preshrink_um = refs.bottom.leftover_preshrink_um;
-    p.top_expand_um = length("top_skin_expand_distance");
-    p.bottom_expand_um = length("bottom_skin_expand_distance");
-    p.min_width_for_expansion_um = length("min_skin_width_for_expansion");
-    p.roofing_layers = countOf(s, "roofing_layer_count");
-    p.min_infill_area_um2 = s.has("min_infill_area") ? s.real("min_infill_area") * 1e6 : 0.0;
-    p.small_gaps_heuristic = s.flag("skin_no_small_gaps_heuristic");
+    p.top_expand_um = length(key::top_skin_expand_distance);
+    p.bottom_expand_um = length(key::bottom_skin_expand_distance);
+    p.min_width_for_expansion_um = length(key::min_skin_width_for_expansion);
+    p.roofing_layers = countOf(s, key::roofing_layer_count);
+    p.min_infill_area_um2 = s.real(key::min_infill_area) * 1e6;
+    p.small_gaps_heuristic = s.boolean(key::skin_no_small_gaps_heuristic);
     p.outer_surfaces = outerSurfacesWanted(s);
-    p.infill_opening_um = s.has("infill_line_width") ? s.lengthMicrons("infill_line_width") : 0;
+    p.infill_opening_um = s.lengthMicrons(key::infill_line_width);
     return p;
 }
 
@@ -148,29 +146,30 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
 std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
     if (!fillsPerimeterGaps(s))
         return std::nullopt;
-    FeatureStyle style = featureStyle(
-        s, {"wall_line_width_0", "speed_topbottom", "wall_x_material_flow", "top_bottom_extruder_nr"}, layer);
-    style.width_um = s.lengthMicrons("wall_line_width_0") / 2;
+    FeatureStyle style = featureStyle(s,
+                                      {key::wall_line_width_0, key::speed_topbottom,
+                                       key::wall_x_material_flow, key::top_bottom_extruder_nr},
+                                      layer);
+    style.width_um = s.lengthMicrons(key::wall_line_width_0) / 2;
     return style;
 }
 
 SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const MeshStyles& styles) {
     SkinPathParams p;
-    p.outline_count = countOf(s, "skin_outline_count");
+    p.outline_count = countOf(s, key::skin_outline_count);
     p.z_um = z;
     p.first_layer = layer == 0;
-    const char* pattern_key = layer == 0 ? "top_bottom_pattern_0" : "top_bottom_pattern";
-    p.skin.pattern = infillPatternOf(s.text(pattern_key), pattern_key);
-    p.skin.angle_degrees = angleFor(s, "skin_angles", layer, {45, 135});
-    p.skin.overlap_um = s.has("skin_overlap_mm") ? s.lengthMicrons("skin_overlap_mm") : 0;
+    const Key<SettingUnit::Text> pattern_key =
+        layer == 0 ? key::top_bottom_pattern_0 : key::top_bottom_pattern;
+    p.skin.pattern = infillPatternOf(s.text(pattern_key), std::string(pattern_key.name));
+    p.skin.angle_degrees = angleFor(s, key::skin_angles, layer, {45, 135});
+    p.skin.overlap_um = s.lengthMicrons(key::skin_overlap_mm);
     p.skin.style = styles.skin;
-    p.skin.monotonic = s.flag("skin_monotonic");
-    p.roofing.pattern = s.has("roofing_pattern")
-                            ? infillPatternOf(s.text("roofing_pattern"), "roofing_pattern")
-                            : p.skin.pattern;
-    p.roofing.angle_degrees = angleFor(s, "roofing_angles", layer, {45, 135});
+    p.skin.monotonic = s.boolean(key::skin_monotonic);
+    p.roofing.pattern = infillPatternOf(s.text(key::roofing_pattern), "roofing_pattern");
+    p.roofing.angle_degrees = angleFor(s, key::roofing_angles, layer, {45, 135});
     p.roofing.style = styles.roofing;
-    p.roofing.monotonic = s.flag("roofing_monotonic");
+    p.roofing.monotonic = s.boolean(key::roofing_monotonic);
     p.gap_style = gapStyle(s, layer);
     p.gap_angle_degrees = p.roofing.angle_degrees;  // as CuraEngine: perimeter gaps at the roofing angles
     return p;
@@ -178,9 +177,9 @@ SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const Me
 
 /// The outlines after xy_offset / xy_offset_layer_0 and hole_xy_offset (toolpaths/walls/OutlineOffsets.h).
 Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
-    auto length = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
-    const coord_um xy = length(layer == 0 ? "xy_offset_layer_0" : "xy_offset");
-    const coord_um hole = length("hole_xy_offset");
+    auto length = [&](Key<SettingUnit::Millimetres> key) { return s.lengthMicrons(key); };
+    const coord_um xy = length(layer == 0 ? key::xy_offset_layer_0 : key::xy_offset);
+    const coord_um hole = length(key::hole_xy_offset);
     return xy == 0 && hole == 0 ? outlines : offsetOutlines(outlines, xy, hole);
 }
 
@@ -189,16 +188,15 @@ Paths adjustedOutlines(const Paths& outlines, const Settings& s, int layer) {
 /// would not line up with the walls (alternate_extra_perimeter, a wider first layer).
 Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const SkinAreas& areas,
                     const Settings& s, int layer) {
-    const bool concentric = s.has("infill_pattern") && s.text("infill_pattern") == "concentric";
-    const bool wider_first = layer == 0 && s.has("initial_layer_line_width_factor") &&
-                             s.ratio("initial_layer_line_width_factor") > 1.0;
-    const bool inner_gaps = s.lengthMicrons("infill_line_distance") > 0 &&
-                            (!s.has("infill_overlap_mm") || s.lengthMicrons("infill_overlap_mm") >= 0) &&
-                            !(concentric && (s.flag("alternate_extra_perimeter") || wider_first));
+    const bool concentric = s.text(key::infill_pattern) == "concentric";
+    const bool wider_first = layer == 0 && s.ratio(key::initial_layer_line_width_factor) > 1.0;
+    const bool inner_gaps = s.lengthMicrons(key::infill_line_distance) > 0 &&
+                            (s.lengthMicrons(key::infill_overlap_mm) >= 0) &&
+                            !(concentric && (s.boolean(key::alternate_extra_perimeter) || wider_first));
     if (!inner_gaps || inner_area.empty())
         return between_walls;
-    const double width = double(s.lengthMicrons("infill_line_width"));
-    const bool filter = !s.has("filter_out_tiny_gaps") || s.boolean("filter_out_tiny_gaps");
+    const double width = double(s.lengthMicrons(key::infill_line_width));
+    const bool filter = s.boolean(key::filter_out_tiny_gaps);
     // The inner area is united (WallResult): no union before the offset.
     Paths gaps =
         differenceWithoutSmallIslands(offsetMiter(inner_area, -15, Loops::United),
@@ -210,7 +208,7 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
 
 /// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "all" and "off").
 std::optional<Paths> combAreaFor(const Paths& outlines, const SkinAreas& areas, const Settings& s) {
-    const std::string mode = s.has("retraction_combing") ? s.text("retraction_combing") : "all";
+    const std::string mode = s.text(key::retraction_combing);
     if (mode == "noskin")
         return differenceOf(outlines, areas.skin);
     if (mode == "no_outer_surfaces")
@@ -242,7 +240,7 @@ std::vector<MeshLayerGroups> surfaceToolpaths(const std::vector<SlicedLayer>& la
 }
 
 bool surfaceOnly(const Settings& s) {
-    return s.has("magic_mesh_surface_mode") && s.text("magic_mesh_surface_mode") == "surface";
+    return s.text(key::magic_mesh_surface_mode) == "surface";
 }
 
 /// The mesh's highest layer with an outline (−1: none).
@@ -256,10 +254,10 @@ int highestFilledLayer(const std::vector<SlicedLayer>& layers) {
 
 /// The ironing of layer `i` (toolpaths/surface/Ironing.h); none unless ironing_enabled.
 std::vector<ExtrusionPath> ironing(const std::vector<SlicedLayer>& layers, const Settings& s, std::size_t i) {
-    if (!s.has("ironing_enabled") || !s.boolean("ironing_enabled"))
+    if (!s.boolean(key::ironing_enabled))
         return {};
     const int layer = static_cast<int>(i);
-    const bool only_highest = s.flag("ironing_only_highest_layer");
+    const bool only_highest = s.boolean(key::ironing_only_highest_layer);
     if (only_highest && layer != highestFilledLayer(layers))
         return {};
     const Paths above =
@@ -300,8 +298,7 @@ void addSpirals(const std::vector<Paths>& spiral_loops, const Settings& s, const
 }  // namespace
 
 bool outerWallFirst(const Settings& s, int layer) {
-    return s.flag("outer_inset_first") ||
-           (layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim");
+    return s.boolean(key::outer_inset_first) || (layer == 0 && s.text(key::adhesion_type) == "brim");
 }
 
 MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settings& settings, int threads,
@@ -399,8 +396,7 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
         const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
         result[i].infill = meshInfillPaths(infill[i], fill);
-        if (settings.has("infill_randomize_start_location") &&
-            settings.boolean("infill_randomize_start_location"))
+        if (settings.boolean(key::infill_randomize_start_location))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);
         result[i].ironing = ironing(layers, settings, i);
         progress.itemDone();

@@ -11,7 +11,7 @@ namespace mixengine {
 namespace {
 
 std::vector<Rgb> paintColors(const Settings& scope, const std::vector<Rgb>& channel_colors) {
-    const std::string text = scope.has("mixing_paint_colors") ? scope.text("mixing_paint_colors") : "";
+    const std::string text = scope.text(key::mixing_paint_colors);
     if (text.find_first_not_of(" \t") == std::string::npos)
         return channel_colors;
     return parseHexColorList("setting 'mixing_paint_colors'", text);
@@ -31,11 +31,11 @@ Rgb colorOfCode(std::uint32_t code, const std::vector<Rgb>& extruder_colors, con
 
 /// mixing_paint_blend in microns (0 when not set).
 coord_um blendOf(const Settings& scope) {
-    if (!scope.has("mixing_paint_blend"))
+    if (!scope.has(key::mixing_paint_blend))
         return 0;
-    const double blend_mm = parseReal("mixing_paint_blend", scope.text("mixing_paint_blend"));
+    const double blend_mm = parseReal("mixing_paint_blend", scope.text(key::mixing_paint_blend));
     if (!(blend_mm >= 0) || !std::isfinite(blend_mm))
-        throw InputError("setting 'mixing_paint_blend': " + scope.text("mixing_paint_blend") +
+        throw InputError("setting 'mixing_paint_blend': " + scope.text(key::mixing_paint_blend) +
                          " mm is not a width of 0 or more");
     return static_cast<coord_um>(std::llround(blend_mm * 1000.0));
 }
@@ -47,10 +47,9 @@ MeshPaint paintOf(const Mesh& mesh, const Settings& scope, const std::vector<Rgb
     MeshPaint paint;
     if (mesh.face_colors.empty())
         return paint;
-    const double depth_mm = parseReal(
-        "mixing_paint_depth", scope.has("mixing_paint_depth") ? scope.text("mixing_paint_depth") : "1");
+    const double depth_mm = parseReal("mixing_paint_depth", scope.text(key::mixing_paint_depth));
     if (!(depth_mm > 0))
-        throw InputError("setting 'mixing_paint_depth': " + scope.text("mixing_paint_depth") +
+        throw InputError("setting 'mixing_paint_depth': " + scope.text(key::mixing_paint_depth) +
                          " mm is not above 0");
     paint.blend_um = blendOf(scope);
     const std::vector<Rgb> extruder_colors = paintColors(scope, channel_colors);

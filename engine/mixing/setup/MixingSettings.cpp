@@ -23,44 +23,8 @@ constexpr DialectEntry kDialects[] = {
     {MixDialectKind::MarlinM165, "marlin_m165"}, {MixDialectKind::RrfM567, "rrf_m567"},
 };
 
-/// Defaults in code: the values of settings/mixengine/mixing.def.json.
-struct DefaultEntry {
-    std::string_view key;
-    const char* value;
-};
-constexpr DefaultEntry kDefaults[] = {
-    {"mixing_mode", "single"},
-    {"mixing_dialect", "eb_axes"},
-    {"mixing_channels", "2"},
-    {"mixing_resolution", "100"},
-    {"mixing_tool", "0"},
-    {"mixing_klipper_stepper", "mixing_b"},
-    {"mixing_gradient_unit", "percent"},
-    {"mixing_gradient_axis", "z"},
-    {"mixing_gradient_start", "0"},
-    {"mixing_gradient_end", "100"},
-    {"mixing_ratio", "0.5:0.5"},
-    {"mixing_raft_ratio", "1"},
-    {"mixing_support_ratio", "1"},
-    {"mixing_chamber_volume", "0"},
-    {"mixing_paint_blend", "0"},
-    {"mixing_chamber_stages", "3"},
-    {"mixing_transition_tolerance", "0.1"},
-    {"mixing_purge_tower_enable", "true"},
-    {"mixing_channel_colors", "#f2c500,#e0408a,#00a3e0,#262626,#f4f4f4"},
-    {"mixing_target_color", "#808080"},
-};
-
-const char* defaultText(std::string_view key) {
-    for (const DefaultEntry& entry : kDefaults)
-        if (entry.key == key)
-            return entry.value;
-    return "";  // mixing_gradient_stops, mixing_gradient_colors, mixing_core_ratio
-}
-
-std::string textOf(const Settings& s, std::string_view key) {
-    return s.has(key) ? s.text(key) : std::string(defaultText(key));
-}
+/// The colours of the channels mixing_channel_colors leaves out (a list shorter than the channels).
+constexpr std::string_view kFallbackPalette = "#f2c500,#e0408a,#00a3e0,#262626,#f4f4f4";
 
 [[noreturn]] void fail(std::string_view key, const std::string& message) {
     throw InputError("setting '" + std::string(key) + "': " + message);
@@ -84,7 +48,7 @@ std::string trimmed(std::string_view text) {
 }
 
 MixingMode parseMode(const Settings& s) {
-    const std::string text = textOf(s, "mixing_mode");
+    const std::string text = s.text(key::mixing_mode);
     if (text == "single")
         return MixingMode::Single;
     if (text == "dual")
@@ -97,7 +61,7 @@ MixingMode parseMode(const Settings& s) {
 }
 
 MixDialectKind parseDialect(const Settings& s) {
-    const std::string text = textOf(s, "mixing_dialect");
+    const std::string text = s.text(key::mixing_dialect);
     for (const DialectEntry& d : kDialects) {
         if (text == d.name)
             return d.kind;
@@ -108,15 +72,11 @@ MixDialectKind parseDialect(const Settings& s) {
     fail("mixing_dialect", "unknown dialect '" + text + "' (one of " + names + ")");
 }
 
-long long integerOf(const Settings& s, std::string_view key) {
-    return parseInteger(key, textOf(s, key));
-}
-
 void checkChannels(const Settings& s, const MixingOutput& out) {
     if (out.channels < 1 || out.channels > kMaxMixChannels)
         fail("mixing_channels",
              std::to_string(out.channels) + " is outside 1.." + std::to_string(kMaxMixChannels));
-    const long long extruders = s.has("machine_extruder_count") ? s.integer("machine_extruder_count") : 1;
+    const long long extruders = s.integer(key::machine_extruder_count);
     if (extruders > 1 && out.channels > extruders)
         fail("mixing_channels", std::to_string(out.channels) + " channels, but the printer has " +
                                     std::to_string(extruders) + " (machine_extruder_count)");
@@ -128,13 +88,9 @@ void checkChannels(const Settings& s, const MixingOutput& out) {
                                     dialectName(out.dialect) + " drives exactly 2 (E and B)");
 }
 
-double heightOf(const Settings& s, std::string_view key) {
-    return parseReal(key, textOf(s, key));
-}
-
 std::vector<GradientStop> twoStopGradient(const Settings& s, int channels) {
-    const double start = heightOf(s, "mixing_gradient_start");
-    const double end = heightOf(s, "mixing_gradient_end");
+    const double start = s.number(key::mixing_gradient_start);
+    const double end = s.number(key::mixing_gradient_end);
     if (start > end)
         fail("mixing_gradient_start", shown(start) + " is above mixing_gradient_end " + shown(end));
     if (channels < 2)
@@ -158,24 +114,24 @@ MixingOutput parseMixingOutput(const Settings& global) {
     if (!out.enabled())
         return out;
     out.dialect = parseDialect(global);
-    out.channels = static_cast<int>(integerOf(global, "mixing_channels"));
+    out.channels = static_cast<int>(global.integer(key::mixing_channels));
     checkChannels(global, out);
-    const long long steps = integerOf(global, "mixing_resolution");
+    const long long steps = global.integer(key::mixing_resolution);
     if (steps < 1 || steps > 1'000'000)
         fail("mixing_resolution", std::to_string(steps) + " steps is outside 1..1000000");
     out.resolution_steps = static_cast<int>(steps);
-    const long long tool = integerOf(global, "mixing_tool");
+    const long long tool = global.integer(key::mixing_tool);
     if (tool < 0 || tool > 255)
         fail("mixing_tool", std::to_string(tool) + " is outside 0..255");
     out.tool = static_cast<int>(tool);
-    out.klipper_stepper = trimmed(textOf(global, "mixing_klipper_stepper"));
+    out.klipper_stepper = trimmed(global.text(key::mixing_klipper_stepper));
     if (out.dialect == MixDialectKind::KlipperB && out.klipper_stepper.empty())
         fail("mixing_klipper_stepper", "empty: the [manual_stepper] name is needed to zero axis B");
     return out;
 }
 
 bool relativeExtrusion(const Settings& global) {
-    return global.boolean("relative_extrusion") || parseMixingOutput(global).forcesRelativeExtrusion();
+    return global.boolean(key::relative_extrusion) || parseMixingOutput(global).forcesRelativeExtrusion();
 }
 
 MixVector parseMixRatio(std::string_view key, std::string_view text, int channels) {
@@ -257,7 +213,7 @@ std::vector<GradientStop> parseGradientStops(std::string_view key, std::string_v
 namespace {
 
 GradientAxis parseAxis(const Settings& scope) {
-    const std::string axis = trimmed(textOf(scope, "mixing_gradient_axis"));
+    const std::string axis = trimmed(scope.text(key::mixing_gradient_axis));
     if (axis == "z")
         return GradientAxis::Z;
     if (axis == "x")
@@ -276,16 +232,15 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, co
     m.mode = output.mode;
     if (!output.enabled())
         return m;
-    if (const std::string core = textOf(scope, "mixing_core_ratio"); !trimmed(core).empty())
+    if (const std::string core = scope.text(key::mixing_core_ratio); !trimmed(core).empty())
         m.core = parseMixRatio("mixing_core_ratio", core, output.channels);
-    if (scope.has("mixing_mode"))
-        m.mode = parseMode(scope);       // a model's own mode (e.g. a cutting mesh's region)
+    m.mode = parseMode(scope);           // a model's own mode (e.g. a cutting mesh's region)
     if (m.mode == MixingMode::Single) {  // within a mixed print: the first filament alone
         m.mode = MixingMode::Dual;
         m.fixed = parseMixRatio("mixing_mode", "1", output.channels);
         return m;
     }
-    const std::string unit = textOf(scope, "mixing_gradient_unit");
+    const std::string unit = scope.text(key::mixing_gradient_unit);
     if (unit == "percent")
         m.unit = HeightUnit::Percent;
     else if (unit == "mm")
@@ -294,7 +249,7 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, co
         fail("mixing_gradient_unit", "unknown unit '" + unit + "' (percent or mm)");
     m.axis = parseAxis(scope);
     if (m.mode == MixingMode::Dual) {
-        m.fixed = parseMixRatio("mixing_ratio", textOf(scope, "mixing_ratio"), output.channels);
+        m.fixed = parseMixRatio("mixing_ratio", scope.text(key::mixing_ratio), output.channels);
         return m;
     }
     if (m.mode == MixingMode::Color) {
@@ -304,12 +259,12 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, co
         m.fixed = m.colors.back().solution.mix;
         return m;
     }
-    const std::string color_stops = textOf(scope, "mixing_gradient_colors");
+    const std::string color_stops = scope.text(key::mixing_gradient_colors);
     if (!trimmed(color_stops).empty() && colors) {
         m.stops = parseGradientColors(color_stops, *colors, m.colors);
         return m;
     }
-    const std::string stops = textOf(scope, "mixing_gradient_stops");
+    const std::string stops = scope.text(key::mixing_gradient_stops);
     m.stops = trimmed(stops).empty() ? twoStopGradient(scope, output.channels)
                                      : parseGradientStops("mixing_gradient_stops", stops, output.channels);
     if (m.stops.empty())
@@ -319,7 +274,7 @@ MeshMixing parseMeshMixing(const Settings& scope, const MixingOutput& output, co
 
 SolvedColor parseTargetColor(const Settings& scope, const PigmentModel& colors) {
     SolvedColor solved;
-    solved.target = parseHexColor("setting 'mixing_target_color'", textOf(scope, "mixing_target_color"));
+    solved.target = parseHexColor("setting 'mixing_target_color'", scope.text(key::mixing_target_color));
     solved.solution = solveColor(colors, solved.target);
     return solved;
 }
@@ -341,15 +296,15 @@ std::vector<GradientStop> parseGradientColors(std::string_view text, const Pigme
 }
 
 MixVector parseRaftMix(const Settings& global, const MixingOutput& output) {
-    return parseMixRatio("mixing_raft_ratio", textOf(global, "mixing_raft_ratio"), output.channels);
+    return parseMixRatio("mixing_raft_ratio", global.text(key::mixing_raft_ratio), output.channels);
 }
 
 MixVector parseSupportMix(const Settings& global, const MixingOutput& output) {
-    return parseMixRatio("mixing_support_ratio", textOf(global, "mixing_support_ratio"), output.channels);
+    return parseMixRatio("mixing_support_ratio", global.text(key::mixing_support_ratio), output.channels);
 }
 
 double parseChamberVolumeMm3(const Settings& global) {
-    const double volume = parseReal("mixing_chamber_volume", textOf(global, "mixing_chamber_volume"));
+    const double volume = parseReal("mixing_chamber_volume", global.text(key::mixing_chamber_volume));
     if (volume < 0)
         fail("mixing_chamber_volume", shown(volume) + " mm³ is negative");
     return volume;
@@ -358,7 +313,7 @@ double parseChamberVolumeMm3(const Settings& global) {
 ChamberSpec parseChamberSpec(const Settings& global) {
     ChamberSpec spec;
     spec.volume_mm3 = parseChamberVolumeMm3(global);
-    const long long stages = integerOf(global, "mixing_chamber_stages");
+    const long long stages = global.integer(key::mixing_chamber_stages);
     if (stages < 1 || stages > 200)
         fail("mixing_chamber_stages", std::to_string(stages) + " is outside 1..200");
     spec.stages = static_cast<int>(stages);
@@ -367,7 +322,7 @@ ChamberSpec parseChamberSpec(const Settings& global) {
 
 double parseTransitionTolerance(const Settings& global) {
     const double tolerance =
-        parseReal("mixing_transition_tolerance", textOf(global, "mixing_transition_tolerance"));
+        parseReal("mixing_transition_tolerance", global.text(key::mixing_transition_tolerance));
     if (!(tolerance > 0 && tolerance <= 1))
         fail("mixing_transition_tolerance",
              shown(tolerance) + " is outside (0, 1] (a share: 0.1 = within 10 %)");
@@ -375,15 +330,15 @@ double parseTransitionTolerance(const Settings& global) {
 }
 
 bool parsePurgeTower(const Settings& global) {
-    const std::string text = trimmed(textOf(global, "mixing_purge_tower_enable"));
+    const std::string text = trimmed(global.text(key::mixing_purge_tower_enable));
     if (text != "true" && text != "false" && text != "True" && text != "False")
         fail("mixing_purge_tower_enable", "'" + text + "' is not true or false");
     return text == "true" || text == "True";
 }
 
 std::vector<Rgb> parseChannelColors(const Settings& global, int channels) {
-    const std::string defaults = defaultText("mixing_channel_colors");
-    const std::string given = textOf(global, "mixing_channel_colors");
+    const std::string defaults(kFallbackPalette);
+    const std::string given = global.text(key::mixing_channel_colors);
     auto nth = [](const std::string& list, int index) {
         std::size_t start = 0;
         for (int i = 0; i < index && start != std::string::npos; ++i) {

@@ -99,25 +99,25 @@ Path convexHull(const Paths& polygons) {
 AdhesionResult generateAdhesion(const AdhesionInput& in) {
     AdhesionResult result;
     const Settings& g = *in.global;
-    const std::string type = g.text("adhesion_type");
+    const std::string type = g.text(key::adhesion_type);
     if (type == "none" || type == "raft" || in.models.empty())
         return result;
-    const char* extruder_key =
-        g.has("skirt_brim_extruder_nr") ? "skirt_brim_extruder_nr" : "adhesion_extruder_nr";
-    int nr = g.has(extruder_key) ? g.extruderIndex(extruder_key) : 0;
+    int nr = g.extruderIndex(key::adhesion_extruder_nr);
     nr = nr < 0 ? 0 : nr;
     const Settings& s = trainSettings(g, in.extruders, nr);
-    FeatureStyle style = featureStyle(
-        s, {"skirt_brim_line_width", "skirt_brim_speed", "skirt_brim_material_flow", extruder_key}, 0);
-    style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");  // CuraEngine does not slow skirt and brim down
+    FeatureStyle style = featureStyle(s,
+                                      {key::skirt_brim_line_width, key::skirt_brim_speed,
+                                       key::skirt_brim_material_flow, key::adhesion_extruder_nr},
+                                      0);
+    style.speed_mm_s =
+        s.velocityMmPerS(key::skirt_brim_speed);  // CuraEngine does not slow skirt and brim down
     style.extruder = nr;
-    const double min_length =
-        s.has("skirt_brim_minimal_length") ? s.millimetres("skirt_brim_minimal_length") * 1000 : 0;
+    const double min_length = s.millimetres(key::skirt_brim_minimal_length) * 1000;
     if (type == "brim") {
-        const bool outside_only = !s.has("brim_outside_only") || s.boolean("brim_outside_only");
+        const bool outside_only = s.boolean(key::brim_outside_only);
         const Paths base = outside_only ? outerContours(in.models) : unionOf(in.models);
-        const coord_um gap = s.has("brim_gap") ? s.lengthMicrons("brim_gap") : 0;
-        const int count = static_cast<int>(std::max<long long>(0, s.integer("brim_line_count")));
+        const coord_um gap = s.lengthMicrons(key::brim_gap);
+        const int count = static_cast<int>(std::max<long long>(0, s.integer(key::brim_line_count)));
         result.paths = rings(base, gap + style.width_um / 2, count, min_length, style);
         if (!in.shields.empty()) {
             const coord_um reach =
@@ -132,12 +132,12 @@ AdhesionResult generateAdhesion(const AdhesionInput& in) {
     Paths everything = in.models;
     everything.insert(everything.end(), in.extras.begin(), in.extras.end());
     Paths hull{convexHull(everything)};
-    coord_um first = s.lengthMicrons("skirt_gap") + style.width_um / 2;
+    coord_um first = s.lengthMicrons(key::skirt_gap) + style.width_um / 2;
     if (!in.shields.empty()) {  // around the shields too, as CuraEngine
         hull = approxConvexHull(unionOf(offsetPolygons(hull, first - style.width_um), in.shields), 0);
         first = style.width_um;
     }
-    const int count = static_cast<int>(std::max<long long>(0, s.integer("skirt_line_count")));
+    const int count = static_cast<int>(std::max<long long>(0, s.integer(key::skirt_line_count)));
     result.paths = rings(hull, first, count, min_length, style);
     return result;
 }

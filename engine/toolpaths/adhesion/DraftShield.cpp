@@ -16,17 +16,17 @@ constexpr coord_um kSimplifyUm = 25;
 
 /// The number of layers the shield covers (from the first printed one), and whether it is limited.
 std::size_t shieldLayers(const Settings& g, std::size_t printed) {
-    if (!g.has("draft_shield_height_limitation") || g.text("draft_shield_height_limitation") != "limited")
+    if (g.text(key::draft_shield_height_limitation) != "limited")
         return printed;
-    const coord_um height = std::max<coord_um>(1, g.lengthMicrons("layer_height"));
-    const coord_um above = g.lengthMicrons("draft_shield_height") - g.lengthMicrons("layer_height_0");
+    const coord_um height = std::max<coord_um>(1, g.lengthMicrons(key::layer_height));
+    const coord_um above = g.lengthMicrons(key::draft_shield_height) - g.lengthMicrons(key::layer_height_0);
     return static_cast<std::size_t>(std::max<coord_um>(0, above / height + 1));
 }
 
 /// The models' outlines on the sampled layers, united, and the convex hull of the support's lines
 /// there (many small loops: their hull gives the same approximate hull far faster).
 Paths sampledOutlines(const DraftShieldInput& in, std::size_t layers) {
-    const coord_um height = std::max<coord_um>(1, in.global->lengthMicrons("layer_height"));
+    const coord_um height = std::max<coord_um>(1, in.global->lengthMicrons(key::layer_height));
     const std::size_t skip = static_cast<std::size_t>(500 / height + 1);
     Paths models, support;
     for (std::size_t k = 0; k < layers; k += skip) {
@@ -46,9 +46,9 @@ Paths sampledOutlines(const DraftShieldInput& in, std::size_t layers) {
 
 FeatureStyle shieldStyle(const DraftShieldInput& in, int layer) {
     const Settings& s = trainSettings(*in.global, in.extruders, 0);
-    FeatureStyle style =
-        featureStyle(s, {"skirt_brim_line_width", "skirt_brim_speed", "skirt_brim_material_flow", ""}, layer);
-    style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");  // as the skirt: not slowed down
+    FeatureStyle style = featureStyle(
+        s, {key::skirt_brim_line_width, key::skirt_brim_speed, key::skirt_brim_material_flow, {}}, layer);
+    style.speed_mm_s = s.velocityMmPerS(key::skirt_brim_speed);  // as the skirt: not slowed down
     return style;
 }
 
@@ -70,19 +70,19 @@ DraftShieldResult generateDraftShield(const DraftShieldInput& in) {
     const std::size_t count = in.model->size();
     out.layers.resize(count);
     const Settings& g = *in.global;
-    if (!g.has("draft_shield_enabled") || !g.boolean("draft_shield_enabled") || in.first_layer >= count)
+    if (!g.boolean(key::draft_shield_enabled) || in.first_layer >= count)
         return out;
     const std::size_t printed = count - in.first_layer;
     const std::size_t layers = shieldLayers(g, printed);
     if (layers == 0)
         return out;
     out.outline = cleanPolygons(approxConvexHull(sampledOutlines(in, std::min(layers, printed)),
-                                                 g.lengthMicrons("draft_shield_dist")),
+                                                 g.lengthMicrons(key::draft_shield_dist)),
                                 kSimplifyUm);
-    const bool limited = g.text("draft_shield_height_limitation") == "limited";
+    const bool limited = g.text(key::draft_shield_height_limitation) == "limited";
     const std::size_t last =
         limited ? std::min(printed - 1, layers) : printed - 1;  // as CuraEngine: one more
-    const bool brim = g.text("adhesion_type") == "brim";
+    const bool brim = g.text(key::adhesion_type) == "brim";
     for (std::size_t k = brim ? 1 : 0; k <= last; ++k) {
         const std::size_t i = in.first_layer + k;
         FeatureStyle style = shieldStyle(in, static_cast<int>(k));

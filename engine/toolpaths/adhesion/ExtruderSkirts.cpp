@@ -34,13 +34,13 @@ std::vector<ExtrusionPath> otherExtruderSkirts(const Settings& global, const std
         if (extruder == adhesion_extruder)
             continue;
         const Settings& s = trainSettings(global, extruders, extruder);
-        FeatureStyle style =
-            featureStyle(s, {"skirt_brim_line_width", "skirt_brim_speed", "skirt_brim_material_flow", ""}, 0);
-        style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");  // not slowed down, as the skirt
+        FeatureStyle style = featureStyle(
+            s, {key::skirt_brim_line_width, key::skirt_brim_speed, key::skirt_brim_material_flow, {}}, 0);
+        style.speed_mm_s = s.velocityMmPerS(key::skirt_brim_speed);  // not slowed down, as the skirt
         style.extruder = extruder;
         offset += last_width / 2 + style.width_um / 2;
         last_width = style.width_um;
-        const double minimal_um = s.millimetres("skirt_brim_minimal_length") * 1000.0;
+        const double minimal_um = s.millimetres(key::skirt_brim_minimal_length) * 1000.0;
         double length_um = 0;
         constexpr int kMaxLines = 1000;  // a safety bound
         for (int n = 0; length_um < minimal_um && n < kMaxLines; ++n) {

@@ -17,18 +17,18 @@ constexpr int kCircleSegments = 32;
 
 FeatureStyle towerStyle(const TowerInput& in, int extruder, int layer) {
     const Settings& s = trainSettings(*in.global, in.extruders, extruder);
-    FeatureStyle style =
-        featureStyle(s, {"prime_tower_line_width", "speed_prime_tower", "prime_tower_flow", ""}, layer);
+    FeatureStyle style = featureStyle(
+        s, {key::prime_tower_line_width, key::speed_prime_tower, key::prime_tower_flow, {}}, layer);
     style.extruder = extruder;
     return style;
 }
 
 int adhesionExtruder(const Settings& g) {
-    return g.has("adhesion_extruder_nr") ? std::max(0, g.extruderIndex("adhesion_extruder_nr")) : 0;
+    return std::max(0, g.extruderIndex(key::adhesion_extruder_nr));
 }
 
 bool towerBrimEnabled(const Settings& g) {
-    return g.flag("prime_tower_brim_enable") && g.text("adhesion_type") != "raft";
+    return g.boolean(key::prime_tower_brim_enable) && g.text(key::adhesion_type) != "raft";
 }
 
 /// The width of the tower's own brim (0 without it).
@@ -36,9 +36,9 @@ coord_um towerBrimWidth(const Settings& g, const std::vector<Settings>* extruder
     if (!towerBrimEnabled(g))
         return 0;
     const Settings& a = trainSettings(g, extruders, adhesionExtruder(g));
-    return std::llround(double(a.integer("brim_line_count")) *
-                        double(a.lengthMicrons("skirt_brim_line_width")) *
-                        a.ratio("initial_layer_line_width_factor"));
+    return std::llround(double(a.integer(key::brim_line_count)) *
+                        double(a.lengthMicrons(key::skirt_brim_line_width)) *
+                        a.ratio(key::initial_layer_line_width_factor));
 }
 
 /// Every extruder of the machine, lowest material_adhesion_tendency first (ties by number).
@@ -49,7 +49,7 @@ std::vector<int> towerOrder(const Settings& g, const std::vector<Settings>* extr
     for (std::size_t e = 0; e < count; ++e) {
         order[e] = static_cast<int>(e);
         const Settings& s = trainSettings(g, extruders, static_cast<int>(e));
-        tendency[e] = s.has("material_adhesion_tendency") ? s.real("material_adhesion_tendency") : 0.0;
+        tendency[e] = s.real(key::material_adhesion_tendency);
     }
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
         return tendency[static_cast<std::size_t>(a)] < tendency[static_cast<std::size_t>(b)];
@@ -89,12 +89,12 @@ std::vector<ExtrusionPath> towerBrim(const TowerInput& in, const Path& outline) 
     const Settings& g = *in.global;
     const int nr = adhesionExtruder(g);
     const Settings& a = trainSettings(g, in.extruders, nr);
-    FeatureStyle style =
-        featureStyle(a, {"skirt_brim_line_width", "skirt_brim_speed", "skirt_brim_material_flow", ""}, 0);
-    style.speed_mm_s = a.velocityMmPerS("skirt_brim_speed");
+    FeatureStyle style = featureStyle(
+        a, {key::skirt_brim_line_width, key::skirt_brim_speed, key::skirt_brim_material_flow, {}}, 0);
+    style.speed_mm_s = a.velocityMmPerS(key::skirt_brim_speed);
     style.extruder = nr;
-    const long long count = a.integer("brim_line_count");
-    const double min_length_um = a.millimetres("skirt_brim_minimal_length") * 1000.0;
+    const long long count = a.integer(key::brim_line_count);
+    const double min_length_um = a.millimetres(key::skirt_brim_minimal_length) * 1000.0;
     constexpr long long kMaxExtra = 1000;
     std::vector<ExtrusionPath> lines;
     double total_um = 0;
@@ -134,15 +134,15 @@ int lastMultiExtruderLayer(const std::vector<std::set<int>>& used) {
 }
 
 Path primeTowerOutline(const Settings& g, const std::vector<Settings>* extruders) {
-    if (!g.has("prime_tower_enable") || !g.boolean("prime_tower_enable"))
+    if (!g.boolean(key::prime_tower_enable))
         return {};
-    const coord_um size = g.lengthMicrons("prime_tower_size");
-    if (size <= 10 || g.real("prime_tower_min_volume") * 1000.0 <= 10)  // CuraEngine compares them in µm
+    const coord_um size = g.lengthMicrons(key::prime_tower_size);
+    if (size <= 10 || g.real(key::prime_tower_min_volume) * 1000.0 <= 10)  // CuraEngine compares them in µm
         return {};
     const coord_um brim = towerBrimWidth(g, extruders);
     const double r = double(size) / 2;
-    const double cx = double(g.lengthMicrons("prime_tower_position_x") - brim) - r;
-    const double cy = double(g.lengthMicrons("prime_tower_position_y") - brim) + r;
+    const double cx = double(g.lengthMicrons(key::prime_tower_position_x) - brim) - r;
+    const double cy = double(g.lengthMicrons(key::prime_tower_position_y) - brim) + r;
     Path circle;
     for (int i = 0; i < kCircleSegments; ++i) {
         const double a = 2 * std::numbers::pi * i / kCircleSegments;
@@ -159,7 +159,7 @@ PrimeTowerResult generatePrimeTower(const TowerInput& in) {
     if (outline.empty() || last < 0)
         return out;
     // As CuraEngine: the rings are sized once, for layer_height, each extruder inside the ones before.
-    const double thickness_mm = micronsToMm(in.global->lengthMicrons("layer_height"));
+    const double thickness_mm = micronsToMm(in.global->lengthMicrons(key::layer_height));
     std::vector<std::pair<int, Paths>> rings;
     coord_um inset = 0;
     for (int extruder : towerOrder(*in.global, in.extruders)) {
@@ -168,7 +168,7 @@ PrimeTowerResult generatePrimeTower(const TowerInput& in) {
         int made = 0;
         rings.emplace_back(extruder, ringsOf(outline, inset, style.width_um,
                                              micronsToMm(style.width_um) * thickness_mm * style.flow,
-                                             s.real("prime_tower_min_volume"), made));
+                                             s.real(key::prime_tower_min_volume), made));
         inset += made * style.width_um;
     }
     const int top = std::min(last + 1, static_cast<int>(out.layers.size()) - 1);
@@ -178,7 +178,7 @@ PrimeTowerResult generatePrimeTower(const TowerInput& in) {
         out.brim = towerBrim(in, outline);
     out.outermost = rings.front().first;
     out.last_forced_layer = last;
-    const double r = double(in.global->lengthMicrons("prime_tower_size")) / 2;
+    const double r = double(in.global->lengthMicrons(key::prime_tower_size)) / 2;
     out.middle = {std::llround(double(outline.front().X) - r), outline.front().Y};  // vertex 0 is at angle 0
     return out;
 }
@@ -187,16 +187,16 @@ std::vector<std::vector<ExtrusionPath>> generateOozeShield(const TowerInput& in)
     std::vector<std::vector<ExtrusionPath>> layers(in.heights->size());
     const Settings& g = *in.global;
     const int last = lastMultiExtruderLayer(in.used);
-    if (!g.has("ooze_shield_enabled") || !g.boolean("ooze_shield_enabled") || last < 0)
+    if (!g.boolean(key::ooze_shield_enabled) || last < 0)
         return layers;
-    const coord_um dist = g.lengthMicrons("ooze_shield_dist");
+    const coord_um dist = g.lengthMicrons(key::ooze_shield_dist);
     std::vector<Paths> shield(static_cast<std::size_t>(last) + 1);
     for (std::size_t i = 0; i < shield.size(); ++i)
         shield[i] = offsetPolygons((*in.model)[i], dist);
-    const double angle = g.angleDegrees("ooze_shield_angle");
+    const double angle = g.angleDegrees(key::ooze_shield_angle);
     if (angle <= 89) {
         const coord_um slope =
-            std::llround(std::tan(radiansFromDegrees(angle)) * double(g.lengthMicrons("layer_height")));
+            std::llround(std::tan(radiansFromDegrees(angle)) * double(g.lengthMicrons(key::layer_height)));
         for (std::size_t i = 1; i < shield.size(); ++i)
             shield[i] = unionOf(shield[i], offsetPolygons(shield[i - 1], -slope));
         for (std::size_t i = shield.size(); i-- > 1;)
@@ -207,10 +207,10 @@ std::vector<std::vector<ExtrusionPath>> generateOozeShield(const TowerInput& in)
             continue;
         const int extruder = *in.used[i].begin();
         const Settings& s = trainSettings(g, in.extruders, extruder);
-        FeatureStyle style =
-            featureStyle(s, {"skirt_brim_line_width", "skirt_brim_speed", "skirt_brim_material_flow", ""},
-                         static_cast<int>(i));
-        style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");  // shields are not slowed down either
+        FeatureStyle style = featureStyle(
+            s, {key::skirt_brim_line_width, key::skirt_brim_speed, key::skirt_brim_material_flow, {}},
+            static_cast<int>(i));
+        style.speed_mm_s = s.velocityMmPerS(key::skirt_brim_speed);  // shields are not slowed down either
         style.extruder = extruder;
         for (const Path& p : unionOf(shield[i])) {
             if (counterClockwise(p))

@@ -16,9 +16,25 @@ namespace {
 constexpr coord_um kFineResolutionUm = 10;
 constexpr coord_um kFineDeviationUm = 5;
 
-/// One raft layer's kind: its keys' prefix, feature and line direction.
+/// One raft layer's kind: its keys, feature and line direction.
+/// The settings of one of the raft's three kinds of layer (raft_base_*, raft_interface_*, raft_surface_*).
+struct RaftKeys {
+    Key<SettingUnit::Millimetres> line_width, line_spacing, thickness;
+    Key<SettingUnit::MmPerS> speed;
+    Key<SettingUnit::Percent> fan_speed;
+};
+
+constexpr RaftKeys kBaseKeys{key::raft_base_line_width, key::raft_base_line_spacing, key::raft_base_thickness,
+                             key::raft_base_speed, key::raft_base_fan_speed};
+constexpr RaftKeys kInterfaceKeys{key::raft_interface_line_width, key::raft_interface_line_spacing,
+                                  key::raft_interface_thickness, key::raft_interface_speed,
+                                  key::raft_interface_fan_speed};
+constexpr RaftKeys kSurfaceKeys{key::raft_surface_line_width, key::raft_surface_line_spacing,
+                                key::raft_surface_thickness, key::raft_surface_speed,
+                                key::raft_surface_fan_speed};
+
 struct RaftLayerKind {
-    std::string prefix;  ///< "raft_base", "raft_interface", "raft_surface"
+    RaftKeys keys;
     Feature feature = Feature::RaftBase;
     double angle_degrees = 0;
 };
@@ -33,10 +49,10 @@ Paths simplified(const Paths& loops, coord_um resolution_um, coord_um deviation_
     return out;
 }
 
-FeatureStyle raftStyle(const Settings& s, const std::string& prefix, int extruder) {
+FeatureStyle raftStyle(const Settings& s, const RaftKeys& keys, int extruder) {
     FeatureStyle style;
-    style.width_um = s.lengthMicrons(prefix + "_line_width");
-    style.speed_mm_s = s.velocityMmPerS(prefix + "_speed");
+    style.width_um = s.lengthMicrons(keys.line_width);
+    style.speed_mm_s = s.velocityMmPerS(keys.speed);
     style.flow = 1.0;
     style.extruder = extruder;
     return style;
@@ -53,15 +69,15 @@ void appendLines(const Paths& lines, Feature feature, const FeatureStyle& style,
 /// The paths of one raft layer of `kind` over `outline`.
 std::vector<ExtrusionPath> raftLayerPaths(const Paths& outline, const Settings& s, const RaftLayerKind& kind,
                                           int extruder) {
-    const FeatureStyle style = raftStyle(s, kind.prefix, extruder);
-    const coord_um spacing = s.lengthMicrons(kind.prefix + "_line_spacing");
+    const FeatureStyle style = raftStyle(s, kind.keys, extruder);
+    const coord_um spacing = s.lengthMicrons(kind.keys.line_spacing);
     std::vector<ExtrusionPath> out;
     if (style.width_um <= 0 || spacing <= 0)
         return out;
     const Paths inside = offsetMiter(outline, -style.width_um / 2);
     if (kind.feature == Feature::RaftBase) {
-        const Paths wall = simplified(inside, s.lengthMicrons("meshfix_maximum_resolution"),
-                                      s.lengthMicrons("meshfix_maximum_deviation"));
+        const Paths wall = simplified(inside, s.lengthMicrons(key::meshfix_maximum_resolution),
+                                      s.lengthMicrons(key::meshfix_maximum_deviation));
         appendStyledLoops(wall, kind.feature, style, out);
         appendLines(lineSegments(wall, spacing, kind.angle_degrees, 0), kind.feature, style, out);
         return out;
@@ -73,10 +89,10 @@ std::vector<ExtrusionPath> raftLayerPaths(const Paths& outline, const Settings& 
 
 std::vector<RaftLayerKind> layerKinds(int surface_layers) {
     std::vector<RaftLayerKind> kinds{
-        {"raft_base", Feature::RaftBase, 0},
-        {"raft_interface", Feature::RaftInterface, surface_layers > 0 ? 45.0 : 90.0}};
+        {kBaseKeys, Feature::RaftBase, 0},
+        {kInterfaceKeys, Feature::RaftInterface, surface_layers > 0 ? 45.0 : 90.0}};
     for (int k = 1; k <= surface_layers; ++k)
-        kinds.push_back({"raft_surface", Feature::RaftSurface, 90.0 * k});
+        kinds.push_back({kSurfaceKeys, Feature::RaftSurface, 90.0 * k});
     return kinds;
 }
 
@@ -96,16 +112,16 @@ RaftToolpaths generateRaft(const RaftInput& in) {
         return raft;
     const Settings& s = trainSettings(*in.global, in.extruders, layout.extruder);
     raft.outline =
-        raftOutline(in.first_layer, s.lengthMicrons("raft_margin"), s.lengthMicrons("raft_smoothing"));
+        raftOutline(in.first_layer, s.lengthMicrons(key::raft_margin), s.lengthMicrons(key::raft_smoothing));
     int index = -layout.extraLayerCount();
     coord_um z = 0;
     for (const RaftLayerKind& kind : layerKinds(layout.surface_layers)) {
         RaftLayer layer;
         layer.index = index++;
-        layer.thickness_um = s.lengthMicrons(kind.prefix + "_thickness");
+        layer.thickness_um = s.lengthMicrons(kind.keys.thickness);
         z += layer.thickness_um;
         layer.z_um = z;
-        layer.fan_ratio = s.ratio(kind.prefix + "_fan_speed");
+        layer.fan_ratio = s.ratio(kind.keys.fan_speed);
         layer.paths = raftLayerPaths(raft.outline, s, kind, layout.extruder);
         raft.layers.push_back(std::move(layer));
     }

@@ -50,21 +50,21 @@ coord_um RaftLayout::modelLiftUm(int layer) const {
 
 RaftLayout raftLayout(const Settings& global, const std::vector<Settings>* extruders) {
     RaftLayout layout;
-    layout.enabled = global.has("adhesion_type") && global.text("adhesion_type") == "raft";
+    layout.enabled = global.text(key::adhesion_type) == "raft";
     if (!layout.enabled)
         return layout;
-    const int nr = global.has("adhesion_extruder_nr") ? global.extruderIndex("adhesion_extruder_nr") : 0;
+    const int nr = global.extruderIndex(key::adhesion_extruder_nr);
     layout.extruder = std::max(nr, 0);
     const Settings& s = trainSettings(global, extruders, layout.extruder);
-    layout.base_thickness_um = s.lengthMicrons("raft_base_thickness");
-    layout.interface_thickness_um = s.lengthMicrons("raft_interface_thickness");
-    layout.surface_thickness_um = s.lengthMicrons("raft_surface_thickness");
+    layout.base_thickness_um = s.lengthMicrons(key::raft_base_thickness);
+    layout.interface_thickness_um = s.lengthMicrons(key::raft_interface_thickness);
+    layout.surface_thickness_um = s.lengthMicrons(key::raft_surface_thickness);
     layout.surface_layers =
-        static_cast<int>(std::clamp<long long>(s.integer("raft_surface_layers"), 0, 1000));
-    layout.airgap_um = s.lengthMicrons("raft_airgap");
-    layout.layer_0_overlap_um = s.lengthMicrons("layer_0_z_overlap");
-    layout.layer_height_0_um = global.lengthMicrons("layer_height_0");
-    layout.layer_height_um = global.lengthMicrons("layer_height");
+        static_cast<int>(std::clamp<long long>(s.integer(key::raft_surface_layers), 0, 1000));
+    layout.airgap_um = s.lengthMicrons(key::raft_airgap);
+    layout.layer_0_overlap_um = s.lengthMicrons(key::layer_0_z_overlap);
+    layout.layer_height_0_um = global.lengthMicrons(key::layer_height_0);
+    layout.layer_height_um = global.lengthMicrons(key::layer_height);
     return layout;
 }
 

@@ -5,10 +5,9 @@
 //              1 … speed_slowdown_layers-1 ramp linearly from it (CuraEngine's smoothing):
 //              v = v0 + (v − v0) · layer / speed_slowdown_layers; layers below the model
 //              (negative: raft filler layers) print at the feature's own speed, as CuraEngine;
-//   flow     — the feature's *_material_flow, × material_flow_layer_0 on layer 0 (a missing key
-//              counts as 100 %);
-//   extruder — the feature's *_extruder_nr; −1 (or a missing key) means the mesh's extruder_nr.
-#include <string_view>
+//   flow     — the feature's *_material_flow, × material_flow_layer_0 on layer 0;
+//   extruder — the feature's *_extruder_nr; −1 (or none given) means the mesh's extruder_nr.
+#include <optional>
 #include <vector>
 
 #include "geometry/Point.h"
@@ -25,7 +24,10 @@ struct FeatureStyle {
 };
 
 struct FeatureKeys {
-    std::string_view width, speed, flow, extruder;
+    Key<SettingUnit::Millimetres> width;
+    Key<SettingUnit::MmPerS> speed;
+    Key<SettingUnit::Percent> flow;
+    std::optional<Key<SettingUnit::Extruder>> extruder;  ///< none: the scope's own extruder
 };
 
 /// The mesh's (or scope's) own extruder: extruder_nr, 0 when absent.
@@ -35,11 +37,17 @@ int ownExtruder(const Settings& s);
 /// speed_travel_layer_0) on layer 0, then linearly towards `key` over speed_slowdown_layers (reached on
 /// that layer); below layer 0 (raft, filler layers), from that layer on (with speed_slowdown_layers 0:
 /// layer 0 too) and without `first_key`, `key` itself.
-double slowdownValue(const Settings& s, std::string_view key, std::string_view first_key, int layer);
+/// The ramp of slowdownValue between a first-layer value and a value.
+double slowdownBlend(const Settings& s, double value, double first, int layer);
+
+template <SettingUnit U>
+double slowdownValue(const Settings& s, Key<U> key, Key<U> first_key, int layer) {
+    return slowdownBlend(s, s.number(key), s.number(first_key), layer);
+}
 
 /// Speed of `speed_key` on `layer` with the first-layer speed and the slow-down ramp (none below
 /// layer 0).
-double layerSpeed(const Settings& s, std::string_view speed_key, int layer);
+double layerSpeed(const Settings& s, Key<SettingUnit::MmPerS> speed_key, int layer);
 
 FeatureStyle featureStyle(const Settings& s, const FeatureKeys& keys, int layer);
 

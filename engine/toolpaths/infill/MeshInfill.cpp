@@ -15,17 +15,13 @@ long long roundDivide(coord_um a, coord_um b) {
     return (a + b / 2) / b;
 }
 
-coord_um lengthOr(const Settings& s, std::string_view key, coord_um fallback) {
-    return s.has(key) ? s.lengthMicrons(key) : fallback;
-}
-
-int countOf(const Settings& s, std::string_view key) {
-    return s.has(key) ? static_cast<int>(std::clamp<long long>(s.integer(key), 0, 1'000'000)) : 0;
+int countOf(const Settings& s, Key<SettingUnit::Integer> key) {
+    return static_cast<int>(std::clamp<long long>(s.integer(key), 0, 1'000'000));
 }
 
 int combinedLayers(const Settings& s) {
-    const coord_um layer_height = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
-    const coord_um thickness = lengthOr(s, "infill_sparse_thickness", layer_height);
+    const coord_um layer_height = std::max<coord_um>(s.lengthMicrons(key::layer_height), 1);
+    const coord_um thickness = s.lengthMicrons(key::infill_sparse_thickness);
     return static_cast<int>(
         std::clamp<long long>(roundDivide(std::max<coord_um>(thickness, 0), layer_height), 1, 1'000'000));
 }
@@ -105,31 +101,30 @@ void thickerLayers(const LayerInfill& layer, const InfillParams& base, std::vect
 
 InfillLayerParams infillLayerParams(const Settings& s) {
     InfillLayerParams p;
-    const coord_um layer_height = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
-    p.support_only = s.flag("infill_support_enabled");
+    const coord_um layer_height = std::max<coord_um>(s.lengthMicrons(key::layer_height), 1);
+    p.support_only = s.boolean(key::infill_support_enabled);
     if (p.support_only) {
-        const double angle = s.has("infill_support_angle") ? s.angleRadians("infill_support_angle") : 0.0;
+        const double angle = s.angleRadians(key::infill_support_angle);
         p.support_reach_um = static_cast<coord_um>((std::tan(angle) - 0.01) * double(layer_height));
     }
-    p.gradual_steps = countOf(s, "gradual_infill_steps");
+    p.gradual_steps = countOf(s, key::gradual_infill_steps);
     // At least one layer per step (CuraEngine would loop for ever on 0).
     p.gradual_step_layers = static_cast<int>(
-        std::max<long long>(1, roundDivide(lengthOr(s, "gradual_infill_step_height", 0), layer_height)));
-    p.small_gaps_heuristic = s.flag("skin_no_small_gaps_heuristic");
+        std::max<long long>(1, roundDivide(s.lengthMicrons(key::gradual_infill_step_height), layer_height)));
+    p.small_gaps_heuristic = s.boolean(key::skin_no_small_gaps_heuristic);
     p.combine_layers = combinedLayers(s);
-    p.initial_bottom_layers = countOf(s, "initial_bottom_layers");
-    p.top_layers = countOf(s, "top_layers");
+    p.initial_bottom_layers = countOf(s, key::initial_bottom_layers);
+    p.top_layers = countOf(s, key::top_layers);
     return p;
 }
 
 InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const FeatureStyle& style,
                               const Point2& mesh_middle) {
     InfillParams p;
-    p.line_distance_um = s.lengthMicrons("infill_line_distance");
-    p.pattern =
-        infillPatternOf(s.has("infill_pattern") ? s.text("infill_pattern") : "lines", "infill_pattern");
+    p.line_distance_um = s.lengthMicrons(key::infill_line_distance);
+    p.pattern = infillPatternOf(s.text(key::infill_pattern), "infill_pattern");
     const bool alternate = p.pattern == InfillPattern::Lines || p.pattern == InfillPattern::ZigZag;
-    std::vector<double> angles = s.has("infill_angles") ? s.realList("infill_angles") : std::vector<double>{};
+    std::vector<double> angles = s.realList(key::infill_angles);
     if (angles.empty())
         angles = alternate ? std::vector<double>{45, 135} : std::vector<double>{45};
     p.angle_degrees = angles[static_cast<std::size_t>(layer / combinedLayers(s)) % angles.size()];
@@ -138,34 +133,33 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
     p.speed_mm_s = style.speed_mm_s;
     p.flow = style.flow;
     p.extruder = style.extruder;
-    p.origin_um = {mesh_middle.X + lengthOr(s, "infill_offset_x", 0),
-                   mesh_middle.Y + lengthOr(s, "infill_offset_y", 0)};
-    p.overlap_um = lengthOr(s, "infill_overlap_mm", 0);
-    p.wall_count = countOf(s, "infill_wall_line_count");
-    p.multiplier = std::max(1, countOf(s, "infill_multiplier"));
-    p.connect_lines = s.flag("zig_zaggify_infill") || p.pattern == InfillPattern::ZigZag;
+    p.origin_um = {mesh_middle.X + s.lengthMicrons(key::infill_offset_x),
+                   mesh_middle.Y + s.lengthMicrons(key::infill_offset_y)};
+    p.overlap_um = s.lengthMicrons(key::infill_overlap_mm);
+    p.wall_count = countOf(s, key::infill_wall_line_count);
+    p.multiplier = std::max(1, countOf(s, key::infill_multiplier));
+    p.connect_lines = s.boolean(key::zig_zaggify_infill) || p.pattern == InfillPattern::ZigZag;
     return p;
 }
 
 std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,
                                              const Point2& mesh_middle, int threads) {
-    if (!s.has("infill_pattern") || s.text("infill_pattern") != "cubicsubdiv")
+    if (s.text(key::infill_pattern) != "cubicsubdiv")
         return nullptr;
     SubdivCubeParams p;
-    p.line_distance_um = s.lengthMicrons("infill_line_distance");
+    p.line_distance_um = s.lengthMicrons(key::infill_line_distance);
     if (p.line_distance_um <= 0)
         return nullptr;
-    p.radius_addition_um = lengthOr(s, "sub_div_rad_add", 0);
-    const std::vector<double> angles =
-        s.has("infill_angles") ? s.realList("infill_angles") : std::vector<double>{};
+    p.radius_addition_um = s.lengthMicrons(key::sub_div_rad_add);
+    const std::vector<double> angles = s.realList(key::infill_angles);
     p.angle_degrees = angles.empty() ? 0.0 : angles.front();
-    p.origin_um = {mesh_middle.X + lengthOr(s, "infill_offset_x", 0),
-                   mesh_middle.Y + lengthOr(s, "infill_offset_y", 0)};
-    p.layer_height_um = std::max<coord_um>(s.lengthMicrons("layer_height"), 1);
-    p.machine_size_um = {lengthOr(s, "machine_width", 0), lengthOr(s, "machine_depth", 0),
-                         lengthOr(s, "machine_height", 0)};
-    const int walls = countOf(s, "wall_line_count");
-    const coord_um w0 = lengthOr(s, "wall_line_width_0", 400), wx = lengthOr(s, "wall_line_width_x", 400);
+    p.origin_um = {mesh_middle.X + s.lengthMicrons(key::infill_offset_x),
+                   mesh_middle.Y + s.lengthMicrons(key::infill_offset_y)};
+    p.layer_height_um = std::max<coord_um>(s.lengthMicrons(key::layer_height), 1);
+    p.machine_size_um = {s.lengthMicrons(key::machine_width), s.lengthMicrons(key::machine_depth),
+                         s.lengthMicrons(key::machine_height)};
+    const int walls = countOf(s, key::wall_line_count);
+    const coord_um w0 = s.lengthMicrons(key::wall_line_width_0), wx = s.lengthMicrons(key::wall_line_width_x);
     const coord_um inset = walls >= 2 ? w0 + wx / 2 : walls == 1 ? w0 / 2 : 0;
     std::vector<Paths> boundaries(layers.size());
     parallelFor(layers.size(), threads,

@@ -119,24 +119,23 @@ int bridgeLineAngle(const Paths& part, const Paths& solid_below, const Paths& is
 
 BridgeSkinParams bridgeSkinParams(const Settings& s) {
     BridgeSkinParams p;
-    p.enabled = s.flag("bridge_settings_enabled");
+    p.enabled = s.boolean(key::bridge_settings_enabled);
     if (!p.enabled)
         return p;
-    p.more_layers = s.boolean("bridge_enable_more_layers");
-    p.support_threshold = s.ratio("bridge_skin_support_threshold");
-    const coord_um distance = s.lengthMicrons("infill_line_distance");
-    p.sparse_infill = distance == 0 || double(s.lengthMicrons("infill_line_width")) / double(distance) <=
-                                           s.ratio("bridge_sparse_infill_max_density");
-    p.bottom_layers = static_cast<int>(s.integer("bottom_layers"));
-    p.overlap_um = std::max(s.lengthMicrons("skin_overlap_mm"), s.lengthMicrons("wall_line_width_x") / 2);
-    const char* suffix[3] = {"", "_2", "_3"};
-    const char* fan[3] = {"bridge_fan_speed", "bridge_fan_speed_2", "bridge_fan_speed_3"};
-    for (int b = 0; b < 3; ++b) {
-        const std::string tail = suffix[b];
-        p.layers[b] = {s.velocityMmPerS("bridge_skin_speed" + tail),
-                       s.ratio("bridge_skin_material_flow" + tail), s.ratio("bridge_skin_density" + tail),
-                       s.ratio(fan[b])};
-    }
+    p.more_layers = s.boolean(key::bridge_enable_more_layers);
+    p.support_threshold = s.ratio(key::bridge_skin_support_threshold);
+    const coord_um distance = s.lengthMicrons(key::infill_line_distance);
+    p.sparse_infill = distance == 0 || double(s.lengthMicrons(key::infill_line_width)) / double(distance) <=
+                                           s.ratio(key::bridge_sparse_infill_max_density);
+    p.bottom_layers = static_cast<int>(s.integer(key::bottom_layers));
+    p.overlap_um =
+        std::max(s.lengthMicrons(key::skin_overlap_mm), s.lengthMicrons(key::wall_line_width_x) / 2);
+    p.layers[0] = {s.velocityMmPerS(key::bridge_skin_speed), s.ratio(key::bridge_skin_material_flow),
+                   s.ratio(key::bridge_skin_density), s.ratio(key::bridge_fan_speed)};
+    p.layers[1] = {s.velocityMmPerS(key::bridge_skin_speed_2), s.ratio(key::bridge_skin_material_flow_2),
+                   s.ratio(key::bridge_skin_density_2), s.ratio(key::bridge_fan_speed_2)};
+    p.layers[2] = {s.velocityMmPerS(key::bridge_skin_speed_3), s.ratio(key::bridge_skin_material_flow_3),
+                   s.ratio(key::bridge_skin_density_3), s.ratio(key::bridge_fan_speed_3)};
     return p;
 }
 

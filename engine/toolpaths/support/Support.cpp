@@ -23,16 +23,16 @@ int layersFor(coord_um distance_um, coord_um layer_height_um, bool round_up) {
                                      : (distance_um + layer_height_um / 2) / layer_height_um);
 }
 
-int extruderOf(const Settings& s, std::string_view key) {
-    const int nr = s.has(key) ? s.extruderIndex(key) : 0;
+int extruderOf(const Settings& s, Key<SettingUnit::Extruder> key) {
+    const int nr = s.extruderIndex(key);
     return nr < 0 ? 0 : nr;
 }
 
 /// The maximum diameter of what towers support, 0 when `s` turns towers off.
 coord_um towerMaxDiameter(const Settings& s) {
-    if (!s.has("support_use_towers") || !s.boolean("support_use_towers"))
+    if (!s.boolean(key::support_use_towers))
         return 0;
-    return std::max<coord_um>(0, s.lengthMicrons("support_tower_maximum_supported_diameter"));
+    return std::max<coord_um>(0, s.lengthMicrons(key::support_tower_maximum_supported_diameter));
 }
 
 SupportTowerParams towerParams(const Settings& s, coord_um layer_height) {
@@ -40,8 +40,8 @@ SupportTowerParams towerParams(const Settings& s, coord_um layer_height) {
     t.max_supported_diameter_um = towerMaxDiameter(s);
     if (t.max_supported_diameter_um == 0)
         return t;
-    t.diameter_um = s.lengthMicrons("support_tower_diameter");
-    const double slope = std::tan(radiansFromDegrees(s.angleDegrees("support_tower_roof_angle")));
+    t.diameter_um = s.lengthMicrons(key::support_tower_diameter);
+    const double slope = std::tan(radiansFromDegrees(s.angleDegrees(key::support_tower_roof_angle)));
     // A flat roof (0°) is the whole diameter at once.
     t.roof_step_um = slope > 1e-6 ? static_cast<coord_um>(double(layer_height) / slope) : t.diameter_um;
     return t;
@@ -50,111 +50,121 @@ SupportTowerParams towerParams(const Settings& s, coord_um layer_height) {
 /// The joined support's smoothing shortcut (toolpaths/support/SupportSmoothing.h): as CuraEngine, the widest
 /// of the support line and, when on, the roof and floor lines.
 coord_um smoothingDistance(const Settings& s) {
-    auto width = [&](std::string_view key) { return s.has(key) ? s.lengthMicrons(key) : coord_um{0}; };
-    coord_um widest = width("support_line_width");
-    if (s.flag("support_roof_enable"))
-        widest = std::max(widest, width("support_roof_line_width"));
-    if (s.flag("support_bottom_enable"))
-        widest = std::max(widest, width("support_bottom_line_width"));
+    coord_um widest = s.lengthMicrons(key::support_line_width);
+    if (s.boolean(key::support_roof_enable))
+        widest = std::max(widest, s.lengthMicrons(key::support_roof_line_width));
+    if (s.boolean(key::support_bottom_enable))
+        widest = std::max(widest, s.lengthMicrons(key::support_bottom_line_width));
     return widest;
 }
 
 SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     SupportAreaParams p;
-    p.top_gap_layers = layersFor(s.lengthMicrons("support_top_distance"), layer_height, true);
-    p.bottom_gap_layers = layersFor(s.lengthMicrons("support_bottom_distance"), layer_height, true);
-    p.xy_distance_um = s.lengthMicrons("support_xy_distance");
-    p.xy_distance_overhang_um = s.has("support_xy_distance_overhang")
-                                    ? s.lengthMicrons("support_xy_distance_overhang")
-                                    : p.xy_distance_um;
-    p.z_overrides_xy =
-        !s.has("support_xy_overrides_z") || s.text("support_xy_overrides_z") == "z_overrides_xy";
-    p.buildplate_only = s.has("support_type") && s.text("support_type") == "buildplate";
-    p.join_distance_um = s.has("support_join_distance") ? s.lengthMicrons("support_join_distance") : 0;
-    p.offset_um = s.has("support_offset") ? s.lengthMicrons("support_offset") : 0;
-    p.min_area_um2 = s.has("minimum_support_area") ? s.real("minimum_support_area") * 1e6 : 0.0;
-    if (s.flag("support_conical_enabled")) {
-        const double angle = s.angleDegrees("support_conical_angle");
+    p.top_gap_layers = layersFor(s.lengthMicrons(key::support_top_distance), layer_height, true);
+    p.bottom_gap_layers = layersFor(s.lengthMicrons(key::support_bottom_distance), layer_height, true);
+    p.xy_distance_um = s.lengthMicrons(key::support_xy_distance);
+    p.xy_distance_overhang_um = s.lengthMicrons(key::support_xy_distance_overhang);
+    p.z_overrides_xy = s.text(key::support_xy_overrides_z) == "z_overrides_xy";
+    p.buildplate_only = s.text(key::support_type) == "buildplate";
+    p.join_distance_um = s.lengthMicrons(key::support_join_distance);
+    p.offset_um = s.lengthMicrons(key::support_offset);
+    p.min_area_um2 = s.real(key::minimum_support_area) * 1e6;
+    if (s.boolean(key::support_conical_enabled)) {
+        const double angle = s.angleDegrees(key::support_conical_angle);
         const double slope = std::tan(radiansFromDegrees(std::abs(angle))) - 0.01;
         const coord_um step =
             static_cast<coord_um>(slope * double(layer_height));  // truncated, as CuraEngine
         p.conical_step_um = angle > 0 ? -step : angle < 0 ? step : 0;
-        p.conical_min_width_um = s.lengthMicrons("support_conical_min_width");
+        p.conical_min_width_um = s.lengthMicrons(key::support_conical_min_width);
     }
     p.towers = towerParams(s, layer_height);
     p.smoothing_um = smoothingDistance(s);
-    if (s.flag("support_roof_enable"))
-        p.roof_layers = std::max(1, layersFor(s.lengthMicrons("support_roof_height"), layer_height, false));
-    if (s.flag("support_bottom_enable"))
+    if (s.boolean(key::support_roof_enable))
+        p.roof_layers =
+            std::max(1, layersFor(s.lengthMicrons(key::support_roof_height), layer_height, false));
+    if (s.boolean(key::support_bottom_enable))
         p.floor_layers =
-            std::max(1, layersFor(s.lengthMicrons("support_bottom_height"), layer_height, false));
+            std::max(1, layersFor(s.lengthMicrons(key::support_bottom_height), layer_height, false));
     return p;
 }
 
 /// angles[layer mod n] (layer may be negative: raft filler layers), or `fallback` for no angles.
-double angleFor(const Settings& s, std::string_view key, int layer, double fallback) {
-    const std::vector<double> angles = s.has(key) ? s.realList(key) : std::vector<double>{};
+double angleFor(const Settings& s, Key<SettingUnit::RealList> key, int layer, double fallback) {
+    const std::vector<double> angles = s.realList(key);
     if (angles.empty())
         return fallback;
     const int n = static_cast<int>(angles.size());
     return angles[static_cast<std::size_t>(((layer % n) + n) % n)];
 }
 
-SupportFill fillFrom(const Settings& s, std::string_view prefix, int layer) {
-    const std::string p(prefix);  // "support_roof" or "support_bottom"
+/// The keys of the support's roof or floor.
+struct InterfaceKeys {
+    Key<SettingUnit::Text> pattern;
+    Key<SettingUnit::Millimetres> line_distance;
+    Key<SettingUnit::RealList> angles;
+    FeatureKeys style;
+};
+
+constexpr InterfaceKeys kRoofKeys{key::support_roof_pattern,
+                                  key::support_roof_line_distance,
+                                  key::support_roof_angles,
+                                  {key::support_roof_line_width, key::speed_support_roof,
+                                   key::support_roof_material_flow, key::support_roof_extruder_nr}};
+constexpr InterfaceKeys kFloorKeys{key::support_bottom_pattern,
+                                   key::support_bottom_line_distance,
+                                   key::support_bottom_angles,
+                                   {key::support_bottom_line_width, key::speed_support_bottom,
+                                    key::support_bottom_material_flow, key::support_bottom_extruder_nr}};
+
+SupportFill fillFrom(const Settings& s, const InterfaceKeys& keys, int layer) {
     SupportFill fill;
-    fill.pattern = infillPatternOf(s.text(p + "_pattern"), p + "_pattern");
-    fill.line_distance_um = s.lengthMicrons(p + "_line_distance");
-    fill.angle_degrees = angleFor(s, p + "_angles", layer, 90);
-    const std::string speed = p == "support_roof" ? "speed_support_roof" : "speed_support_bottom";
-    fill.style = featureStyle(s, {p + "_line_width", speed, p + "_material_flow", p + "_extruder_nr"}, layer);
+    fill.pattern = infillPatternOf(s.text(keys.pattern), std::string(keys.pattern.name));
+    fill.line_distance_um = s.lengthMicrons(keys.line_distance);
+    fill.angle_degrees = angleFor(s, keys.angles, layer, 90);
+    fill.style = featureStyle(s, keys.style, layer);
     return fill;
 }
 
 /// The fills of `layer`; −1 stands for the raft's filler layers.
 SupportLayerFills layerFills(const SupportInput& in, int layer) {
     const Settings& g = *in.global;
-    const std::string_view body_key = layer <= 0 && g.has("support_extruder_nr_layer_0")
-                                          ? "support_extruder_nr_layer_0"
-                                          : "support_infill_extruder_nr";
+    const Key<SettingUnit::Extruder> body_key =
+        layer <= 0 ? key::support_extruder_nr_layer_0 : key::support_infill_extruder_nr;
     const int body_nr = extruderOf(g, body_key);
     const Settings& body = trainSettings(g, in.extruders, body_nr);
     SupportLayerFills fills;
-    fills.body.pattern = infillPatternOf(body.text("support_pattern"), "support_pattern");
-    fills.body.line_distance_um = body.lengthMicrons(
-        layer == 0 && body.has("support_initial_layer_line_distance") ? "support_initial_layer_line_distance"
-                                                                      : "support_line_distance");
-    fills.body.angle_degrees = angleFor(body, "support_infill_angles", layer, 0);
-    fills.body.connect_zigzags = body.flag("support_connect_zigzags");
-    if (body.flag("support_skip_some_zags") && body.has("support_zag_skip_count"))
+    fills.body.pattern = infillPatternOf(body.text(key::support_pattern), "support_pattern");
+    fills.body.line_distance_um = body.lengthMicrons(layer == 0 ? key::support_initial_layer_line_distance
+                                                                : key::support_line_distance);
+    fills.body.angle_degrees = angleFor(body, key::support_infill_angles, layer, 0);
+    fills.body.connect_zigzags = body.boolean(key::support_connect_zigzags);
+    if (body.boolean(key::support_skip_some_zags))
         fills.body.zag_skip_count =
-            static_cast<int>(std::max<long long>(0, body.integer("support_zag_skip_count")));
-    fills.body.wall_count =
-        body.has("support_wall_count") ? static_cast<int>(body.integer("support_wall_count")) : 0;
+            static_cast<int>(std::max<long long>(0, body.integer(key::support_zag_skip_count)));
+    fills.body.wall_count = static_cast<int>(body.integer(key::support_wall_count));
     if (layer <= 0) {  // as CuraEngine: the first layer of support is a grid with one more wall
         if (fills.body.pattern == InfillPattern::Lines || fills.body.pattern == InfillPattern::ZigZag)
             fills.body.pattern = InfillPattern::Grid;
         fills.body.wall_count += 1;
     }
     // as CuraEngine: the body's infill overlaps its walls by infill_overlap_mm (none without walls)
-    if (fills.body.wall_count > 0 && body.has("infill_overlap_mm"))
-        fills.body.overlap_um = body.lengthMicrons("infill_overlap_mm");
+    if (fills.body.wall_count > 0)
+        fills.body.overlap_um = body.lengthMicrons(key::infill_overlap_mm);
     fills.body.style = featureStyle(
-        body, {"support_line_width", "speed_support_infill", "support_material_flow", body_key}, layer);
+        body, {key::support_line_width, key::speed_support_infill, key::support_material_flow, body_key},
+        layer);
     fills.body.style.extruder = body_nr;
     if (in.raft)  // as CuraEngine: no initial_layer_line_width_factor for support under a raft
-        fills.body.style.width_um = body.lengthMicrons("support_line_width");
-    const Settings& roof = trainSettings(g, in.extruders, extruderOf(g, "support_roof_extruder_nr"));
-    const Settings& floor = trainSettings(g, in.extruders, extruderOf(g, "support_bottom_extruder_nr"));
-    if (roof.has("support_roof_pattern"))
-        fills.roof = fillFrom(roof, "support_roof", layer);
-    if (floor.has("support_bottom_pattern"))
-        fills.floor = fillFrom(floor, "support_bottom", layer);
+        fills.body.style.width_um = body.lengthMicrons(key::support_line_width);
+    const Settings& roof = trainSettings(g, in.extruders, extruderOf(g, key::support_roof_extruder_nr));
+    const Settings& floor = trainSettings(g, in.extruders, extruderOf(g, key::support_bottom_extruder_nr));
+    fills.roof = fillFrom(roof, kRoofKeys, layer);
+    fills.floor = fillFrom(floor, kFloorKeys, layer);
     return fills;
 }
 
 bool supportsOverhangs(const SupportMesh& mesh) {
-    return mesh.role.printsAlone() && mesh.settings->boolean("support_enable");
+    return mesh.role.printsAlone() && mesh.settings->boolean(key::support_enable);
 }
 
 /// Per layer the union of the outlines of the meshes `which` picks (empty vector: none picked).
@@ -184,13 +194,13 @@ SupportMeshAreas supportMeshAreas(const SupportInput& in, int threads) {
     areas.drop_down = outlinesOf(
         in,
         [](const SupportMesh& m) {
-            return m.role.support_mesh && m.settings->boolean("support_mesh_drop_down");
+            return m.role.support_mesh && m.settings->boolean(key::support_mesh_drop_down);
         },
         threads);
     areas.in_place = outlinesOf(
         in,
         [](const SupportMesh& m) {
-            return m.role.support_mesh && !m.settings->boolean("support_mesh_drop_down");
+            return m.role.support_mesh && !m.settings->boolean(key::support_mesh_drop_down);
         },
         threads);
     return areas;
@@ -203,16 +213,13 @@ SupportMeshAreas supportMeshAreas(const SupportInput& in, int threads) {
 std::optional<InfillLayerParams> arrangement(const Settings& body, coord_um layer_height) {
     const coord_um h = std::max<coord_um>(layer_height, 1);
     InfillLayerParams p;
-    if (body.has("gradual_support_infill_steps"))
-        p.gradual_steps =
-            static_cast<int>(std::max<long long>(0, body.integer("gradual_support_infill_steps")));
-    if (body.has("gradual_support_infill_step_height"))
-        p.gradual_step_layers = static_cast<int>(
-            std::max<coord_um>(1, (body.lengthMicrons("gradual_support_infill_step_height") + h / 2) / h));
+    p.gradual_steps =
+        static_cast<int>(std::max<long long>(0, body.integer(key::gradual_support_infill_steps)));
+    p.gradual_step_layers = static_cast<int>(
+        std::max<coord_um>(1, (body.lengthMicrons(key::gradual_support_infill_step_height) + h / 2) / h));
     p.small_gaps_heuristic = true;
-    if (body.has("support_infill_sparse_thickness"))
-        p.combine_layers = static_cast<int>(
-            std::max<coord_um>(1, (body.lengthMicrons("support_infill_sparse_thickness") + h / 2) / h));
+    p.combine_layers = static_cast<int>(
+        std::max<coord_um>(1, (body.lengthMicrons(key::support_infill_sparse_thickness) + h / 2) / h));
     if (p.gradual_steps <= 0 && p.combine_layers <= 1)
         return std::nullopt;
     return p;
@@ -231,7 +238,8 @@ std::vector<LayerInfill> arrangedBodies(const std::vector<SupportLayerAreas>& ar
 }
 
 bool isTree(const SupportMesh& mesh) {
-    return mesh.settings->has("support_structure") && mesh.settings->text("support_structure") == "tree";
+    return mesh.settings->has(key::support_structure) &&
+           mesh.settings->text(key::support_structure) == "tree";
 }
 
 /// The mesh's overhang points (toolpaths/support/SupportTowers.h) added to `points`, with its towers on;
@@ -243,8 +251,8 @@ void addOverhangPoints(const SupportMesh& mesh, const std::vector<Paths>& blocke
     const coord_um max_diameter = towerMaxDiameter(s);
     if (max_diameter == 0)
         return;
-    const bool walls = s.has("wall_line_count") && s.integer("wall_line_count") > 0;
-    const coord_um inset = s.lengthMicrons(walls ? "wall_line_width_0" : "support_line_width") / 2;
+    const bool walls = s.integer(key::wall_line_count) > 0;
+    const coord_um inset = s.lengthMicrons(walls ? key::wall_line_width_0 : key::support_line_width) / 2;
     const std::vector<std::vector<Paths>> own =
         detectOverhangPoints(*mesh.layers, max_diameter, inset, blockers.empty() ? nullptr : &blockers);
     for (std::size_t i = 0; i < own.size() && i < points.size(); ++i)
@@ -263,8 +271,8 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
         if (!supportsOverhangs(mesh) || isTree(mesh))
             continue;
         const Overhangs own =
-            detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees("support_angle"), threads,
-                            blockers.empty() ? nullptr : &blockers);
+            detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees(key::support_angle),
+                            threads, blockers.empty() ? nullptr : &blockers);
         parallelFor(all.basic.size(), threads, [&](std::size_t i) {
             if (i >= own.basic.size())
                 return;
@@ -280,15 +288,14 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
 /// them.
 std::vector<ExtrusionPath> supportBrim(const Settings& s, int extruder, Paths& outline) {
     std::vector<ExtrusionPath> loops;
-    const int count =
-        s.has("support_brim_line_count") ? static_cast<int>(s.integer("support_brim_line_count")) : 0;
+    const int count = static_cast<int>(s.integer(key::support_brim_line_count));
     if (outline.empty() || count <= 0)
         return loops;
     FeatureStyle style = featureStyle(s,
-                                      {"skirt_brim_line_width", "skirt_brim_speed",
-                                       "skirt_brim_material_flow", "support_infill_extruder_nr"},
+                                      {key::skirt_brim_line_width, key::skirt_brim_speed,
+                                       key::skirt_brim_material_flow, key::support_infill_extruder_nr},
                                       0);
-    style.speed_mm_s = s.velocityMmPerS("skirt_brim_speed");
+    style.speed_mm_s = s.velocityMmPerS(key::skirt_brim_speed);
     style.extruder = extruder;
     const coord_um w = std::max<coord_um>(style.width_um, 1);
     const double smallest_hole_um2 = 100.0 * double(w) * double(w);
@@ -322,20 +329,20 @@ Paths brimBase(const Paths& layer0, bool outside_only) {
 }  // namespace
 
 Paths brimCoveredArea(const Settings& global, const std::vector<Settings>* extruders, const Paths& layer0) {
-    if (layer0.empty() || global.text("adhesion_type") != "brim")
+    if (layer0.empty() || global.text(key::adhesion_type) != "brim")
         return {};
-    const Settings& body = trainSettings(global, extruders, extruderOf(global, "support_infill_extruder_nr"));
-    if (!body.has("brim_replaces_support") || !body.boolean("brim_replaces_support"))
+    const Settings& body =
+        trainSettings(global, extruders, extruderOf(global, key::support_infill_extruder_nr));
+    if (!body.boolean(key::brim_replaces_support))
         return {};
-    const Settings& adhesion = trainSettings(global, extruders, extruderOf(global, "adhesion_extruder_nr"));
-    const long long lines = std::max<long long>(0, adhesion.integer("brim_line_count"));
+    const Settings& adhesion =
+        trainSettings(global, extruders, extruderOf(global, key::adhesion_extruder_nr));
+    const long long lines = std::max<long long>(0, adhesion.integer(key::brim_line_count));
     if (lines == 0)
         return {};
-    const double width =
-        double(adhesion.lengthMicrons("skirt_brim_line_width")) *
-        (adhesion.has("initial_layer_line_width_factor") ? adhesion.ratio("initial_layer_line_width_factor")
-                                                         : 1.0);
-    const bool outside_only = !adhesion.has("brim_outside_only") || adhesion.boolean("brim_outside_only");
+    const double width = double(adhesion.lengthMicrons(key::skirt_brim_line_width)) *
+                         (adhesion.ratio(key::initial_layer_line_width_factor));
+    const bool outside_only = adhesion.boolean(key::brim_outside_only);
     const Paths base = brimBase(layer0, outside_only);
     Paths covered = offsetPolygons(base, std::llround(width * double(lines + lines % 2)));
     if (outside_only)  // the support in the model's holes stays: no brim there
@@ -361,7 +368,7 @@ std::vector<SupportLayerAreas> treeAreas(const SupportInput& in, int threads) {
         if (!supportsOverhangs(mesh) || !isTree(mesh))
             continue;
         overhangs.push_back(detectOverhangs(*mesh.layers, *in.heights,
-                                            mesh.settings->angleDegrees("support_angle"), threads));
+                                            mesh.settings->angleDegrees(key::support_angle), threads));
         trees.push_back(&mesh);
     }
     if (trees.empty())
@@ -375,7 +382,7 @@ std::vector<SupportLayerAreas> treeAreas(const SupportInput& in, int threads) {
 /// Normal support's areas united with tree support's, layer by layer.
 std::vector<SupportLayerAreas> supportAreas(const SupportInput& in, coord_um layer_height, int threads) {
     const Settings& g = *in.global;
-    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
+    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, key::support_infill_extruder_nr));
     const bool normal = std::any_of(in.meshes.begin(), in.meshes.end(), [](const SupportMesh& m) {
         return (supportsOverhangs(m) && !isTree(m)) || m.role.support_mesh;
     });
@@ -411,8 +418,8 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
     if (!wanted)
         return result;
     const Settings& g = *in.global;
-    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, "support_infill_extruder_nr"));
-    std::vector<SupportLayerAreas> areas = supportAreas(in, g.lengthMicrons("layer_height"), threads);
+    const Settings& body = trainSettings(g, in.extruders, extruderOf(g, key::support_infill_extruder_nr));
+    std::vector<SupportLayerAreas> areas = supportAreas(in, g.lengthMicrons(key::layer_height), threads);
     if (areas.empty())
         return result;
     if (!in.first_layer_exclusion.empty()) {  // brim_replaces_support
@@ -420,10 +427,10 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         areas[0].roof = differenceOf(areas[0].roof, in.first_layer_exclusion);
     }
     result.first_layer_area = unionOf(unionOf(areas[0].support, areas[0].roof), areas[0].floor);
-    if (!in.raft && body.flag("support_brim_enable"))
-        result.brim = supportBrim(body, extruderOf(g, "support_infill_extruder_nr"), areas[0].support);
+    if (!in.raft && body.boolean(key::support_brim_enable))
+        result.brim = supportBrim(body, extruderOf(g, key::support_infill_extruder_nr), areas[0].support);
     const std::vector<LayerInfill> arranged =
-        arrangedBodies(areas, body, g.lengthMicrons("layer_height"), threads);
+        arrangedBodies(areas, body, g.lengthMicrons(key::layer_height), threads);
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())

@@ -21,54 +21,51 @@ coord_um ceilDiv(coord_um a, coord_um b) {
 }
 
 coord_um maxMoveUm(const Settings& g, coord_um layer_height) {
-    const double angle = g.angleDegrees("support_tree_angle");
+    const double angle = g.angleDegrees(key::support_tree_angle);
     if (angle >= 90)
         return std::numeric_limits<int>::max();
     return std::llround(std::tan(radiansFromDegrees(angle)) * double(layer_height));
 }
 
 int zLayers(const Settings& s, coord_um layer_height) {
-    return static_cast<int>(ceilDiv(s.lengthMicrons("support_top_distance"), layer_height)) + 1;
+    return static_cast<int>(ceilDiv(s.lengthMicrons(key::support_top_distance), layer_height)) + 1;
 }
 
 TreeVolumeParams volumeParams(const Settings& g, coord_um layer_height) {
     TreeVolumeParams p;
-    p.xy_distance_um = g.lengthMicrons("support_xy_distance");
-    p.xy_distance_overhang_um = g.has("support_xy_distance_overhang")
-                                    ? g.lengthMicrons("support_xy_distance_overhang")
-                                    : p.xy_distance_um;
-    p.z_overrides_xy =
-        g.has("support_xy_overrides_z") && g.text("support_xy_overrides_z") == "z_overrides_xy";
+    p.xy_distance_um = g.lengthMicrons(key::support_xy_distance);
+    p.xy_distance_overhang_um = g.lengthMicrons(key::support_xy_distance_overhang);
+    p.z_overrides_xy = g.text(key::support_xy_overrides_z) == "z_overrides_xy";
     p.z_layers = zLayers(g, layer_height);
     p.max_move_um = maxMoveUm(g, layer_height);
-    p.resolution_um = std::max<coord_um>(1, g.lengthMicrons("support_tree_collision_resolution"));
+    p.resolution_um = std::max<coord_um>(1, g.lengthMicrons(key::support_tree_collision_resolution));
     return p;
 }
 
 TreeContactParams contactParams(const Settings& s, coord_um layer_height) {
     TreeContactParams p;
-    p.branch_distance_um = std::max<coord_um>(1, s.lengthMicrons("support_tree_branch_distance"));
+    p.branch_distance_um = std::max<coord_um>(1, s.lengthMicrons(key::support_tree_branch_distance));
     p.z_layers = zLayers(s, layer_height);
-    if (s.flag("support_roof_enable"))
+    if (s.boolean(key::support_roof_enable))
         p.roof_layers =
-            static_cast<int>((s.lengthMicrons("support_roof_height") + layer_height / 2) / layer_height);
-    p.half_overhang_step_um = std::llround(std::tan(radiansFromDegrees(s.angleDegrees("support_angle"))) *
+            static_cast<int>((s.lengthMicrons(key::support_roof_height) + layer_height / 2) / layer_height);
+    p.half_overhang_step_um = std::llround(std::tan(radiansFromDegrees(s.angleDegrees(key::support_angle))) *
                                            double(layer_height) / 2);
     return p;
 }
 
 double growthPerLayer(const Settings& g, coord_um layer_height, coord_um branch_radius) {
-    const double angle = radiansFromDegrees(g.angleDegrees("support_tree_branch_diameter_angle"));
+    const double angle = radiansFromDegrees(g.angleDegrees(key::support_tree_branch_diameter_angle));
     return std::sin(angle) * double(layer_height) / double(std::max<coord_um>(1, branch_radius));
 }
 
 TreeDropParams dropParams(const Settings& g, coord_um layer_height) {
     TreeDropParams p;
     p.max_move_um = maxMoveUm(g, layer_height);
-    p.branch_radius_um = g.lengthMicrons("support_tree_branch_diameter") / 2;
+    p.branch_radius_um = g.lengthMicrons(key::support_tree_branch_diameter) / 2;
     p.radius_growth_per_layer = growthPerLayer(g, layer_height, p.branch_radius_um);
-    p.resolution_um = std::max<coord_um>(1, g.lengthMicrons("support_tree_collision_resolution"));
-    p.rests_on_model = !g.has("support_type") || g.text("support_type") == "everywhere";
+    p.resolution_um = std::max<coord_um>(1, g.lengthMicrons(key::support_tree_collision_resolution));
+    p.rests_on_model = g.text(key::support_type) == "everywhere";
     return p;
 }
 
@@ -82,8 +79,8 @@ struct CircleStyle {
 
 CircleStyle circleStyle(const Settings& g, coord_um layer_height) {
     CircleStyle c;
-    c.radius_um = g.lengthMicrons("support_tree_branch_diameter") / 2;
-    c.tip_radius_um = g.lengthMicrons("support_line_width") / 2 * 3 / 2;
+    c.radius_um = g.lengthMicrons(key::support_tree_branch_diameter) / 2;
+    c.tip_radius_um = g.lengthMicrons(key::support_line_width) / 2 * 3 / 2;
     c.tip_layers = static_cast<int>(std::max<coord_um>(0, c.radius_um - c.tip_radius_um) / layer_height);
     c.growth_per_layer = growthPerLayer(g, layer_height, c.radius_um);
     return c;
@@ -113,11 +110,11 @@ Path nodeCircle(const TreeNode& node, const CircleStyle& c) {
 /// Floor: the body where it stands on the model (see the header).
 Paths floorOf(const Paths& body, const std::vector<Paths>& model, int layer, const Settings& g,
               coord_um height) {
-    const int gap =
-        static_cast<int>(std::max<coord_um>(1, ceilDiv(g.lengthMicrons("support_bottom_distance"), height)));
+    const int gap = static_cast<int>(
+        std::max<coord_um>(1, ceilDiv(g.lengthMicrons(key::support_bottom_distance), height)));
     const int skip = static_cast<int>(
-        std::max<coord_um>(1, ceilDiv(g.lengthMicrons("support_interface_skip_height"), height)));
-    const int floor_layers = static_cast<int>(ceilDiv(g.lengthMicrons("support_bottom_height"), height));
+        std::max<coord_um>(1, ceilDiv(g.lengthMicrons(key::support_interface_skip_height), height)));
+    const int floor_layers = static_cast<int>(ceilDiv(g.lengthMicrons(key::support_bottom_height), height));
     Paths floor;
     auto sample = [&](int below) {
         const std::size_t at = static_cast<std::size_t>(std::max(0, layer - below - gap));
@@ -146,7 +143,7 @@ SupportLayerAreas drawLayer(const std::vector<TreeNode>& nodes, const CircleStyl
 
 std::vector<SupportLayerAreas> treeSupportAreas(const Settings& g, const std::vector<TreeMesh>& meshes,
                                                 const std::vector<Paths>& model, int threads) {
-    const coord_um height = std::max<coord_um>(1, g.lengthMicrons("layer_height"));
+    const coord_um height = std::max<coord_um>(1, g.lengthMicrons(key::layer_height));
     std::vector<SupportLayerAreas> out(model.size());
     if (model.empty())
         return out;
@@ -156,7 +153,7 @@ std::vector<SupportLayerAreas> treeSupportAreas(const Settings& g, const std::ve
         addContactPoints(*mesh.overhang, mesh.bounds, contactParams(*mesh.settings, height), volumes, nodes);
     dropNodes(dropParams(g, height), height, volumes, nodes);
     const CircleStyle style = circleStyle(g, height);
-    const bool floors = g.flag("support_bottom_enable");
+    const bool floors = g.boolean(key::support_bottom_enable);
     parallelFor(model.size(), threads, [&](std::size_t i) {
         out[i] = drawLayer(nodes[i], style);
         if (floors && !out[i].support.empty()) {

@@ -34,14 +34,14 @@ Paths withSmallHolesKept(const Paths& layer, Paths above, double max_hole_area_m
 }  // namespace
 
 bool conicalOverhangWanted(const Settings& s) {
-    return s.flag("conical_overhang_enabled");
+    return s.boolean(key::conical_overhang_enabled);
 }
 
 ConicalOverhangParams conicalOverhangParams(const Settings& s) {
     ConicalOverhangParams p;
-    p.angle_degrees = s.real("conical_overhang_angle");
-    p.max_hole_area_mm2 = s.has("conical_overhang_hole_size") ? s.real("conical_overhang_hole_size") : 0.0;
-    p.layer_height_um = s.lengthMicrons("layer_height");
+    p.angle_degrees = s.angleDegrees(key::conical_overhang_angle);
+    p.max_hole_area_mm2 = s.real(key::conical_overhang_hole_size);
+    p.layer_height_um = s.lengthMicrons(key::layer_height);
     return p;
 }
 

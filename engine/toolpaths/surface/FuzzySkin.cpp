@@ -29,14 +29,14 @@ bool isHole(const Path& loop) {
 
 FuzzySkinParams fuzzySkinParams(const Settings& s, int layer) {
     FuzzySkinParams p;
-    p.enabled = s.flag("magic_fuzzy_skin_enabled");
-    if (p.enabled && layer == 0 && s.has("adhesion_type") && s.text("adhesion_type") == "brim")
+    p.enabled = s.boolean(key::magic_fuzzy_skin_enabled);
+    if (p.enabled && layer == 0 && s.text(key::adhesion_type) == "brim")
         p.enabled = false;
     if (!p.enabled)
         return p;
-    p.outside_only = s.flag("magic_fuzzy_skin_outside_only");
-    p.thickness_um = s.lengthMicrons("magic_fuzzy_skin_thickness");
-    p.point_dist_um = s.lengthMicrons("magic_fuzzy_skin_point_dist");
+    p.outside_only = s.boolean(key::magic_fuzzy_skin_outside_only);
+    p.thickness_um = s.lengthMicrons(key::magic_fuzzy_skin_thickness);
+    p.point_dist_um = s.lengthMicrons(key::magic_fuzzy_skin_point_dist);
     return p;
 }
 

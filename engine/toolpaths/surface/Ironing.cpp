@@ -13,34 +13,34 @@ namespace mixengine {
 namespace {
 
 /// angles[layer % n] of `key`, or the defaults when the list is empty.
-double angleFor(const Settings& s, std::string_view key, int layer, const std::vector<double>& defaults) {
-    std::vector<double> angles = s.has(key) ? s.realList(key) : std::vector<double>{};
+double angleFor(const Settings& s, Key<SettingUnit::RealList> key, int layer,
+                const std::vector<double>& defaults) {
+    std::vector<double> angles = s.realList(key);
     if (angles.empty())
         angles = defaults;
     const int n = static_cast<int>(angles.size());
     return angles[static_cast<std::size_t>(((layer % n) + n) % n)];
 }
 
-long long countOf(const Settings& s, std::string_view key) {
-    return s.has(key) ? s.integer(key) : 0;
+long long countOf(const Settings& s, Key<SettingUnit::Integer> key) {
+    return s.integer(key);
 }
 
 /// The top skin's angle on `layer` + 90°.
 double ironingAngle(const Settings& s, int layer) {
-    const double skin = angleFor(s, "skin_angles", layer, {45, 135});
-    const bool roofing = std::min(countOf(s, "roofing_layer_count"), countOf(s, "top_layers")) > 0;
-    return (roofing ? angleFor(s, "roofing_angles", layer, {skin}) : skin) + 90.0;
+    const double skin = angleFor(s, key::skin_angles, layer, {45, 135});
+    const bool roofing = std::min(countOf(s, key::roofing_layer_count), countOf(s, key::top_layers)) > 0;
+    return (roofing ? angleFor(s, key::roofing_angles, layer, {skin}) : skin) + 90.0;
 }
 
 /// The pattern's compensation of ironing_inset (see the header).
 coord_um compensatedInset(const Settings& s, InfillPattern pattern, coord_um width_um) {
-    const double inset = double(s.lengthMicrons("ironing_inset"));
+    const double inset = double(s.lengthMicrons(key::ironing_inset));
     const double w = double(width_um);
-    const double flow = s.ratio("ironing_flow");
+    const double flow = s.ratio(key::ironing_flow);
     if (pattern == InfillPattern::ZigZag) {
-        const coord_um sparse =
-            s.has("infill_sparse_thickness") ? s.lengthMicrons("infill_sparse_thickness") : 0;
-        const double scale = sparse > 0 ? double(s.lengthMicrons("layer_height")) / double(sparse) : 1.0;
+        const coord_um sparse = s.lengthMicrons(key::infill_sparse_thickness);
+        const double scale = sparse > 0 ? double(s.lengthMicrons(key::layer_height)) / double(sparse) : 1.0;
         return static_cast<coord_um>(std::llround(inset - scale * w / 2 + flow * w / 2 + w / 2));
     }
     if (pattern == InfillPattern::Concentric)
@@ -101,17 +101,17 @@ Paths topSurface(const Paths& outline, const Paths& outline_above) {
 
 IroningParams ironingParams(const Settings& s, int layer) {
     IroningParams p;
-    const std::string pattern = s.text("ironing_pattern");
+    const std::string pattern = s.text(key::ironing_pattern);
     p.pattern = pattern == "concentric" ? InfillPattern::Concentric
                 : pattern == "lines"    ? InfillPattern::Lines
                                         : InfillPattern::ZigZag;
-    p.line_spacing_um = s.lengthMicrons("ironing_line_spacing");
+    p.line_spacing_um = s.lengthMicrons(key::ironing_line_spacing);
     p.angle_degrees = ironingAngle(s, layer);
-    p.monotonic = s.flag("ironing_monotonic");
-    p.style.width_um = s.lengthMicrons("skin_line_width");
-    p.style.speed_mm_s = layerSpeed(s, "speed_ironing", layer);
-    p.style.flow = s.ratio("ironing_flow");
-    const int nr = s.has("top_bottom_extruder_nr") ? s.extruderIndex("top_bottom_extruder_nr") : -1;
+    p.monotonic = s.boolean(key::ironing_monotonic);
+    p.style.width_um = s.lengthMicrons(key::skin_line_width);
+    p.style.speed_mm_s = layerSpeed(s, key::speed_ironing, layer);
+    p.style.flow = s.ratio(key::ironing_flow);
+    const int nr = s.extruderIndex(key::top_bottom_extruder_nr);
     p.style.extruder = nr >= 0 ? nr : ownExtruder(s);
     p.inset_um = compensatedInset(s, p.pattern, p.style.width_um);
     return p;

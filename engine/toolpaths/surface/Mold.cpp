@@ -11,7 +11,7 @@ namespace mixengine {
 namespace {
 
 bool moldOn(const MoldMesh& m) {
-    return m.settings->flag("mold_enabled");
+    return m.settings->boolean(key::mold_enabled);
 }
 
 /// Open pieces as areas `width_um` wide (square ends), as CuraEngine thickens them for the mold.
@@ -24,9 +24,9 @@ Paths thickened(const Paths& lines, coord_um width_um) {
 /// The model's outline on `layer` of mold mesh `m` (its open pieces are used up).
 Paths modelOutline(const MoldMesh& m, std::size_t layer) {
     SlicedLayer& sliced = (*m.layers)[layer];
-    double width = double(m.settings->lengthMicrons("wall_line_width_0"));
-    if (layer == 0 && m.settings->has("initial_layer_line_width_factor"))
-        width *= m.settings->ratio("initial_layer_line_width_factor");
+    double width = double(m.settings->lengthMicrons(key::wall_line_width_0));
+    if (layer == 0 && m.settings->has(key::initial_layer_line_width_factor))
+        width *= m.settings->ratio(key::initial_layer_line_width_factor);
     Paths model = unionOf(sliced.outlines, thickened(sliced.open_polylines, static_cast<coord_um>(width)));
     sliced.open_polylines.clear();
     return model;
@@ -36,16 +36,17 @@ Paths modelOutline(const MoldMesh& m, std::size_t layer) {
 Paths moldOutline(const MoldMesh& m, std::size_t layer, const Paths& model, const Paths& above,
                   coord_um layer_height_um) {
     const Settings& s = *m.settings;
-    const coord_um width = s.lengthMicrons("mold_width");
-    const double angle = s.real("mold_angle");
+    const coord_um width = s.lengthMicrons(key::mold_width);
+    const double angle = s.angleDegrees(key::mold_angle);
     const auto inset =
         static_cast<coord_um>(std::tan(angle * std::numbers::pi / 180.0) * double(layer_height_um));
     Paths mold = offsetPolygons(model, width);
     if (angle < 90)
         mold = unionOf(offsetMiter(above, -inset), mold);
     const std::size_t roof_layers =
-        layer_height_um > 0 ? static_cast<std::size_t>(s.lengthMicrons("mold_roof_height") / layer_height_um)
-                            : 0;
+        layer_height_um > 0
+            ? static_cast<std::size_t>(s.lengthMicrons(key::mold_roof_height) / layer_height_um)
+            : 0;
     if (roof_layers > 0 && layer > 0) {
         const std::size_t below = layer > roof_layers ? layer - roof_layers : 0;
         mold = unionOf(mold, offsetPolygons((*m.layers)[below].outlines, width));

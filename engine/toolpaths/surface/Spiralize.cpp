@@ -198,7 +198,7 @@ std::vector<ExtrusionPath> spiralSlice(const Path& wall, std::size_t seam, const
 }
 
 bool spiralizeOn(const Settings& s) {
-    return s.flag("magic_spiralize");
+    return s.boolean(key::magic_spiralize);
 }
 
 SpiralParts splitSpiralPart(const Paths& outlines) {
@@ -231,8 +231,8 @@ Paths spiralWallLoops(const Paths& part, const WallParams& outer) {
 
 namespace {
 
-int layerCount(const Settings& s, std::string_view key, long long fallback) {
-    return static_cast<int>(std::clamp<long long>(s.has(key) ? s.integer(key) : fallback, 0, 1'000'000));
+int layerCount(const Settings& s, Key<SettingUnit::Integer> key) {
+    return static_cast<int>(std::clamp<long long>(s.integer(key), 0, 1'000'000));
 }
 
 /// The flat outer wall loops of initial_bottom_layers, the contour from the spiral's seam.
@@ -261,9 +261,9 @@ std::vector<std::vector<ExtrusionPath>> spiralPaths(const std::vector<Paths>& wa
     const SeamParams seam = seamParamsFrom(s, mesh_centre_um);
     const Point2 hint = seam.type == SeamType::Back ? seam.position_um : Point2{0, 0};
     const std::vector<std::size_t> seams =
-        spiralSeams(contours, hint, s.lengthMicrons("meshfix_maximum_resolution"));
-    const int bottom = layerCount(s, "bottom_layers", 0);
-    const int initial = layerCount(s, "initial_bottom_layers", bottom);
+        spiralSeams(contours, hint, s.lengthMicrons(key::meshfix_maximum_resolution));
+    const int bottom = layerCount(s, key::bottom_layers);
+    const int initial = layerCount(s, key::initial_bottom_layers);
     std::vector<std::vector<ExtrusionPath>> result(layers);
     for (std::size_t i = static_cast<std::size_t>(initial); i < layers; ++i) {
         if (contours[i].size() < 3)
@@ -271,9 +271,9 @@ std::vector<std::vector<ExtrusionPath>> spiralPaths(const std::vector<Paths>& wa
         SpiralSliceParams p;
         p.bottom = static_cast<int>(i) == bottom;
         p.top = i + 1 == layers || contours[i + 1].size() < 3;
-        p.smooth = s.flag("smooth_spiralized_contours");
+        p.smooth = s.boolean(key::smooth_spiralized_contours);
         p.style = meshStyles(s, static_cast<int>(i)).wall_0;
-        p.min_layer_time_s = s.has("cool_min_layer_time") ? s.real("cool_min_layer_time") : 0.0;
+        p.min_layer_time_s = s.durationSeconds(key::cool_min_layer_time);
         SpiralBelow below;
         if (i > 0 && contours[i - 1].size() >= 3)
             below = {&contours[i - 1], seams[i - 1]};

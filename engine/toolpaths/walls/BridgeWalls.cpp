@@ -32,13 +32,13 @@ Point2 along(const Point2& a, const Point2& b, double t, double length) {
 
 BridgeWallParams bridgeWallParams(const Settings& s) {
     BridgeWallParams p;
-    p.enabled = s.flag("bridge_settings_enabled");
+    p.enabled = s.boolean(key::bridge_settings_enabled);
     if (!p.enabled)
         return p;
-    p.outer_width_um = s.lengthMicrons("wall_line_width_0");
-    p.min_length_um = s.lengthMicrons("bridge_wall_min_length");
-    p.style = {s.velocityMmPerS("bridge_wall_speed"), s.ratio("bridge_wall_material_flow"),
-               s.ratio("bridge_fan_speed"), s.ratio("bridge_wall_coast")};
+    p.outer_width_um = s.lengthMicrons(key::wall_line_width_0);
+    p.min_length_um = s.lengthMicrons(key::bridge_wall_min_length);
+    p.style = {s.velocityMmPerS(key::bridge_wall_speed), s.ratio(key::bridge_wall_material_flow),
+               s.ratio(key::bridge_fan_speed), s.ratio(key::bridge_wall_coast)};
     return p;
 }
 

@@ -176,14 +176,14 @@ std::size_t nearestTo(const Path& loop, const Point2& target) {
 
 SeamParams seamParamsFrom(const Settings& s, const Point2& mesh_centre_um) {
     SeamParams p;
-    p.type = seamTypeOf(s.text("z_seam_type"));
-    p.corner = s.has("z_seam_corner") ? seamCornerOf(s.text("z_seam_corner")) : SeamCorner::Inner;
-    p.position_um = {s.lengthMicrons("z_seam_x"), s.lengthMicrons("z_seam_y")};
-    if (s.flag("z_seam_relative")) {
+    p.type = seamTypeOf(s.text(key::z_seam_type));
+    p.corner = seamCornerOf(s.text(key::z_seam_corner));
+    p.position_um = {s.lengthMicrons(key::z_seam_x), s.lengthMicrons(key::z_seam_y)};
+    if (s.boolean(key::z_seam_relative)) {
         p.position_um.X += mesh_centre_um.X;
         p.position_um.Y += mesh_centre_um.Y;
     }
-    p.corner_lookaround_um = s.lengthMicrons("wall_line_width_0");
+    p.corner_lookaround_um = s.lengthMicrons(key::wall_line_width_0);
     return p;
 }
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../SettingsTestSupport.h"
+
 namespace mixengine {
 namespace {
 
@@ -25,17 +27,17 @@ SettingValues globalValues() {
 }
 
 Settings global(const SettingValues& changes = {}) {
-    return Settings("global settings", globalValues()).with("global settings", changes);
+    return test::defaultsWith("global settings", globalValues()).with("global settings", changes);
 }
 
 Settings extruder0(const char* layer0 = "215", const char* print = "200") {
-    return Settings("extruder 0",
-                    {{"material_print_temperature_layer_0", layer0}, {"material_print_temperature", print}});
+    return test::defaultsWith("extruder 0", {{"material_print_temperature_layer_0", layer0},
+                                             {"material_print_temperature", print}});
 }
 
 /// The flavor row of the settings' machine_gcode_flavor (pipeline/OutputParams reads it so).
 const FlavorTraits& flavorIn(const Settings& g) {
-    return flavorOf(g.text("machine_gcode_flavor"));
+    return flavorOf(g.text(key::machine_gcode_flavor));
 }
 
 // Tokens were expanded before (by Cura, or settings/FrontendValues): startCode keeps them verbatim.

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../SettingsTestSupport.h"
+
 #include <cmath>
 
 #include "common/Error.h"
@@ -134,14 +136,14 @@ TEST(FeatheredPaint, ANegativeBlendIsAnInputErrorNamingTheKey) {
     for (const int r : face_region)
         mesh.face_colors.push_back(Mesh::kPaintedRgb | (r == 0 ? 0xffff00u : 0x0000ffu));
     const PigmentModel model({{255, 255, 0}, {0, 0, 255}});
-    const Settings scope("mesh", SettingValues{{"mixing_paint_blend", "-2"}});
+    const Settings scope = test::defaultsWith("mesh", SettingValues{{"mixing_paint_blend", "-2"}});
     try {
         paintOf(mesh, scope, {{255, 255, 0}, {0, 0, 255}}, model);
         FAIL() << "no error";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("'mixing_paint_blend'"), std::string::npos) << e.what();
     }
-    const Settings fine("mesh", SettingValues{{"mixing_paint_blend", "6"}});
+    const Settings fine = test::defaultsWith("mesh", SettingValues{{"mixing_paint_blend", "6"}});
     EXPECT_EQ(paintOf(mesh, fine, {{255, 255, 0}, {0, 0, 255}}, model).blend_um, 6000);
 }
 

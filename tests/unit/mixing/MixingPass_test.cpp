@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../SettingsTestSupport.h"
+
 #include <list>
 #include <sstream>
 #include <tuple>
@@ -19,11 +21,11 @@ namespace {
 /// A MixingGroup with the settings it points at.
 class TestGroup {
   public:
-    explicit TestGroup(SettingValues values) : group_settings_("global", std::move(values)) {
+    explicit TestGroup(const SettingValues& values) : group_settings_(test::defaultsWith("global", values)) {
         group_.settings = &group_settings_;
     }
     void addMesh(coord_um bottom_um, coord_um top_um, SettingValues values) {
-        mesh_settings_.emplace_back("mesh", std::move(values));
+        mesh_settings_.push_back(group_settings_.with("mesh", values));
         group_.meshes.push_back({&mesh_settings_.back(), "mesh", bottom_um, top_um});
     }
     const MixingGroup& group() const { return group_; }

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../SettingsTestSupport.h"
+
 #include "common/Error.h"
 #include "settings/FrontendValues.h"
 
@@ -12,7 +14,7 @@ namespace mixengine {
 namespace {
 
 Settings scope(SettingValues values) {
-    return Settings("global settings", std::move(values));
+    return test::defaultsWith("global settings", values);
 }
 
 /// The message of the InputError `f` throws ("" when it throws nothing).

@@ -78,7 +78,7 @@ TEST(RaftPlan, BaseLoopBeforeItsLinesAndVolumesOfTheRaftsThickness) {
     ASSERT_GT(moves.size(), loop.points.size());
     for (std::size_t i = 0; i < loop.points.size(); ++i)
         EXPECT_NE(std::find(loop.points.begin(), loop.points.end(), moves[i].to), loop.points.end()) << i;
-    const coord_um w = r.machine.global.lengthMicrons("raft_base_line_width");
+    const coord_um w = r.machine.global.lengthMicrons(key::raft_base_line_width);
     // Volume: length × raft_base_line_width × raft_base_thickness.
     const std::vector<PlanStep> travels = stepsOf(base, PlanStep::Kind::Travel);
     double volume = 0;

@@ -54,14 +54,14 @@ DefinitionSet twoExtruderMachine() {
 TEST(Resolver, DefinitionsAloneExtruderFileBeatsMachine) {
     const ResolvedMachine machine = resolveMachine(twoExtruderMachine(), {});
     EXPECT_EQ(machine.global.scope(), "global settings");
-    EXPECT_EQ(machine.global.text("material_diameter"), "2.85");
+    EXPECT_EQ(machine.global.text(key::material_diameter), "2.85");
     ASSERT_EQ(machine.extruders.size(), 2U);
     EXPECT_EQ(machine.extruders[1].scope(), "extruder 1");
-    EXPECT_EQ(machine.extruders[0].text("material_diameter"), "1.75");
-    EXPECT_EQ(machine.extruders[1].text("material_diameter"), "1.75");
-    EXPECT_EQ(machine.extruders[0].text("extruder_nr"), "0");
-    EXPECT_EQ(machine.extruders[1].text("extruder_nr"), "1");
-    EXPECT_EQ(machine.extruders[1].text("layer_height"), "0.1");
+    EXPECT_EQ(machine.extruders[0].text(key::material_diameter), "1.75");
+    EXPECT_EQ(machine.extruders[1].text(key::material_diameter), "1.75");
+    EXPECT_EQ(machine.extruders[0].text(key::extruder_nr), "0");
+    EXPECT_EQ(machine.extruders[1].text(key::extruder_nr), "1");
+    EXPECT_EQ(machine.extruders[1].text(key::layer_height), "0.1");
 }
 
 TEST(Resolver, OrderExtruderUserThenGlobalUserThenDefinitions) {
@@ -69,9 +69,9 @@ TEST(Resolver, OrderExtruderUserThenGlobalUserThenDefinitions) {
     user.global["material_diameter"] = "2.0";
     user.extruders[1]["material_diameter"] = "3.0";
     const ResolvedMachine machine = resolveMachine(twoExtruderMachine(), user);
-    EXPECT_EQ(machine.global.text("material_diameter"), "2.0");
-    EXPECT_EQ(machine.extruders[0].text("material_diameter"), "2.0");  // -s beats the extruder file
-    EXPECT_EQ(machine.extruders[1].text("material_diameter"), "3.0");  // -e1 -s beats -s
+    EXPECT_EQ(machine.global.text(key::material_diameter), "2.0");
+    EXPECT_EQ(machine.extruders[0].text(key::material_diameter), "2.0");  // -s beats the extruder file
+    EXPECT_EQ(machine.extruders[1].text(key::material_diameter), "3.0");  // -e1 -s beats -s
 }
 
 TEST(Resolver, UnknownUserKeysAreKept) {
@@ -80,15 +80,15 @@ TEST(Resolver, UnknownUserKeysAreKept) {
     user.global["mix_plugin_key"] = "abc";
     user.extruders[0]["mix_extruder_key"] = "x";
     const ResolvedMachine machine = resolveMachine(defs, user);
-    EXPECT_EQ(machine.global.text("mix_plugin_key"), "abc");
-    EXPECT_EQ(machine.extruders[1].text("mix_plugin_key"), "abc");
-    EXPECT_EQ(machine.extruders[0].text("mix_extruder_key"), "x");
-    EXPECT_FALSE(machine.extruders[1].has("mix_extruder_key"));
+    EXPECT_EQ(machine.global.all().at("mix_plugin_key"), "abc");
+    EXPECT_EQ(machine.extruders[1].all().at("mix_plugin_key"), "abc");
+    EXPECT_EQ(machine.extruders[0].all().at("mix_extruder_key"), "x");
+    EXPECT_EQ(machine.extruders[1].find("mix_extruder_key"), nullptr);
     const Settings group = resolveMeshGroup(machine, {}, 0);
     const Settings mesh = resolveMesh(defs, user, machine, group, {{"mix_mesh_key", "m"}}, 0, "cube.stl");
-    EXPECT_EQ(mesh.text("mix_plugin_key"), "abc");
-    EXPECT_EQ(mesh.text("mix_extruder_key"), "x");
-    EXPECT_EQ(mesh.text("mix_mesh_key"), "m");
+    EXPECT_EQ(mesh.all().at("mix_plugin_key"), "abc");
+    EXPECT_EQ(mesh.all().at("mix_extruder_key"), "x");
+    EXPECT_EQ(mesh.all().at("mix_mesh_key"), "m");
 }
 
 TEST(Resolver, TrainCountFollowsMachineExtruderCountAndUserTrains) {
@@ -99,8 +99,8 @@ TEST(Resolver, TrainCountFollowsMachineExtruderCountAndUserTrains) {
     e2.extruders[2]["material_diameter"] = "1.0";
     const ResolvedMachine machine = resolveMachine(single, e2);
     ASSERT_EQ(machine.extruders.size(), 3U);
-    EXPECT_EQ(machine.extruders[1].text("material_diameter"), "2.85");  // no extruder file: the machine's
-    EXPECT_EQ(machine.extruders[2].text("material_diameter"), "1.0");
+    EXPECT_EQ(machine.extruders[1].text(key::material_diameter), "2.85");  // no extruder file: the machine's
+    EXPECT_EQ(machine.extruders[2].text(key::material_diameter), "1.0");
 }
 
 // BUG (engine/settings/Resolver.cpp resolveMachine / StackEvaluator, working-tree version): a train
@@ -115,8 +115,8 @@ TEST(Resolver, EveryTrainKnowsItsNumber) {
     user.extruders[1]["material_diameter"] = "1.75";
     const ResolvedMachine machine = resolveMachine(defs, user);
     ASSERT_EQ(machine.extruders.size(), 2U);
-    EXPECT_EQ(machine.extruders[0].text("extruder_nr"), "0");
-    EXPECT_EQ(machine.extruders[1].text("extruder_nr"), "1");
+    EXPECT_EQ(machine.extruders[0].text(key::extruder_nr), "0");
+    EXPECT_EQ(machine.extruders[1].text(key::extruder_nr), "1");
 }
 
 TEST(Resolver, MeshViewFromItsExtruderGroupAndOwnValues) {
@@ -126,21 +126,21 @@ TEST(Resolver, MeshViewFromItsExtruderGroupAndOwnValues) {
     const ResolvedMachine machine = resolveMachine(defs, user);
     const Settings group = resolveMeshGroup(machine, {{"layer_height", "0.2"}}, 1);
     EXPECT_EQ(group.scope(), "mesh group 1");
-    EXPECT_EQ(group.text("layer_height"), "0.2");
+    EXPECT_EQ(group.text(key::layer_height), "0.2");
 
     const Settings on_default = resolveMesh(defs, user, machine, group, {}, 1, "cube.stl");
     EXPECT_EQ(on_default.scope(), "mesh 'cube.stl'");
-    EXPECT_EQ(on_default.text("extruder_nr"), "1");
-    EXPECT_EQ(on_default.text("material_diameter"), "3.0");
-    EXPECT_EQ(on_default.text("layer_height"), "0.2");  // the group's value
+    EXPECT_EQ(on_default.text(key::extruder_nr), "1");
+    EXPECT_EQ(on_default.text(key::material_diameter), "3.0");
+    EXPECT_EQ(on_default.text(key::layer_height), "0.2");  // the group's value
 
     const Settings by_setting =
         resolveMesh(defs, user, machine, group, {{"extruder_nr", "0"}}, 1, "cube.stl");
-    EXPECT_EQ(by_setting.text("extruder_nr"), "0");
-    EXPECT_EQ(by_setting.text("material_diameter"), "1.75");
+    EXPECT_EQ(by_setting.text(key::extruder_nr), "0");
+    EXPECT_EQ(by_setting.text(key::material_diameter), "1.75");
 
     const Settings own = resolveMesh(defs, user, machine, group, {{"layer_height", "0.3"}}, 0, "cube.stl");
-    EXPECT_EQ(own.text("layer_height"), "0.3");
+    EXPECT_EQ(own.text(key::layer_height), "0.3");
 }
 
 TEST(Resolver, LimitToExtruderReadsTheTargetTrain) {
@@ -152,13 +152,13 @@ TEST(Resolver, LimitToExtruderReadsTheTargetTrain) {
     user.extruders[1]["wall_line_count"] = "5";
     const ResolvedMachine machine = resolveMachine(defs, user);
     const Settings group = resolveMeshGroup(machine, {}, 0);
-    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 0, "a").text("infill_line_distance"), "2.5");
-    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 1, "b").text("infill_line_distance"), "2.5");
+    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 0, "a").text(key::infill_line_distance), "2.5");
+    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 1, "b").text(key::infill_line_distance), "2.5");
     // A value set on the mesh itself is not overridden by the limit.
     const Settings own = resolveMesh(defs, user, machine, group, {{"infill_line_distance", "4.0"}}, 0, "c");
-    EXPECT_EQ(own.text("infill_line_distance"), "4.0");
+    EXPECT_EQ(own.text(key::infill_line_distance), "4.0");
     // A constant limit_to_extruder always names that train.
-    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 0, "d").text("wall_line_count"), "5");
+    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 0, "d").text(key::wall_line_count), "5");
 }
 
 TEST(Resolver, LimitsPointingAtEachOtherDoNotRecurse) {
@@ -171,8 +171,8 @@ TEST(Resolver, LimitsPointingAtEachOtherDoNotRecurse) {
     const ResolvedMachine machine = resolveMachine(defs, user);
     const Settings group = resolveMeshGroup(machine, {}, 0);
     // Each mesh reads the other train's own value, once.
-    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 0, "a").text("mix_limited"), "B");
-    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 1, "b").text("mix_limited"), "A");
+    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 0, "a").all().at("mix_limited"), "B");
+    EXPECT_EQ(resolveMesh(defs, user, machine, group, {}, 1, "b").all().at("mix_limited"), "A");
 }
 
 TEST(Resolver, LimitToExtruderExpression) {
@@ -185,7 +185,7 @@ TEST(Resolver, LimitToExtruderExpression) {
         const ResolvedMachine machine = resolveMachine(defs, user);
         const Settings mesh = resolveMesh(defs, user, machine, resolveMeshGroup(machine, {}, 0), {}, 0, "a");
         // support_roof_extruder_nr (1) if support_roof_enable else 0
-        EXPECT_EQ(mesh.text("support_angle"), std::string(roof) == "True" ? "60.0" : "40.0") << roof;
+        EXPECT_EQ(mesh.text(key::support_angle), std::string(roof) == "True" ? "60.0" : "40.0") << roof;
     }
 }
 
@@ -197,7 +197,7 @@ TEST(Resolver, LimitToExtruderWithoutTargetKeepsOwnValue) {
         user.extruders[0]["infill_line_distance"] = "9.0";
         const ResolvedMachine machine = resolveMachine(defs, user);
         const Settings mesh = resolveMesh(defs, user, machine, resolveMeshGroup(machine, {}, 0), {}, 0, "a");
-        EXPECT_EQ(mesh.text("infill_line_distance"), "9.0") << target;
+        EXPECT_EQ(mesh.text(key::infill_line_distance), "9.0") << target;
     }
 }
 
@@ -239,12 +239,12 @@ TEST(Resolver, RealDualMachineLimitToExtruder) {
     user.extruders[1]["infill_line_distance"] = "4.0";
     const ResolvedMachine machine = resolveMachine(defs, user);
     ASSERT_EQ(machine.extruders.size(), 2U);
-    EXPECT_EQ(machine.extruders[0].text("machine_nozzle_offset_y"), "0.0");
-    EXPECT_EQ(machine.extruders[1].text("machine_nozzle_offset_y"), "21.6");
+    EXPECT_EQ(machine.extruders[0].text(key::machine_nozzle_offset_y), "0.0");
+    EXPECT_EQ(machine.extruders[1].text(key::machine_nozzle_offset_y), "21.6");
     const Settings group = resolveMeshGroup(machine, {}, 0);
     const Settings mesh = resolveMesh(defs, user, machine, group, {{"extruder_nr", "0"}}, 0, "left.stl");
-    EXPECT_EQ(mesh.text("infill_line_distance"), "4.0");
-    EXPECT_EQ(mesh.text("machine_nozzle_offset_y"), "0.0");
+    EXPECT_EQ(mesh.text(key::infill_line_distance), "4.0");
+    EXPECT_EQ(mesh.text(key::machine_nozzle_offset_y), "0.0");
 }
 
 }  // namespace

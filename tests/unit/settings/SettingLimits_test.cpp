@@ -1,6 +1,8 @@
 // Line widths too narrow to print are refused before slicing (settings/SettingLimits.h).
 #include <gtest/gtest.h>
 
+#include "../SettingsTestSupport.h"
+
 #include <string>
 #include <vector>
 
@@ -12,7 +14,7 @@ namespace {
 
 std::string errorOf(const SettingValues& values, const std::vector<std::string>& given) {
     try {
-        checkLineWidths(Settings("extruder 0", values), given);
+        checkLineWidths(test::defaultsWith("extruder 0", values), given);
     } catch (const InputError& e) {
         return e.what();
     }

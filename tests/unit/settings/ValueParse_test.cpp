@@ -147,22 +147,21 @@ TEST(ValueParse, NestingDeeperThan32IsRejected) {
 }
 
 TEST(Settings, TypedGettersCarryTheirUnit) {
-    const Settings s("global settings", {{"speed", "25"},
-                                         {"wall_thickness", "0.8"},
-                                         {"density", "20"},
-                                         {"angle", "90"},
-                                         {"extruder", "-1"},
-                                         {"head", "[[-20, 10], [10, 10], [10, -10]]"},
-                                         {"matrix", "[[0, -1, 0], [1, 0, 0], [0, 0, 2]]"}});
-    EXPECT_EQ(s.velocityMmPerS("speed"), 25.0);
-    EXPECT_EQ(s.lengthMicrons("wall_thickness"), 800);
-    EXPECT_EQ(s.millimetres("wall_thickness"), 0.8);
-    EXPECT_EQ(s.ratio("density"), 0.2);
-    EXPECT_EQ(s.angleDegrees("angle"), 90.0);
-    EXPECT_DOUBLE_EQ(s.angleRadians("angle"), std::numbers::pi / 2);
-    EXPECT_EQ(s.extruderIndex("extruder"), -1);
-    EXPECT_EQ(s.polygonMicrons("head").size(), 3U);
-    const Matrix3 m = s.matrix3("matrix");
+    const Settings s("global settings", {{"speed_travel", "25"},
+                                         {"layer_height", "0.8"},
+                                         {"infill_material_flow", "20"},
+                                         {"support_angle", "90"},
+                                         {"adhesion_extruder_nr", "-1"},
+                                         {"mesh_rotation_matrix", "[[0, -1, 0], [1, 0, 0], [0, 0, 2]]"}});
+    EXPECT_EQ(s.velocityMmPerS(key::speed_travel), 25.0);
+    EXPECT_EQ(s.lengthMicrons(key::layer_height), 800);
+    EXPECT_EQ(s.millimetres(key::layer_height), 0.8);
+    EXPECT_EQ(s.ratio(key::infill_material_flow), 0.2);
+    EXPECT_EQ(s.percent(key::infill_material_flow), 20.0);
+    EXPECT_EQ(s.angleDegrees(key::support_angle), 90.0);
+    EXPECT_DOUBLE_EQ(s.angleRadians(key::support_angle), std::numbers::pi / 2);
+    EXPECT_EQ(s.extruderIndex(key::adhesion_extruder_nr), -1);
+    const Matrix3 m = s.matrix3(key::mesh_rotation_matrix);
     EXPECT_EQ(m.m[0][1], -1.0);
     EXPECT_EQ(m.m[1][0], 1.0);
     EXPECT_EQ(m.m[2][2], 2.0);
@@ -172,21 +171,21 @@ TEST(Settings, TypedGettersCarryTheirUnit) {
 
 TEST(Settings, MissingKeyNamesKeyAndScope) {
     const Settings s("extruder 1", {{"layer_height", "0.1"}});
-    EXPECT_FALSE(s.has("speed_print"));
-    for (const auto& call : {std::function<void()>([&] { s.text("speed_print"); }),
-                             std::function<void()>([&] { s.real("speed_print"); }),
-                             std::function<void()>([&] { s.boolean("speed_print"); })}) {
+    EXPECT_FALSE(s.has(key::speed_travel));
+    for (const auto& call : {std::function<void()>([&] { s.text(key::speed_travel); }),
+                             std::function<void()>([&] { s.velocityMmPerS(key::speed_travel); }),
+                             std::function<void()>([&] { s.boolean(key::magic_spiralize); })}) {
         const std::string message = inputErrorOf(call);
-        EXPECT_TRUE(contains(message, "speed_print")) << message;
+        EXPECT_TRUE(contains(message, "speed_travel") || contains(message, "magic_spiralize")) << message;
         EXPECT_TRUE(contains(message, "extruder 1")) << message;
     }
 }
 
 TEST(Settings, MalformedValueNamesKeyAndValue) {
     const Settings s("global settings", {{"layer_height", "abc"}, {"infill_angles", "[1, x]"}});
-    std::string message = inputErrorOf([&] { s.lengthMicrons("layer_height"); });
+    std::string message = inputErrorOf([&] { s.lengthMicrons(key::layer_height); });
     EXPECT_TRUE(contains(message, "layer_height") && contains(message, "abc")) << message;
-    message = inputErrorOf([&] { s.realList("infill_angles"); });
+    message = inputErrorOf([&] { s.realList(key::infill_angles); });
     EXPECT_TRUE(contains(message, "infill_angles") && contains(message, "[1, x]")) << message;
 }
 
@@ -194,12 +193,12 @@ TEST(Settings, WithOverlaysACopy) {
     const Settings base("global settings", {{"a", "1"}, {"b", "2"}});
     const Settings group = base.with("mesh group 0", {{"b", "3"}, {"c", "4"}});
     EXPECT_EQ(group.scope(), "mesh group 0");
-    EXPECT_EQ(group.text("a"), "1");
-    EXPECT_EQ(group.text("b"), "3");
-    EXPECT_EQ(group.text("c"), "4");
+    EXPECT_EQ(group.all().at("a"), "1");
+    EXPECT_EQ(group.all().at("b"), "3");
+    EXPECT_EQ(group.all().at("c"), "4");
     EXPECT_EQ(group.all().size(), 3U);
-    EXPECT_EQ(base.text("b"), "2");
-    EXPECT_FALSE(base.has("c"));
+    EXPECT_EQ(base.all().at("b"), "2");
+    EXPECT_EQ(base.find("c"), nullptr);
     EXPECT_EQ(base.scope(), "global settings");
 }
 

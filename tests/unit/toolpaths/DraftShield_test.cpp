@@ -63,7 +63,7 @@ TEST(DraftShield, OneLoopAtTheDistanceOnEveryLayer) {
     EXPECT_EQ(featureMarker(loop.feature), "SKIRT");
     EXPECT_TRUE(loop.closed);
     EXPECT_EQ(loop.width_um, 400);  // skirt_brim_line_width
-    EXPECT_EQ(loop.speed_mm_s, print.machine.global.real("skirt_brim_speed"));
+    EXPECT_EQ(loop.speed_mm_s, print.machine.global.velocityMmPerS(key::skirt_brim_speed));
 }
 
 TEST(DraftShield, LimitedHeightStopsOneLayerAboveTheHeight) {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "../SettingsTestSupport.h"
+
 namespace mixengine {
 namespace {
 
@@ -22,11 +24,13 @@ Settings mesh(SettingValues extra = {}) {
                     {"material_flow_layer_0", "110"}};
     for (auto& [k, val] : extra)
         v[k] = val;
-    return Settings("mesh", v);
+    return test::defaultsWith("mesh", v);
 }
 
-const FeatureKeys kWall{"wall_line_width_0", "speed_wall_0", "wall_0_material_flow", "wall_0_extruder_nr"};
-const FeatureKeys kInfill{"infill_line_width", "speed_infill", "infill_material_flow", "infill_extruder_nr"};
+const FeatureKeys kWall{key::wall_line_width_0, key::speed_wall_0, key::wall_0_material_flow,
+                        key::wall_0_extruder_nr};
+const FeatureKeys kInfill{key::infill_line_width, key::speed_infill, key::infill_material_flow,
+                          key::infill_extruder_nr};
 
 TEST(FeatureStyle, FirstLayerWidthSpeedAndFlow) {
     const FeatureStyle s = featureStyle(mesh(), kInfill, 0);
@@ -49,7 +53,7 @@ TEST(FeatureStyle, MinusOneMeansTheMeshsExtruder) {
     EXPECT_EQ(featureStyle(mesh(), kWall, 3).extruder, 1);
     EXPECT_DOUBLE_EQ(featureStyle(mesh(), kWall, 3).flow, 0.95);
     EXPECT_EQ(featureStyle(mesh({{"wall_0_extruder_nr", "2"}}), kWall, 3).extruder, 2);
-    EXPECT_EQ(ownExtruder(Settings("mesh", {})), 0);
+    EXPECT_EQ(ownExtruder(test::defaultsWith("mesh", {})), 0);
 }
 
 TEST(FeatureStyle, MeshStylesReadCurasKeys) {
@@ -60,10 +64,11 @@ TEST(FeatureStyle, MeshStylesReadCurasKeys) {
         v[k] = "50";
     v["speed_wall_0"] = "25";
     v["top_bottom_extruder_nr"] = "1";
-    const MeshStyles m = meshStyles(Settings("mesh", v), 5);
+    v["roofing_extruder_nr"] = "1";  // its formula: top_bottom_extruder_nr
+    const MeshStyles m = meshStyles(test::defaultsWith("mesh", v), 5);
     EXPECT_EQ(m.wall_0.speed_mm_s, 25.0);
     EXPECT_EQ(m.skin.extruder, 1);
-    EXPECT_EQ(m.roofing.extruder, 1);  // no roofing keys: as skin
+    EXPECT_EQ(m.roofing.extruder, 1);
     EXPECT_EQ(m.infill.extruder, 0);
 }
 

@@ -232,8 +232,8 @@ TEST(GroupToolpaths, RaftUnderATeeLiftsTheModelAndTakesTheFirstLayersSupport) {
     ASSERT_FALSE(filler.paths.empty());
     for (const ExtrusionPath& p : filler.paths) {
         EXPECT_EQ(p.feature, Feature::Support);
-        EXPECT_EQ(p.width_um, m.global.lengthMicrons("support_line_width"));  // no first-layer widening
-        EXPECT_DOUBLE_EQ(p.speed_mm_s, 40);                                   // no first-layer slow-down
+        EXPECT_EQ(p.width_um, m.global.lengthMicrons(key::support_line_width));  // no first-layer widening
+        EXPECT_DOUBLE_EQ(p.speed_mm_s, 40);                                      // no first-layer slow-down
     }
     EXPECT_TRUE(g.support[0].empty());  // the model's first layer prints no support
     EXPECT_FALSE(g.support[1].empty());

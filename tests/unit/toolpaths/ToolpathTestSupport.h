@@ -50,11 +50,12 @@ inline double totalLength(const std::vector<ExtrusionPath>& paths) {
     return total;
 }
 
-/// Cura's fdmprinter with all formulas evaluated, plus `user` values (global) and per-extruder ones.
+/// Cura's fdmprinter (with MixEngine's settings) with all formulas evaluated, plus `user` values (global) and
+/// per-extruder ones.
 inline ResolvedMachine fdmMachine(const SettingValues& user = {},
                                   const std::map<int, SettingValues>& trains = {}) {
-    static const DefinitionSet defs = loadDefinitionSet(
-        "fdmprinter", {"/usr/share/cura/resources/definitions", "/usr/share/cura/resources/extruders"});
+    // as the engine: MixEngine's own definitions (settings/mixengine/) with Cura's
+    static const DefinitionSet defs = loadDefinitionSet("fdmprinter", defaultSearchPath(nullptr));
     UserSettings values;
     values.global = user;
     values.extruders = trains;
