@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 namespace mixengine {
 

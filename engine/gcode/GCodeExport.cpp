@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 namespace mixengine {
 

@@ -12,40 +12,43 @@
 #include <vector>
 
 #include "gcode/Bfb.h"
-#include "gcode/ExtrusionAxis.h"
 #include "gcode/Flavor.h"
-#include "gcode/MixDialect.h"
 #include "gcode/MotionCommands.h"
 #include "gcode/TemperatureCommands.h"
 #include "gcode/TimeEstimate.h"
+#include "gcode/format/ExtrusionAxis.h"
+#include "gcode/mixdialect/MixDialect.h"
 #include "geometry/Point.h"
 
 namespace mixengine {
 
 /// A retraction (CuraEngine's RetractionConfig): how much filament is pulled back, how fast it goes
 /// back and forth, and the material primed in addition when it goes forward again.
+/// Every value comes from the settings (pipeline/OutputParams.cpp); the defaults are the definitions'.
 struct RetractionConfig {
-    double amount_mm = 6.5;  ///< filament pulled back (0: no retraction)
-    double retract_speed_mm_s = 25;
-    double prime_speed_mm_s = 25;  ///< of the prime that undoes this retraction
-    double extra_prime_mm3 = 0;    ///< primed in addition after it (retraction_extra_prime_amount)
+    double amount_mm = 0;  ///< filament pulled back (0: no retraction)
+    double retract_speed_mm_s = 0;
+    double prime_speed_mm_s = 0;  ///< of the prime that undoes this retraction
+    double extra_prime_mm3 = 0;   ///< primed in addition after it (retraction_extra_prime_amount)
 };
 
+/// What the G-code writer needs, built from the settings by exportParams (pipeline/OutputParams.cpp): no
+/// value here restates a definition's default (a unit test sets what it relies on).
 struct ExportParams {
     /// The firmware flavor's row (gcode/Flavor.h): E in mm³, the extrusion axis letters, BFB's
     /// RPM-driven extrusion, the fan, acceleration/jerk and M105 forms, ...
     FlavorTraits flavor = flavorTraits(Flavor::Marlin);
-    double filament_diameter_mm = 2.85;
-    bool relative_extrusion = false;    ///< M83
-    double retraction_amount_mm = 6.5;  ///< the first extruder's retraction (ToolChange for the others)
-    double retraction_speed_mm_s = 25;
-    double prime_speed_mm_s = 25;
+    double filament_diameter_mm = 0;  ///< material_diameter of the first extruder (0 only in E-free tests)
+    bool relative_extrusion = false;  ///< M83
+    double retraction_amount_mm = 0;  ///< the first extruder's retraction (ToolChange for the others)
+    double retraction_speed_mm_s = 0;
+    double prime_speed_mm_s = 0;
     double retraction_extra_prime_mm3 = 0;
     coord_um retraction_hop_um = 0;  ///< z-hop while retracted (0 = off)
-    double z_hop_speed_mm_s = 10;    ///< speed_z_hop: the lifts and lowerings of z-hops
+    double z_hop_speed_mm_s = 0;     ///< speed_z_hop: the lifts and lowerings of z-hops
     bool firmware_retract = false;   ///< G10/G11 instead of E moves (machine_firmware_retract)
     Kinematics kinematics;
-    MixingOutput mixing;  ///< colour mixing dialect (gcode/MixDialect.h); default: single colour
+    MixingOutput mixing;  ///< colour mixing dialect (gcode/mixdialect/MixDialect.h); default: single colour
     TemperatureCommandParams temperatures;  ///< nozzle temperature commands (gcode/TemperatureCommands.h)
     int fan_number = 0;  ///< the first extruder's machine_extruder_cooling_fan_number (P<n> when not 0)
     /// Flow-rate compensation (flow_rate_max_extrusion_offset, in the axis unit; 0 = off) and
@@ -58,7 +61,7 @@ struct ExportParams {
 /// own retraction and z-hop for travel.
 struct ToolChange {
     int extruder = 0;
-    double filament_diameter_mm = 2.85;
+    double filament_diameter_mm = 0;  ///< its material_diameter
     Point2 nozzle_offset_um{0, 0};
     RetractionConfig retraction;
     coord_um retraction_hop_um = 0;

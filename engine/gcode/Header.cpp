@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 namespace mixengine {
 

@@ -1,6 +1,6 @@
 #include "gcode/MotionCommands.h"
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 namespace mixengine {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 #include "mixing/color/ColorSpace.h"
 
 namespace mixengine {

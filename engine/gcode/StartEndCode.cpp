@@ -1,6 +1,6 @@
 #include "gcode/StartEndCode.h"
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 namespace mixengine {
 

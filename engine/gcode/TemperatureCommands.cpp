@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 namespace mixengine {
 

@@ -206,7 +206,7 @@ void warnAboutDialect(const MixingOutput& output, const Settings& global, Log& l
 /// Mixing is the print's choice: a model asking for a mix in a single-filament print is told so.
 void warnAboutMeshModes(const MixingGroup& group, Log& log) {
     for (const MixingMesh& m : group.meshes) {
-        if (m.settings->has(key::mixing_mode) && m.settings->text(key::mixing_mode) != "single") {
+        if (m.settings->text(key::mixing_mode) != "single") {
             log.warning("mixing_mode " + m.settings->text(key::mixing_mode) +
                         " of a model is not used: mixing is off for the print (mixing_mode single); set the "
                         "print's mixing_mode to dual, gradient or color");
@@ -331,8 +331,7 @@ std::string sequenceHint(const MixingGroup& group, const std::vector<std::vector
                          const TransitionReport& report) {
     if (report.changes == 0 || !regions.empty() || group.meshes.size() < 2)
         return "";
-    if (group.settings->has(key::print_sequence) &&
-        group.settings->text(key::print_sequence) == "one_at_a_time")
+    if (group.settings->text(key::print_sequence) == "one_at_a_time")
         return "";
     for (std::size_t a = 0; a < group.meshes.size(); ++a)
         for (std::size_t b = a + 1; b < group.meshes.size(); ++b) {

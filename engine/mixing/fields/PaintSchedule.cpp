@@ -29,10 +29,8 @@ Rgb colorOfCode(std::uint32_t code, const std::vector<Rgb>& extruder_colors, con
     return extruder_colors[extruder - 1];
 }
 
-/// mixing_paint_blend in microns (0 when not set).
+/// mixing_paint_blend in microns.
 coord_um blendOf(const Settings& scope) {
-    if (!scope.has(key::mixing_paint_blend))
-        return 0;
     const double blend_mm = parseReal("mixing_paint_blend", scope.text(key::mixing_paint_blend));
     if (!(blend_mm >= 0) || !std::isfinite(blend_mm))
         throw InputError("setting 'mixing_paint_blend': " + scope.text(key::mixing_paint_blend) +

@@ -238,8 +238,7 @@ std::vector<LayerInfill> arrangedBodies(const std::vector<SupportLayerAreas>& ar
 }
 
 bool isTree(const SupportMesh& mesh) {
-    return mesh.settings->has(key::support_structure) &&
-           mesh.settings->text(key::support_structure) == "tree";
+    return mesh.settings->text(key::support_structure) == "tree";
 }
 
 /// The mesh's overhang points (toolpaths/support/SupportTowers.h) added to `points`, with its towers on;

@@ -25,7 +25,7 @@ Paths thickened(const Paths& lines, coord_um width_um) {
 Paths modelOutline(const MoldMesh& m, std::size_t layer) {
     SlicedLayer& sliced = (*m.layers)[layer];
     double width = double(m.settings->lengthMicrons(key::wall_line_width_0));
-    if (layer == 0 && m.settings->has(key::initial_layer_line_width_factor))
+    if (layer == 0)
         width *= m.settings->ratio(key::initial_layer_line_width_factor);
     Paths model = unionOf(sliced.outlines, thickened(sliced.open_polylines, static_cast<coord_um>(width)));
     sliced.open_polylines.clear();

@@ -1,6 +1,6 @@
-// The extrusion axis bookkeeping (gcode/ExtrusionAxis.h): absolute (M82) and relative (M83) words,
+// The extrusion axis bookkeeping (gcode/format/ExtrusionAxis.h): absolute (M82) and relative (M83) words,
 // resets and the filament total.
-#include "gcode/ExtrusionAxis.h"
+#include "gcode/format/ExtrusionAxis.h"
 
 #include <gtest/gtest.h>
 

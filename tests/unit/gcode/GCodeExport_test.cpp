@@ -16,6 +16,7 @@ ExportParams marlin175() {
     p.retraction_amount_mm = 6.5;
     p.retraction_speed_mm_s = 25;
     p.prime_speed_mm_s = 25;
+    p.z_hop_speed_mm_s = 10;
     return p;
 }
 

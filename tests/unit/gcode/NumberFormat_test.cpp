@@ -1,6 +1,6 @@
-// Compact G-code number formatting (gcode/NumberFormat.h): fixed decimals, trailing zeros and point
+// Compact G-code number formatting (gcode/format/NumberFormat.h): fixed decimals, trailing zeros and point
 // removed, never "-0".
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 #include <gtest/gtest.h>
 

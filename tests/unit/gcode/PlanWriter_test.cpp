@@ -61,6 +61,9 @@ ExportParams params() {
     p.filament_diameter_mm = 1.75;
     p.flavor = flavorTraits(Flavor::MarlinVolumetric);  // E equals the volume: easy to read
     p.retraction_amount_mm = 1.0;
+    p.retraction_speed_mm_s = 25;
+    p.prime_speed_mm_s = 25;
+    p.z_hop_speed_mm_s = 10;
     // Acceleration and jerk so high that every move takes distance / speed: easy to check.
     p.kinematics.acceleration_mm_s2 = 1e12;
     p.kinematics.max_acceleration_mm_s2 = {1e12, 1e12, 1e12, 1e12};

@@ -148,6 +148,9 @@ namespace {
 
 ExportParams s5Export(Flavor flavor = Flavor::Griffin) {
     ExportParams p;
+    p.filament_diameter_mm = 2.85;
+    p.retraction_speed_mm_s = 25;
+    p.prime_speed_mm_s = 25;
     p.flavor = flavorTraits(flavor);
     p.retraction_amount_mm = 6.5;
     p.retraction_hop_um = 2000;  // the prime's retraction does not hop

@@ -1,7 +1,7 @@
-// The mixing dialects (gcode/MixDialect.h, MixTotalAxis, MixSplitAxes, MixChannelSplit): exact
+// The mixing dialects (gcode/mixdialect/MixDialect.h, MixTotalAxis, MixSplitAxes, MixChannelSplit): exact
 // text of short sequences, and the invariant that a move's channel amounts add up exactly to the
 // single-colour E word, in absolute and relative mode.
-#include "gcode/MixDialect.h"
+#include "gcode/mixdialect/MixDialect.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "gcode/ExtrusionAxis.h"
-#include "gcode/MixChannelSplit.h"
+#include "gcode/format/ExtrusionAxis.h"
+#include "gcode/mixdialect/MixChannelSplit.h"
 
 namespace mixengine {
 namespace {

@@ -1,5 +1,6 @@
 #pragma once
-// Dialects that write one amount per filament channel on every extruding move (gcode/MixDialect.h):
+// Dialects that write one amount per filament channel on every extruding move
+// (gcode/mixdialect/MixDialect.h):
 //
 //   eb_axes    "E<a> B<b>"; M82/M83 switch both axes (MakerPi); absolute positions are reset
 //              together with "G92 E0 B0" at layer starts (and B once with "G92 B0" before its first
@@ -21,9 +22,9 @@
 // back exactly what each channel gave.
 #include <array>
 
-#include "gcode/ExtrusionAxis.h"
-#include "gcode/MixChannelSplit.h"
-#include "gcode/MixDialect.h"
+#include "gcode/format/ExtrusionAxis.h"
+#include "gcode/mixdialect/MixChannelSplit.h"
+#include "gcode/mixdialect/MixDialect.h"
 
 namespace mixengine {
 

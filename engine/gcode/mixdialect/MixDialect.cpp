@@ -1,7 +1,7 @@
-#include "gcode/MixDialect.h"
+#include "gcode/mixdialect/MixDialect.h"
 
-#include "gcode/MixSplitAxes.h"
-#include "gcode/MixTotalAxis.h"
+#include "gcode/mixdialect/MixSplitAxes.h"
+#include "gcode/mixdialect/MixTotalAxis.h"
 
 namespace mixengine {
 

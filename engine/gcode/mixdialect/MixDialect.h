@@ -3,7 +3,7 @@
 // object turns that into G-code"). GCodeExport owns one dialect and asks it for the extrusion
 // words of every extruding move, retraction and prime, and for the reset line at layer starts.
 //
-//   single mode      one E axis, exactly the single-colour output (gcode/ExtrusionAxis.h)
+//   single mode      one E axis, exactly the single-colour output (gcode/format/ExtrusionAxis.h)
 //   eb_axes          E and B words on every move (MakerPi: M82/M83 and G92 act on both)
 //   klipper_b        E as usual, B on a Klipper manual_stepper: always absolute, never G92-reset
 //   rrf_colon        `E<a>:<b>` words, relative extrusion only (M83 forced)

@@ -1,4 +1,4 @@
-#include "gcode/MixChannelSplit.h"
+#include "gcode/mixdialect/MixChannelSplit.h"
 
 #include <algorithm>
 #include <cmath>

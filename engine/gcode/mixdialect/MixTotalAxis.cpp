@@ -1,6 +1,6 @@
-#include "gcode/MixTotalAxis.h"
+#include "gcode/mixdialect/MixTotalAxis.h"
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 #include "mixing/setup/Quantiser.h"
 
 namespace mixengine {

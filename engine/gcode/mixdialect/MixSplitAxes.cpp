@@ -1,4 +1,4 @@
-#include "gcode/MixSplitAxes.h"
+#include "gcode/mixdialect/MixSplitAxes.h"
 
 namespace mixengine {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Dialects with one total E axis (gcode/MixDialect.h): the single-colour output, and the mixing
+// Dialects with one total E axis (gcode/mixdialect/MixDialect.h): the single-colour output, and the mixing
 // firmwares that take the mix as a command — Marlin M163/M164 (+ T<tool> once), Marlin M165
 // (DIRECT_MIXING_IN_G1) and RepRapFirmware M567. The E words are exactly the single-colour ones;
 // a mix command is written before a move only when the mix, quantised to the firmware's
@@ -7,8 +7,8 @@
 #include <array>
 #include <optional>
 
-#include "gcode/ExtrusionAxis.h"
-#include "gcode/MixDialect.h"
+#include "gcode/format/ExtrusionAxis.h"
+#include "gcode/mixdialect/MixDialect.h"
 
 namespace mixengine {
 

@@ -1,4 +1,4 @@
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 #include <charconv>
 #include <cmath>

@@ -9,7 +9,7 @@
 // Amounts are in the axis unit: mm of filament, or mm³ of material when the flavor is volumetric
 // (RepRap (Volumetric), UltiGCode). Words are written with 5 decimals; a "unit" is that resolution,
 // 1e-5 of the axis unit.
-// moveUnits() is the integer view used by the mixing dialects (gcode/MixDialect.h): how far the
+// moveUnits() is the integer view used by the mixing dialects (gcode/mixdialect/MixDialect.h): how far the
 // written value moves, which is exactly what a firmware sees between two words.
 #include <string>
 

@@ -1,8 +1,8 @@
-#include "gcode/ExtrusionAxis.h"
+#include "gcode/format/ExtrusionAxis.h"
 
 #include <cmath>
 
-#include "gcode/NumberFormat.h"
+#include "gcode/format/NumberFormat.h"
 
 namespace mixengine {
 
