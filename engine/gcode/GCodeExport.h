@@ -24,7 +24,7 @@ namespace mixengine {
 
 /// A retraction (CuraEngine's RetractionConfig): how much filament is pulled back, how fast it goes
 /// back and forth, and the material primed in addition when it goes forward again.
-/// Every value comes from the settings (pipeline/OutputParams.cpp); the defaults are the definitions'.
+/// Every value comes from the settings (gcode/OutputParams.cpp); the defaults are the definitions'.
 struct RetractionConfig {
     double amount_mm = 0;  ///< filament pulled back (0: no retraction)
     double retract_speed_mm_s = 0;
@@ -32,7 +32,7 @@ struct RetractionConfig {
     double extra_prime_mm3 = 0;   ///< primed in addition after it (retraction_extra_prime_amount)
 };
 
-/// What the G-code writer needs, built from the settings by exportParams (pipeline/OutputParams.cpp): no
+/// What the G-code writer needs, built from the settings by exportParams (gcode/OutputParams.cpp): no
 /// value here restates a definition's default (a unit test sets what it relies on).
 struct ExportParams {
     /// The firmware flavor's row (gcode/Flavor.h): E in mm³, the extrusion axis letters, BFB's

@@ -6,16 +6,17 @@
 #include "common/Error.h"
 #include "common/ParallelFor.h"
 #include "gcode/Bfb.h"
+#include "gcode/OutputParams.h"
 #include "gcode/StartEndCode.h"
 #include "mixing/MixingPass.h"
 #include "mixing/setup/MixingSettings.h"
-#include "pipeline/OutputParams.h"
 #include "pipeline/StreamedWriter.h"
 #include "planning/PrintPlanner.h"
 #include "slicing/MultiVolumes.h"
 
 #include "slicing/AdaptiveLayers.h"
 #include "slicing/OutlineCleanup.h"
+#include "slicing/SlicingParams.h"
 #include "toolpaths/GroupToolpaths.h"
 #include "toolpaths/adhesion/RaftLayout.h"
 #include "toolpaths/surface/ConicalOverhang.h"
@@ -24,23 +25,9 @@
 namespace mixengine {
 namespace {
 
-SlicingTolerance toleranceOf(const Settings& s) {
-    const std::string text = s.text(key::slicing_tolerance);
-    if (text == "inclusive")
-        return SlicingTolerance::Inclusive;
-    if (text == "exclusive")
-        return SlicingTolerance::Exclusive;
-    return SlicingTolerance::Middle;
-}
-
-bool adaptiveOn(const Settings& s) {
-    return s.boolean(key::adaptive_layer_height_enabled);
-}
-
 /// adaptive_layer_height_enabled: the group's layers from the slopes of its printed meshes
 /// (slicing/AdaptiveLayers.h).
 std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance tolerance) {
-    const Settings& s = group.settings;
     std::vector<FaceSlope> faces;
     for (const SceneMesh& m : group.meshes) {
         if (!volumeRoleOf(m.settings, m.mesh).printed())
@@ -48,14 +35,7 @@ std::vector<LayerZ> adaptiveHeights(const SceneGroup& group, SlicingTolerance to
         std::vector<FaceSlope> own = faceSlopes(m.mesh);
         faces.insert(faces.end(), own.begin(), own.end());
     }
-    AdaptiveLayerParams params;
-    params.layer_height_um = s.lengthMicrons(key::layer_height);
-    params.layer_height_0_um = s.lengthMicrons(key::layer_height_0);
-    params.variation_um = s.lengthMicrons(key::adaptive_layer_height_variation);
-    params.step_um = s.lengthMicrons(key::adaptive_layer_height_variation_step);
-    params.threshold_um = s.lengthMicrons(key::adaptive_layer_height_threshold);
-    params.middle = tolerance == SlicingTolerance::Middle;
-    return adaptiveLayerHeights(faces, params);
+    return adaptiveLayerHeights(faces, adaptiveLayerParams(group.settings, tolerance));
 }
 
 /// As CuraEngine 4.13 after slicing: molds (toolpaths/surface/Mold.h), then each mesh's conical overhang
@@ -203,16 +183,6 @@ void useBfbLineEnds(const std::vector<std::string>& verbatim, GCodeOutput& outpu
     output.suffix = withBfbLineEnds(output.suffix, verbatim);
 }
 
-/// How far apart the ends of open cut pieces may be and still be joined: as CuraEngine 4.13, up to
-/// 10 mm (nearest ends first, pieces reversed where needed), so an open scan still slices into
-/// closed outlines; in a mesh surface mode only the slicer's own 0.1 mm (open pieces stay open).
-coord_um stitchDistanceUm(const Settings& s) {
-    constexpr coord_um kStitchUm = 10'000;
-    constexpr coord_um kSurfaceModeGapUm = 100;
-    const bool normal = s.text(key::magic_mesh_surface_mode) == "normal";
-    return normal ? kStitchUm : kSurfaceModeGapUm;
-}
-
 /// The index of the last mesh group that has meshes (its layer count completes ;LAYER_COUNT:).
 std::size_t lastGroupWithMeshes(const Scene& scene) {
     std::size_t last = 0;
@@ -262,7 +232,8 @@ void finishOutput(const Scene& scene, const ExportParams& export_params, GCodeEx
     output.summary.time_by_feature_s = gcode.secondsByFeature();
     output.summary.filament_per_extruder = gcode.filamentPerExtruder();
     output.summary.filament_per_extruder.resize(scene.machine.extruders.size(), 0.0);
-    describeExtruders(scene, export_params.flavor.volumetric_e, output.summary);
+    output.summary.print_groups = static_cast<int>(scene.groups.size());
+    describeExtruders(scene.machine, export_params.flavor.volumetric_e, output.summary);
     output.summary.layer_height_mm = global.millimetres(key::layer_height);
     output.summary.engine_version = MIXENGINE_VERSION;
     output.header = makeHeader(output.summary);
@@ -272,20 +243,6 @@ void finishOutput(const Scene& scene, const ExportParams& export_params, GCodeEx
 }
 
 }  // namespace
-
-VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {
-    VolumeRole role;
-    role.infill_mesh = s.boolean(key::infill_mesh);
-    role.cutting_mesh = s.boolean(key::cutting_mesh);
-    role.support_mesh = s.boolean(key::support_mesh);
-    role.anti_overhang_mesh = s.boolean(key::anti_overhang_mesh);
-    role.surface_only = s.text(key::magic_mesh_surface_mode) == "surface";
-    role.union_all = s.boolean(key::meshfix_union_all);
-    role.infill_mesh_order = static_cast<int>(s.integer(key::infill_mesh_order));
-    role.overlap_um = s.lengthMicrons(key::multiple_mesh_overlap);
-    role.bounds = mesh.bounds();
-    return role;
-}
 
 std::vector<std::string_view> GCodeOutput::pieces() const {
     std::vector<std::string_view> out{header, start};
@@ -315,10 +272,11 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         max_z = std::max(max_z, m.mesh.bounds().max.z);
     const Settings& s = group.settings;
     SliceOptions options;
-    options.tolerance = toleranceOf(s);
-    sliced.heights = adaptiveOn(s) ? adaptiveHeights(group, options.tolerance)
-                                   : computeLayerHeights(max_z, s.lengthMicrons(key::layer_height_0),
-                                                         s.lengthMicrons(key::layer_height));
+    options.tolerance = slicingToleranceOf(s);
+    sliced.heights = s.boolean(key::adaptive_layer_height_enabled)
+                         ? adaptiveHeights(group, options.tolerance)
+                         : computeLayerHeights(max_z, s.lengthMicrons(key::layer_height_0),
+                                               s.lengthMicrons(key::layer_height));
     options.threads = threads;
     for (const SceneMesh& m : group.meshes) {
         SliceOptions own = options;
@@ -327,10 +285,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         own.max_gap_um = stitchDistanceUm(m.settings);
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, own, log));
     }
-    OutlineCleanupParams cleanup;
-    cleanup.minimum_circumference_um = s.lengthMicrons(key::minimum_polygon_circumference);
-    cleanup.maximum_resolution_um = simplify ? s.lengthMicrons(key::meshfix_maximum_resolution) : 0;
-    cleanup.maximum_deviation_um = simplify ? s.lengthMicrons(key::meshfix_maximum_deviation) : 0;
+    const OutlineCleanupParams cleanup = outlineCleanupParams(s, simplify);
     for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
         cleanOutlines(sliced.meshes[m], cleanup, threads);
         const Settings& own = group.meshes[m].settings;
@@ -338,8 +293,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
             removeHoles(sliced.meshes[m], threads);
         sliced.roles.push_back(volumeRoleOf(own, group.meshes[m].mesh));
     }
-    const VolumeParams volumes{s.boolean(key::carve_multiple_volumes), s.boolean(key::alternate_carve_order)};
-    combineVolumes(sliced.meshes, sliced.roles, volumes, threads);
+    combineVolumes(sliced.meshes, sliced.roles, volumeParams(s), threads);
     if (!anyLayerMesh(sliced.roles)) {  // only modifiers: nothing prints, as CuraEngine (0 layers)
         sliced.heights.clear();
         for (std::vector<SlicedLayer>& layers : sliced.meshes)
@@ -352,13 +306,13 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
 GCodeOutput runPipeline(const Scene& scene, int threads, Log& log, const PlanObserver& on_plan,
                         const LayerStream& stream) {
     const Settings& global = scene.machine.global;
-    const ExportParams export_params = exportParams(scene);
+    const ExportParams export_params = exportParams(scene.machine);
     GCodeExport gcode(export_params);
     const StartTemperature start =
         startNozzleTemperature(global, export_params.flavor, scene.machine.extruders.front());
     if (start.set)
         gcode.assumeNozzleTemperature(0, start.celsius, start.waited);
-    const PlanWriterParams writer = writerParams(scene);
+    const PlanWriterParams writer = writerParams(scene.machine);
     const std::string prime = primeFirstExtruder(scene, writer, gcode);
     PlannerState state;
     // As CuraEngine, the first layer is planned from layer_start_x/_y of the first extruder (later

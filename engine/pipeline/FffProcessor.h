@@ -22,10 +22,6 @@ struct SlicedGroup {
     std::vector<VolumeRole> roles;                 ///< [mesh] what each mesh is (a model or a modifier)
 };
 
-/// The mesh's part in its group from its resolved settings (infill_mesh, cutting_mesh, support_mesh,
-/// anti_overhang_mesh, infill_mesh_order, multiple_mesh_overlap, meshfix_union_all, …).
-VolumeRole volumeRoleOf(const Settings& settings, const Mesh& mesh);
-
 struct GCodeOutput {
     std::string header;  ///< ;FLAVOR: … or the Griffin block (Cura's GCodePrefix)
     /// Start code + ;LAYER_COUNT: — the model's layers, without the raft's, as CuraEngine counts.

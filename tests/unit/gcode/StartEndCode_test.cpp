@@ -35,7 +35,7 @@ Settings extruder0(const char* layer0 = "215", const char* print = "200") {
                                              {"material_print_temperature", print}});
 }
 
-/// The flavor row of the settings' machine_gcode_flavor (pipeline/OutputParams reads it so).
+/// The flavor row of the settings' machine_gcode_flavor (gcode/OutputParams reads it so).
 const FlavorTraits& flavorIn(const Settings& g) {
     return flavorOf(g.text(key::machine_gcode_flavor));
 }

@@ -1,7 +1,7 @@
-// What the writer and the header get from the resolved settings (pipeline/OutputParams.h): the
+// What the writer and the header get from the resolved settings (gcode/OutputParams.h): the
 // volume of filament each extruder train used, from millimetres of filament or, in volumetric
 // flavors, from cubic millimetres as they are.
-#include "pipeline/OutputParams.h"
+#include "gcode/OutputParams.h"
 
 #include <gtest/gtest.h>
 
@@ -12,13 +12,9 @@
 namespace mixengine {
 namespace {
 
-Scene twoTrains(const std::string& flavor) {
-    Scene scene;
-    scene.machine =
-        test::fdmMachine({{"machine_extruder_count", "2"}, {"machine_gcode_flavor", flavor}},
-                         {{0, {{"material_diameter", "1.75"}}}, {1, {{"material_diameter", "2.85"}}}});
-    scene.groups.resize(1);
-    return scene;
+ResolvedMachine twoTrains(const std::string& flavor) {
+    return test::fdmMachine({{"machine_extruder_count", "2"}, {"machine_gcode_flavor", flavor}},
+                            {{0, {{"material_diameter", "1.75"}}}, {1, {{"material_diameter", "2.85"}}}});
 }
 
 TEST(OutputParams, ExportParamsAreVolumetricForVolumetricFlavors) {
@@ -30,10 +26,10 @@ TEST(OutputParams, ExportParamsAreVolumetricForVolumetricFlavors) {
 }
 
 TEST(OutputParams, ExtruderVolumesFromFilamentLengthOrVolume) {
-    const Scene scene = twoTrains("RepRap (Marlin/Sprinter)");
+    const ResolvedMachine machine = twoTrains("RepRap (Marlin/Sprinter)");
     PrintSummary summary;
     summary.filament_per_extruder = {1000.0, 0.0};
-    describeExtruders(scene, false, summary);
+    describeExtruders(machine, false, summary);
     ASSERT_EQ(summary.extruders.size(), 2U);
     EXPECT_DOUBLE_EQ(summary.extruders[0].volume_used_mm3, 1000.0 * std::numbers::pi * 0.875 * 0.875);
     EXPECT_TRUE(summary.extruders[0].used);
@@ -42,7 +38,7 @@ TEST(OutputParams, ExtruderVolumesFromFilamentLengthOrVolume) {
 
     PrintSummary volumetric;
     volumetric.filament_per_extruder = {0.0, 2405.5};
-    describeExtruders(scene, true, volumetric);
+    describeExtruders(machine, true, volumetric);
     EXPECT_EQ(volumetric.extruders[1].volume_used_mm3, 2405.5);
 }
 

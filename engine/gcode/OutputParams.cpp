@@ -1,4 +1,4 @@
-#include "pipeline/OutputParams.h"
+#include "gcode/OutputParams.h"
 
 #include <algorithm>
 #include <numbers>
@@ -27,9 +27,9 @@ Kinematics kinematicsOf(const Settings& g) {
     return k;
 }
 
-ExportParams exportParams(const Scene& scene) {
-    const Settings& global = scene.machine.global;
-    const Settings& e0 = scene.machine.extruders.front();
+ExportParams exportParams(const ResolvedMachine& machine) {
+    const Settings& global = machine.global;
+    const Settings& e0 = machine.extruders.front();
     ExportParams p;
     p.flavor = flavorOf(global.text(key::machine_gcode_flavor));  // the one read of the flavor
     p.filament_diameter_mm = e0.millimetres(key::material_diameter);
@@ -43,7 +43,7 @@ ExportParams exportParams(const Scene& scene) {
     p.retraction_extra_prime_mm3 = e0.real(key::retraction_extra_prime_amount);
     p.z_hop_speed_mm_s = e0.velocityMmPerS(key::speed_z_hop);
     p.firmware_retract = e0.boolean(key::machine_firmware_retract);
-    p.temperatures = temperatureCommandParams(scene);
+    p.temperatures = temperatureCommandParams(machine);
     p.fan_number = static_cast<int>(e0.integer(key::machine_extruder_cooling_fan_number));
     p.kinematics = kinematicsOf(global);
     p.mixing = parseMixingOutput(global);
@@ -53,12 +53,12 @@ ExportParams exportParams(const Scene& scene) {
     return p;
 }
 
-TemperatureCommandParams temperatureCommandParams(const Scene& scene) {
-    const Settings& global = scene.machine.global;
+TemperatureCommandParams temperatureCommandParams(const ResolvedMachine& machine) {
+    const Settings& global = machine.global;
     TemperatureCommandParams t;
     t.share_heater = global.boolean(key::machine_extruders_share_heater);
     t.always_write_active_tool = global.boolean(key::machine_always_write_active_tool);
-    for (const Settings& e : scene.machine.extruders)
+    for (const Settings& e : machine.extruders)
         t.controlled.push_back(e.boolean(key::machine_nozzle_temp_enabled));
     return t;
 }
@@ -109,13 +109,13 @@ void switchParams(const Settings& e, ExtruderOutput& out) {
     out.prime = primeTrain(e);
 }
 
-PlanWriterParams writerParams(const Scene& scene) {
-    const Settings& global = scene.machine.global;
+PlanWriterParams writerParams(const ResolvedMachine& machine) {
+    const Settings& global = machine.global;
     PlanWriterParams writer;
     writer.layer_change_speed_mm_s = global.velocityMmPerS(key::speed_z_hop);
     const bool offset_coords = global.boolean(key::machine_use_extruder_offset_to_offset_coords);
-    for (std::size_t i = 0; i < scene.machine.extruders.size(); ++i) {
-        const Settings& e = scene.machine.extruders[i];
+    for (std::size_t i = 0; i < machine.extruders.size(); ++i) {
+        const Settings& e = machine.extruders[i];
         ExtruderOutput out;
         out.change.extruder = static_cast<int>(i);
         out.change.filament_diameter_mm = e.millimetres(key::material_diameter);
@@ -137,14 +137,13 @@ PlanWriterParams writerParams(const Scene& scene) {
     return writer;
 }
 
-void describeExtruders(const Scene& scene, bool volumetric, PrintSummary& summary) {
-    const Settings& global = scene.machine.global;
+void describeExtruders(const ResolvedMachine& machine, bool volumetric, PrintSummary& summary) {
+    const Settings& global = machine.global;
     summary.machine_name = global.text(key::machine_name);
     summary.build_plate_type = global.text(key::machine_buildplate_type);
     summary.build_plate_temperature_c = global.temperatureCelsius(key::material_bed_temperature_layer_0);
-    summary.print_groups = static_cast<int>(scene.groups.size());
-    for (std::size_t i = 0; i < scene.machine.extruders.size(); ++i) {
-        const Settings& e = scene.machine.extruders[i];
+    for (std::size_t i = 0; i < machine.extruders.size(); ++i) {
+        const Settings& e = machine.extruders[i];
         ExtruderHeader h;
         // As CuraEngine: the first extruder starts at its first-layer temperature, the others at standby.
         h.initial_temperature_c = i == 0 ? e.temperatureCelsius(key::material_print_temperature_layer_0)
