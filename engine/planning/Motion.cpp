@@ -1,8 +1,6 @@
 #include "planning/Motion.h"
 
 #include <algorithm>
-#include <map>
-#include <string>
 
 #include "toolpaths/core/FeatureStyle.h"
 
