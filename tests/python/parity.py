@@ -108,9 +108,11 @@ SKIP_KEYS = {
 # Scenes: a printer, its models and the settings flipped on it.
 
 class SingleScene:
-    """The Ender-3 (one extruder) with MODEL: every flippable fdmprinter / fdmextruder setting."""
-    name = "ender3"
+    """The Ender-3 (one extruder) with one model: every flippable fdmprinter / fdmextruder setting."""
     contexts = CONTEXTS
+
+    def __init__(self, name, model):
+        self.name, self.model = name, model
 
     def resolve(self, settings):
         """(global, extruder 0) resolved with SETTINGS as the user's global values."""
@@ -118,10 +120,10 @@ class SingleScene:
 
     def slice_args(self, settings):
         g, e = sbs.resolve(settings)
-        return [*sbs.slice_args(g, e), "-l", sbs.model_path(MODEL)]
+        return [*sbs.slice_args(g, e), "-l", sbs.model_path(self.model)]
 
     def model_paths(self):
-        return [sbs.model_path(MODEL)]
+        return [sbs.model_path(self.model)]
 
     def keys(self):
         return [k for k, node in definitions().items()
@@ -238,9 +240,12 @@ def _machine_enabled(machine):
     return found
 
 
-SINGLE = SingleScene()
+SINGLE = SingleScene("ender3", MODEL)
+# The same sweep on models of other character (side_by_side.GENERATED): wide overhangs, bridges and support
+# standing on the model (shelf); thin walls, a wedge, pins, a small hole and seven parts (slivers).
+SINGLES = (SINGLE, SingleScene("ender3_shelf", "shelf"), SingleScene("ender3_slivers", "slivers"))
 DUAL = DualScene()
-SCENES = {scene.name: scene for scene in (SINGLE, DUAL)}
+SCENES = {scene.name: scene for scene in (*SINGLES, DUAL)}
 
 
 def load_not_honoured():

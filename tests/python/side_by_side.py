@@ -39,7 +39,7 @@ atexit.register(shutil.rmtree, _TMP, True)
 _MEMO = {}
 
 
-GENERATED = ("tube", "tee", "parity", "dual_a", "dual_b", "hook", "pin")
+GENERATED = ("tube", "tee", "parity", "shelf", "slivers", "dual_a", "dual_b", "hook", "pin")
 # Parts of one two-extruder scene, made in the scene's frame (kept where they are, not centred one by one).
 PLACED = ("dual_a", "dual_b")
 
@@ -53,6 +53,10 @@ def _make(name):
         return trimesh.creation.annulus(r_min=6.0, r_max=12.0, height=15.0, sections=128)
     if name == "parity":
         return _parity_scene(shapely, trimesh)
+    if name == "shelf":
+        return _shelf(shapely, trimesh)
+    if name == "slivers":
+        return _slivers(shapely, trimesh)
     if name == "hook":
         return _hook(trimesh)
     if name == "pin":
@@ -79,6 +83,53 @@ def _parity_scene(shapely, trimesh):
     tube = trimesh.creation.annulus(r_min=2.0, r_max=5.0, height=8.0, sections=64)
     tube.apply_translation([8, -8, 4.0])
     return trimesh.util.concatenate([bridge, fin, tube])
+
+
+def _side_profile(shapely, trimesh, points, depth):
+    """POINTS (x, z) extruded DEPTH mm along y, centred on y = 0."""
+    body = trimesh.creation.extrude_polygon(shapely.Polygon(points), depth)
+    body.apply_transform(trimesh.transformations.rotation_matrix(math.pi / 2, [1, 0, 0]))
+    body.apply_translation([0, depth / 2, 0])
+    return body
+
+
+def _shelf(shapely, trimesh):
+    """parity.py's second model, a shelf 47 x 24 x 14 mm that needs support under wide overhangs: a 28 mm slab
+    (2 mm) carrying two pillars under a 2 mm deck; the deck bridges 20 mm between the pillars over the slab
+    (support that stands on the model: support bottoms), runs on 12 mm beyond the right pillar over the bed
+    (support from the bed) and carries on its left a 60-degree slope hanging 7 mm out (an overhang to support,
+    not a bridge)."""
+    slab = trimesh.creation.box(extents=[28.0, 24.0, 2.0])
+    slab.apply_translation([-6, 0, 1.0])
+    left = _side_profile(shapely, trimesh, [(-20, 2), (-16, 2), (-16, 12), (-27, 12), (-20, 8)], 24.0)
+    right = trimesh.creation.box(extents=[4.0, 24.0, 10.0])
+    right.apply_translation([6, 0, 7.0])
+    deck = trimesh.creation.box(extents=[47.0, 24.0, 2.0])
+    deck.apply_translation([-3.5, 0, 13.0])
+    return trimesh.boolean.union([slab, left, right, deck], engine="manifold")
+
+
+def _slivers(shapely, trimesh):
+    """parity.py's third model, seven small parts on a 40 x 30 mm plot: thin walls of 0.8, 0.35 and 0.2 mm, a
+    wedge narrowing from 2 mm to 0.1 mm, pins of 1.5, 2.5 and 4 mm diameter and a 6 mm block with a 1.6 mm
+    hole: thin features, gaps, small parts and small holes (one body each, several islands a layer)."""
+    parts = []
+    for width, x, height in ((0.8, -14, 6.0), (0.35, -10, 5.0), (0.2, -6, 4.0)):
+        wall = trimesh.creation.box(extents=[width, 14.0, height])
+        wall.apply_translation([x, 4, height / 2])
+        parts.append(wall)
+    wedge = trimesh.creation.extrude_polygon(shapely.Polygon([(0, -1.0), (12, -0.05), (12, 0.05), (0, 1.0)]), 5.0)
+    wedge.apply_translation([-2, 8, 0])
+    parts.append(wedge)
+    for diameter, x in ((1.5, -12), (2.5, -6), (4.0, 2)):
+        pin = trimesh.creation.cylinder(radius=diameter / 2, height=8.0, sections=48)
+        pin.apply_translation([x, -9, 4.0])
+        parts.append(pin)
+    block = trimesh.creation.extrude_polygon(
+        shapely.Polygon([(0, 0), (6, 0), (6, 6), (0, 6)], [shapely.Point(3, 3).buffer(0.8, 16).exterior.coords]), 3.0)
+    block.apply_translation([10, -12, 0])
+    parts.append(block)
+    return trimesh.util.concatenate(parts)
 
 
 def _hook(trimesh):
