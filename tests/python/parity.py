@@ -13,16 +13,24 @@ What is compared
   own `enabled` formula is true, so sub-settings are flipped with their structure switched on.
 
 Verdicts (verdict()): compared on G-code signatures (signature()), not on bytes:
-  cura-unchanged      CuraEngine's G-code does not change: nothing to match (reported, not asserted).
-  honoured            MixEngine's G-code changes too, and in the same direction wherever CuraEngine's
-                      changed clearly: filament, extruded length, layer count; travel length and
-                      retractions for travel settings, mean extrusion speed for speed and cooling
-                      settings (elsewhere they follow path order more than the setting); the G-code
-                      commands and ;TYPE: features CuraEngine adds or drops;
-                      the temperature commands (M104/M109/M140/M190/M141/M191 with their values) it adds.
+  cura-unchanged      CuraEngine's G-code does not change, and MixEngine's changes no figure clearly and no
+                      ;TYPE: (otherwise not honoured: MixEngine changes where CuraEngine does not).
+  honoured            MixEngine's G-code changes too, and wherever CuraEngine's changed clearly in the same
+                      direction and by a size within SIZE_BAND (1/3 to 3 times) of CuraEngine's change:
+                      filament, extruded length, layer count; travel length and retractions for travel
+                      settings, mean extrusion speed for speed and cooling settings (elsewhere they follow
+                      path order more than the setting); the G-code commands and ;TYPE: features CuraEngine
+                      adds or drops; the temperature commands (M104/M109/M140/M190/M141/M191 with their
+                      values) it adds; and the speed (F), fan (M106 S), acceleration (M204) and jerk (M205)
+                      values it starts or stops writing, where a setting gives that value (given_values:
+                      the continuous values of a slowed-down layer follow each engine's time estimate).
   not honoured: ...   otherwise, with the first reason.
+Distinctness (enum_substitutions): two options of an enum setting that CuraEngine prints differently must
+print differently in MixEngine (no option is quietly printed as another).
 
-Scenes (SCENES): "ender3", the Ender-3 with MODEL, every setting; "s5_dual", the Ultimaker S5 with one part per
+Scenes (SCENES): "ender3", the Ender-3 with MODEL, every setting, and the same on two more models (SINGLES:
+"ender3_shelf", wide overhangs and support standing on the model; "ender3_slivers", thin features and seven
+parts); "s5_dual", the Ultimaker S5 with one part per
 extruder and only the settings that matter with two extruders (DualScene). `python parity.py --scene s5_dual
 [--explain key=value ...]` runs or explains that scene. In the two-extruder scene only temperature commands with a
 value some setting gives are compared (verdict's set_temperatures): the standby temperatures CuraEngine computes
@@ -84,6 +92,33 @@ CONTEXTS = [
     {"wireframe_enabled": "True"},
     {"prime_blob_enable": "True"},
     {"cool_fan_enabled": "True", "cool_min_layer_time_fan_speed_max": "20"},
+    # issue 28: contexts that switch on the settings no context above shows
+    {"roofing_layer_count": "1"},
+    {"infill_pattern": "lightning"},
+    {"infill_pattern": "cross_3d"},
+    {"infill_pattern": "concentric"},
+    {"top_bottom_pattern": "concentric"},
+    {"infill_support_enabled": "True"},
+    {"speed_equalize_flow_enabled": "True"},
+    {"wall_min_flow": "20"},
+    {"acceleration_enabled": "True", "ironing_enabled": "True"},
+    {"jerk_enabled": "True", "ironing_enabled": "True"},
+    {"acceleration_enabled": "True", "roofing_layer_count": "1"},
+    {"jerk_enabled": "True", "roofing_layer_count": "1"},
+    {"acceleration_enabled": "True", "support_enable": "True", "support_interface_enable": "True"},
+    {"jerk_enabled": "True", "support_enable": "True", "support_interface_enable": "True"},
+    {"adhesion_type": "raft", "acceleration_enabled": "True"},
+    {"adhesion_type": "raft", "jerk_enabled": "True"},
+    {"support_enable": "True", "support_pattern": "lines"},
+    {"support_enable": "True", "support_pattern": "cross"},
+    {"support_enable": "True", "support_skip_some_zags": "True"},
+    {"support_enable": "True", "support_xy_overrides_z": "z_overrides_xy"},
+    {"support_enable": "True", "gradual_support_infill_steps": "2"},
+    {"support_enable": "True", "support_fan_enable": "True"},
+    {"adhesion_type": "brim", "support_enable": "True"},
+    {"carve_multiple_volumes": "True"},
+    {"clean_between_layers": "True", "wipe_hop_enable": "True"},
+    {"wireframe_enabled": "True", "wireframe_strategy": "knot"},
 ]
 
 # Not flipped: the machine's identity and shape of the scene (extruder count, build volume, head shape,
@@ -156,6 +191,7 @@ class DualScene:
         {"ooze_shield_enabled": "True"},
         {"prime_blob_enable": "True"},
         {"machine_extruders_share_nozzle": "True"},
+        {"retraction_hop_enabled": "True"},
     ]
     key_contexts = {}
     # Values that mean something on this bed and print (the generic flips would put the tower off the bed
@@ -408,6 +444,8 @@ def context_for(key, scene):
 
 _WORD = re.compile(r"([A-Z])(-?[0-9.]+)")
 TEMPERATURE_COMMANDS = ("M104", "M109", "M140", "M190", "M141", "M191")
+# The values compared for speed, fan, acceleration and jerk (besides F on every move): command -> words.
+VALUE_WORDS = {"M106": ("S",), "M204": ("S", "P", "T"), "M205": ("X", "Y", "Z", "E")}
 
 
 class _Reader:
@@ -416,6 +454,7 @@ class _Reader:
         self.s = {"filament": 0.0, "extrude_len": 0.0, "travel_len": 0.0, "retractions": 0, "layers": 0,
                   "speed_x_len": 0.0}
         self.commands, self.types, self.temps = Counter(), Counter(), set()
+        self.values = set()  # VALUE_WORDS as written ("F1500", "M106 S127.5", "M204 S500", "M205 X8")
         self.f_last = 0.0
 
     def comment(self, line):
@@ -441,6 +480,7 @@ class _Reader:
             self.s["travel_len"] += dist
         if "F" in words:
             self.f_last = words["F"]
+            self.values.add(f"F{words['F']:g}")
         self.x, self.y = x, y
 
     def command(self, code, words, line):
@@ -451,6 +491,9 @@ class _Reader:
             self.e = words["E"]
         elif code == "G10":
             self.s["retractions"] += 1
+        for letter in VALUE_WORDS.get(code, ()):
+            if letter in words:
+                self.values.add(f"{code} {letter}{words[letter]:g}")
         if code in TEMPERATURE_COMMANDS:
             self.temps.add(f"{code} S{float(words.get('S', words.get('R', 0))):g}"
                            + (f" T{int(words['T'])}" if "T" in words else ""))
@@ -483,7 +526,7 @@ def signature(path):
     figures = {k: s[k] for k in ("filament", "extrude_len", "travel_len", "retractions", "layers")}
     figures["mean_speed"] = s["speed_x_len"] / s["extrude_len"] if s["extrude_len"] else 0.0
     return {"digest": digest.hexdigest(), "figures": figures, "commands": sorted(reader.commands),
-            "types": sorted(reader.types), "temps": sorted(reader.temps)}
+            "types": sorted(reader.types), "temps": sorted(reader.temps), "values": sorted(reader.values)}
 
 
 # (relative threshold, absolute threshold): a change counts as clear when it passes both.
@@ -511,41 +554,130 @@ def _only_set_temperatures(sig, set_temperatures):
     return dict(sig, temps=kept)
 
 
-def verdict(cura_base, cura_flip, mix_base, mix_flip, category=None, set_temperatures=None):
-    cura_base, cura_flip, mix_base, mix_flip = (_only_set_temperatures(sig, set_temperatures)
-                                                for sig in (cura_base, cura_flip, mix_base, mix_flip))
-    if cura_flip["digest"] == cura_base["digest"]:
-        return "cura-unchanged"
-    if mix_flip["digest"] == mix_base["digest"]:
-        return "not honoured: MixEngine's G-code does not change"
-    for metric in THRESHOLDS:
-        if metric in CATEGORY_METRICS and category is not None and category not in CATEGORY_METRICS[metric]:
-            continue
-        dc = cura_flip["figures"][metric] - cura_base["figures"][metric]
+# MixEngine's change of a figure is the same size as CuraEngine's when it lies in SIZE_BAND times CuraEngine's
+# (or the two differ by less than a clear change, THRESHOLDS).
+SIZE_BAND = (1 / 3, 3.0)
+
+
+def _metrics(category):
+    """The figures compared for a setting of CATEGORY (all of them when the category is not known)."""
+    return [m for m in THRESHOLDS
+            if m not in CATEGORY_METRICS or category is None or category in CATEGORY_METRICS[m]]
+
+
+def _figure_failure(cura_base, cura_flip, mix_base, mix_flip, category):
+    """The first figure CuraEngine changes clearly that MixEngine does not change the same way by a size
+    within SIZE_BAND; None when every one does."""
+    for metric in _metrics(category):
+        base = cura_base["figures"][metric]
+        dc = cura_flip["figures"][metric] - base
         dm = mix_flip["figures"][metric] - mix_base["figures"][metric]
-        if _clear(dc, cura_base["figures"][metric], metric) and dc * dm <= 0:
-            return f"not honoured: {metric} CuraEngine {dc:+.4g}, MixEngine {dm:+.4g}"
+        if not _clear(dc, base, metric):
+            continue
+        if dc * dm <= 0:
+            return f"{metric} CuraEngine {dc:+.4g}, MixEngine {dm:+.4g}"
+        ratio = dm / dc
+        if not SIZE_BAND[0] <= ratio <= SIZE_BAND[1] and _clear(dm - dc, base, metric):
+            return f"{metric} size CuraEngine {dc:+.4g}, MixEngine {dm:+.4g} (x{ratio:.2g}, outside 1/3..3)"
+    return None
+
+
+def _mix_only_change(mix_base, mix_flip, category):
+    """What MixEngine changes clearly (a figure, a ;TYPE: added or dropped) when CuraEngine's G-code does not
+    change at all; None when nothing."""
+    for metric in _metrics(category):
+        base = mix_base["figures"][metric]
+        dm = mix_flip["figures"][metric] - base
+        if _clear(dm, base, metric):
+            return f"{metric} MixEngine {dm:+.4g} where CuraEngine's G-code does not change"
+    changed = set(mix_flip["types"]) ^ set(mix_base["types"])
+    if changed:
+        return f"MixEngine's features {sorted(changed)[:4]} change where CuraEngine's G-code does not"
+    return None
+
+
+def given_values(*scopes):
+    """The written forms of every number in the resolved SCOPES ({key: text}): F (mm/min, one decimal),
+    M106 S (0..255, one decimal), M204 (whole mm/s²) and M205 (two decimals), as CuraEngine writes them."""
+    numbers = set()
+    for scope in scopes:
+        for text in scope.values():
+            try:
+                numbers.add(float(text))
+            except (TypeError, ValueError):
+                continue
+    return {"F": {round(x * 60, 1) for x in numbers}, "M106": {round(x * 2.55, 1) for x in numbers},
+            "M204": {float(round(x)) for x in numbers}, "M205": {round(x, 2) for x in numbers}}
+
+
+def _is_given(written, given):
+    """WRITTEN ("F1500", "M204 S500") is a value some setting gives (given_values)."""
+    code, _, word = written.partition(" ")
+    if not word:
+        code, word = "F", written
+    digits = {"F": 1, "M106": 1, "M204": 0, "M205": 2}[code]
+    return round(float(word.lstrip("FSPTXYZE")), digits) in given[code]
+
+
+def _value_failure(cura_base, cura_flip, mix_base, mix_flip, given):
+    """A speed (F), fan (M106), acceleration (M204) or jerk (M205) value a setting gives that CuraEngine
+    starts writing and MixEngine does not, or stops writing while MixEngine keeps it; None when none."""
+    if given is None:
+        return None
+    before, after = set(cura_base.get("values", ())), set(cura_flip.get("values", ()))
+    mix_before, mix_after = set(mix_base.get("values", ())), set(mix_flip.get("values", ()))
+    missing = sorted(v for v in after - before - mix_after if _is_given(v, given))
+    if missing:
+        return f"CuraEngine writes {missing[:4]}, MixEngine does not"
+    kept = sorted(v for v in (before - after) & mix_before & mix_after if _is_given(v, given))
+    if kept:
+        return f"CuraEngine stops writing {kept[:4]}, MixEngine does not"
+    return None
+
+
+def _feature_failure(cura_base, cura_flip, mix_flip):
+    """A G-code command, ;TYPE: or temperature command CuraEngine adds that MixEngine lacks, or drops that
+    MixEngine keeps; None when none."""
     for field in ("commands", "types", "temps"):
         added = set(cura_flip[field]) - set(cura_base[field])
         dropped = set(cura_base[field]) - set(cura_flip[field])
         missing = added - set(mix_flip[field])
         kept = (dropped & set(mix_flip[field])) if field != "temps" else set()
         if missing:
-            return f"not honoured: CuraEngine adds {field} {sorted(missing)[:4]}"
+            return f"CuraEngine adds {field} {sorted(missing)[:4]}"
         if kept:
-            return f"not honoured: CuraEngine drops {field} {sorted(kept)[:4]}"
-    return "honoured"
+            return f"CuraEngine drops {field} {sorted(kept)[:4]}"
+    return None
+
+
+def verdict(cura_base, cura_flip, mix_base, mix_flip, category=None, set_temperatures=None, given=None):
+    """"honoured", "cura-unchanged" or "not honoured: <the first reason>" for one changed setting: the four
+    signatures, the setting's category (CATEGORY_METRICS), the temperatures compared (None: all) and the
+    written values the resolved settings give (given_values; None: values are not compared)."""
+    cura_base, cura_flip, mix_base, mix_flip = (_only_set_temperatures(sig, set_temperatures)
+                                                for sig in (cura_base, cura_flip, mix_base, mix_flip))
+    if cura_flip["digest"] == cura_base["digest"]:
+        extra = _mix_only_change(mix_base, mix_flip, category)
+        return f"not honoured: {extra}" if extra else "cura-unchanged"
+    if mix_flip["digest"] == mix_base["digest"]:
+        return "not honoured: MixEngine's G-code does not change"
+    failure = (_figure_failure(cura_base, cura_flip, mix_base, mix_flip, category)
+               or _feature_failure(cura_base, cura_flip, mix_flip)
+               or _value_failure(cura_base, cura_flip, mix_base, mix_flip, given))
+    return f"not honoured: {failure}" if failure else "honoured"
 
 
 # ---------------------------------------------------------------------------------------------------------
 # Running one flip.
 
 CATEGORIES = _categories()
+SIGNATURE_VERSION = 2  # 2: signatures carry the written values (issue 28)
 SETTING_TYPES = {key: node.get("type") for key, node in definitions().items()}
 
 def _cache_path(kind, args):
     stat = os.stat(helpers.CURA_BIN)
-    key = hashlib.sha256(json.dumps([kind, stat.st_size, int(stat.st_mtime), *map(str, args)]).encode())
+    key = hashlib.sha256(json.dumps([kind, SIGNATURE_VERSION, stat.st_size, int(stat.st_mtime),
+                                     *map(str, args)]).encode())
     return CACHE / f"{key.hexdigest()[:24]}.json"
 
 
@@ -592,19 +724,56 @@ def _mix_signature(settings, scene):
 
 def judge(context, key, value, scene=None):
     """The verdict for setting KEY=VALUE on top of CONTEXT (in SCENE, the single-extruder one by default)."""
+    return judge_outcome(context, key, value, scene)["verdict"]
+
+
+def judge_outcome(context, key, value, scene=None):
+    """{"verdict", "digests"}: the verdict for KEY=VALUE on CONTEXT in SCENE and the G-code digests of the four
+    prints (CuraEngine's and MixEngine's, base and changed; empty when a print failed), which
+    enum_substitutions compares across a setting's options."""
     scene = scene or SINGLE
     flipped = dict(context, **{key: value})
     try:
         cb, cf = cura_signature(context, scene), cura_signature(flipped, scene)
         mb, mf = mix_signature(context, scene), mix_signature(flipped, scene)
     except RuntimeError as err:  # mixengine settings refused the value
-        return f"error: {str(err)[-200:]}"
+        return {"verdict": f"error: {str(err)[-200:]}", "digests": {}}
+    digests = {name: sig.get("digest") for name, sig in
+               (("cura_base", cb), ("cura", cf), ("mix_base", mb), ("mix", mf))}
     if "error" in cf:  # CuraEngine itself cannot print it (e.g. an arithmetic exception): nothing to match
-        return f"cura-failed: {cf['error'].strip().splitlines()[-1:] if cf['error'] else ''}"
+        return {"verdict": f"cura-failed: {cf['error'].strip().splitlines()[-1:] if cf['error'] else ''}",
+                "digests": {}}
     for name, sig in (("CuraEngine base", cb), ("MixEngine", mf), ("MixEngine base", mb)):
         if "error" in sig:
-            return f"error: {name} failed: {sig['error'].strip().splitlines()[-1:] if sig['error'] else ''}"
-    return verdict(cb, cf, mb, mf, CATEGORIES.get(key), scene.set_temperatures(context, flipped))
+            text = sig["error"].strip().splitlines()[-1:] if sig["error"] else ""
+            return {"verdict": f"error: {name} failed: {text}", "digests": {}}
+    given = given_values(*scene.resolve(context), *scene.resolve(flipped))
+    text = verdict(cb, cf, mb, mf, CATEGORIES.get(key), scene.set_temperatures(context, flipped), given)
+    return {"verdict": text, "digests": digests}
+
+
+def enum_substitutions(outcomes, current):
+    """["a prints as b"]: pairs of a setting's options that CuraEngine prints differently and MixEngine the same.
+    OUTCOMES: [(value, digests)] of one enum setting's flips in one context (judge_outcome), CURRENT the value
+    the context resolves it to (whose prints are the flips' bases)."""
+    prints = {}
+    for value, digests in outcomes:
+        if digests:
+            prints[current] = (digests["cura_base"], digests["mix_base"])
+            prints[value] = (digests["cura"], digests["mix"])
+    found = []
+    options = sorted(prints)
+    for i, a in enumerate(options):
+        for b in options[i + 1:]:
+            if prints[a][0] != prints[b][0] and prints[a][1] == prints[b][1]:
+                found.append(f"{a} prints as {b}")
+    return found
+
+
+def current_value(key, context, scene):
+    """KEY's resolved value (text) in CONTEXT of SCENE."""
+    g, e = scene.resolve(context)
+    return e.get(key, g.get(key))
 
 
 def all_flips(keys=None, scene=None):
@@ -640,11 +809,13 @@ def run_all(workers=2, progress=None, keys=None, scene=None):
         list(pool.map(lambda c: mix_signature(c, scene), contexts))
     with ThreadPoolExecutor(max_workers=workers) as pool:
         results = {}
-        futures = {pool.submit(judge, c, k, v, scene): (k, v, c) for k, v, c in todo}
+        futures = {pool.submit(judge_outcome, c, k, v, scene): (k, v, c) for k, v, c in todo}
         for done, future in enumerate(futures, 1):
             key, value, context = futures[future]
+            outcome = future.result()
             results[f"{key}={value}"] = {"key": key, "value": value, "context": context,
-                                         "verdict": future.result()}
+                                         "verdict": outcome["verdict"], "digests": outcome["digests"],
+                                         "current": current_value(key, context, scene)}
             if progress:
                 progress(done, len(futures), key, value, results[f"{key}={value}"]["verdict"])
     return results

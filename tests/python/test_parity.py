@@ -23,7 +23,9 @@ import parity
 _DEFS = parity.definitions()
 KEYS = sorted(parity.SINGLE.keys())
 DUAL_KEYS = sorted(parity.DUAL.keys())
+ENUM_KEYS = [k for k in KEYS if _DEFS[k].get("type") == "enum"]
 LISTED = parity.load_not_honoured()
+SINGLE_TESTS = ("test_setting_acts_as_in_curaengine", "test_enum_options_print_differently")
 
 
 def _param(key, scene):
@@ -35,37 +37,46 @@ def _param(key, scene):
     return key
 
 
-def _verdicts(scene, test_name, request, report):
-    """{key: [(value, verdict)]} for the TEST_NAME tests selected in this run, judged two at a time."""
-    selected = {item.callspec.params["key"] for item in request.session.items
-                if item.originalname == test_name}
-    results = parity.run_all(keys=selected, scene=scene)
+def _selected(request, test_names):
+    """The keys of the TEST_NAMES tests selected in this run (None: every key, when none is selected)."""
+    keys = {item.callspec.params["key"] for item in request.session.items
+            if item.originalname in test_names and hasattr(item, "callspec")}
+    return keys or None
+
+
+def _sweep(scenes, keys, report):
+    """{key: [outcome + "scene"]} of every changed value of KEYS on SCENES, judged two at a time."""
     by_key = {}
-    for outcome in results.values():
-        by_key.setdefault(outcome["key"], []).append((outcome["value"], outcome["verdict"]))
-    counts = {}
-    for outcome in results.values():
-        kind = outcome["verdict"].split(":")[0]
-        counts[kind] = counts.get(kind, 0) + 1
-    report(f"parity ({scene.name}): {len(results)} changed values of {len(selected)} settings: " +
-           ", ".join(f"{n} {kind}" for kind, n in sorted(counts.items())))
+    for scene in scenes:
+        results = parity.run_all(keys=keys, scene=scene)
+        counts = {}
+        for outcome in results.values():
+            kind = outcome["verdict"].split(":")[0]
+            counts[kind] = counts.get(kind, 0) + 1
+            by_key.setdefault(outcome["key"], []).append(dict(outcome, scene=scene.name))
+        report(f"parity ({scene.name}): {len(results)} changed values of {len({o['key'] for o in results.values()})} "
+               f"settings: " + ", ".join(f"{n} {kind}" for kind, n in sorted(counts.items())))
     return by_key
 
 
 @pytest.fixture(scope="session")
 def verdicts(engine, request, report):
-    """The verdicts of the single-extruder scene (the Ender-3)."""
-    return _verdicts(parity.SINGLE, "test_setting_acts_as_in_curaengine", request, report)
+    """The outcomes of the single-extruder scenes (the Ender-3 with each of parity.SINGLES' models)."""
+    return _sweep(parity.SINGLES, _selected(request, SINGLE_TESTS), report)
 
 
 @pytest.fixture(scope="session")
 def dual_verdicts(engine, request, report):
-    """The verdicts of the two-extruder scene (the Ultimaker S5, one part per extruder)."""
-    return _verdicts(parity.DUAL, "test_setting_acts_as_in_curaengine_with_two_extruders", request, report)
+    """The outcomes of the two-extruder scene (the Ultimaker S5, one part per extruder)."""
+    return _sweep([parity.DUAL], _selected(request, ("test_setting_acts_as_in_curaengine_with_two_extruders",)),
+                  report)
 
 
 @pytest.mark.parametrize("key", [_param(k, parity.SINGLE) for k in KEYS])
 def test_setting_acts_as_in_curaengine(verdicts, key):
+    """KEY changes MixEngine's print as it changes CuraEngine's on each of the three models: in the same
+    direction and by a size within 1/3..3 times CuraEngine's, with the commands, features and speed / fan /
+    acceleration / jerk values CuraEngine writes, and not at all where CuraEngine's print does not change."""
     _check(verdicts, key, parity.SINGLE)
 
 
@@ -76,21 +87,75 @@ def test_setting_acts_as_in_curaengine_with_two_extruders(dual_verdicts, key):
     _check(dual_verdicts, key, parity.DUAL)
 
 
+@pytest.mark.parametrize("key", [_param(k, parity.SINGLE) for k in ENUM_KEYS])
+def test_enum_options_print_differently(verdicts, key):
+    """No option is substituted by another: two options of KEY that CuraEngine prints differently print
+    differently in MixEngine too (on every model; parity.enum_substitutions)."""
+    found = []
+    for scene in parity.SINGLES:
+        outcomes = [o for o in verdicts.get(key, []) if o["scene"] == scene.name]
+        if outcomes:
+            pairs = parity.enum_substitutions([(o["value"], o["digests"]) for o in outcomes], outcomes[0]["current"])
+            found += [f"{scene.name}: {pair}" for pair in pairs]
+    assert not found, f"{key}: " + "; ".join(found)
+
+
 def _check(verdicts, key, scene):
     outcomes = verdicts.get(key, [])
-    judged = [(value, verdict) for value, verdict in outcomes
-              if not verdict.startswith(("cura-unchanged", "cura-failed"))]
+    judged = [o for o in outcomes if not o["verdict"].startswith(("cura-unchanged", "cura-failed"))]
     if not judged:
-        pytest.skip("no context enables it, or CuraEngine's G-code does not change with it")
+        pytest.skip(f"not judged: {unjudged_reason(key, outcomes, scene)}")
     applies = key in LISTED and (scene is parity.DUAL or not LISTED[key][2])
     listed_values = LISTED[key][0] if applies else ()
-    unexpected = [f"{key}={value}: {verdict}" for value, verdict in judged
-                  if verdict != "honoured" and (listed_values is None or value not in listed_values)]
+    unexpected = [f"{o['scene']}: {key}={o['value']}: {o['verdict']}" for o in judged
+                  if o["verdict"] != "honoured" and (listed_values is None or o["value"] not in listed_values)]
     assert not unexpected, "; ".join(unexpected)
     if listed_values:  # a per-value entry: the listed values must still be wrong, or leave the list
-        now_honoured = [value for value, verdict in judged if value in listed_values and verdict == "honoured"]
+        wrong = {o["value"] for o in judged if o["value"] in listed_values and o["verdict"] != "honoured"}
+        now_honoured = sorted({o["value"] for o in judged if o["value"] in listed_values} - wrong)
         assert not now_honoured, (f"{key}: {now_honoured} now act as in CuraEngine; remove them from "
                                   f"{parity.NOT_HONOURED.name}")
+
+
+def unjudged_reason(key, outcomes, scene):
+    """Why KEY got no verdict in SCENE: Cura never shows it, no context switches it on, no value to try,
+    or CuraEngine's G-code does not change with it (or CuraEngine fails with it)."""
+    node = _DEFS[key]
+    if str(node.get("enabled", True)).startswith("False") or " and False" in str(node.get("enabled")):
+        return "Cura never shows it (its enabled formula is False)"
+    if not outcomes:
+        if parity.context_for(key, scene) is None:
+            return "no context of the scene switches it on"
+        return f"no changed value to try for its type ({node.get('type')})"
+    if all(o["verdict"].startswith("cura-failed") for o in outcomes):
+        return "CuraEngine fails to slice every changed value"
+    scenes = sorted({o.get("scene", scene.name) for o in outcomes})
+    return f"CuraEngine's G-code does not change with it ({', '.join(scenes)})"
+
+
+def test_every_setting_is_judged_or_named(verdicts, dual_verdicts, report):
+    """Every setting Cura can show is judged in some scene, or named in the report with its reason; a setting
+    that no context of any scene switches on is a gap in parity.CONTEXTS and fails this test."""
+    unjudged = {}
+    for key in sorted(set(KEYS) | set(DUAL_KEYS)):
+        judged = [o for o in verdicts.get(key, []) + dual_verdicts.get(key, [])
+                  if not o["verdict"].startswith(("cura-unchanged", "cura-failed"))]
+        if judged:
+            continue
+        scene = parity.SINGLE if key in KEYS else parity.DUAL
+        reasons = {unjudged_reason(key, verdicts.get(key, []), parity.SINGLE) if key in KEYS else None,
+                   unjudged_reason(key, dual_verdicts.get(key, []), parity.DUAL) if key in DUAL_KEYS else None}
+        reasons.discard(None)
+        switched_on = [r for r in reasons if r != "no context of the scene switches it on"]
+        unjudged[key] = switched_on[0] if switched_on else unjudged_reason(key, [], scene)
+    by_reason = {}
+    for key, reason in unjudged.items():
+        by_reason.setdefault(reason, []).append(key)
+    report(f"parity: {len(unjudged)} of {len(set(KEYS) | set(DUAL_KEYS))} settings not judged:")
+    for reason, keys in sorted(by_reason.items()):
+        report(f"    {reason} ({len(keys)}): {', '.join(keys)}")
+    never_on = by_reason.get("no context of the scene switches it on", [])
+    assert not never_on, f"no context switches these on (add one to parity.CONTEXTS): {never_on}"
 
 
 def test_the_list_names_real_settings():
@@ -108,8 +173,44 @@ def test_the_verdict_can_fail():
     assert parity.verdict(base, more, base, base).startswith("not honoured: MixEngine's G-code does not change")
     assert parity.verdict(base, more, base, less).startswith("not honoured: filament")
     assert parity.verdict(base, more, base, more) == "honoured"
-    assert parity.verdict(base, base, base, more) == "cura-unchanged"
+    assert parity.verdict(base, base, base, base) == "cura-unchanged"
     assert "M104 S210" in parity.verdict(base, hotter, base, more)
+
+
+def test_the_verdict_judges_size_values_and_changes_cura_does_not_make():
+    """Size: MixEngine's change must lie within 1/3..3 times CuraEngine's; values: a speed CuraEngine starts
+    writing (F2400 = 40 mm/s, a setting's value) must be written by MixEngine too; a clear change where
+    CuraEngine's G-code stays the same is not honoured."""
+    base = {"digest": "a", "figures": dict.fromkeys(parity.THRESHOLDS, 100.0), "commands": ["G1"],
+            "types": ["FILL"], "temps": [], "values": ["F1500"]}
+
+    def changed(digest, filament, values=("F1500",)):
+        return dict(base, digest=digest, figures=dict(base["figures"], filament=filament), values=list(values))
+    assert parity.verdict(base, changed("b", 110), base, changed("c", 112)) == "honoured"
+    assert parity.verdict(base, changed("b", 110), base, changed("c", 104)) == "honoured"  # x0.4
+    assert "size" in parity.verdict(base, changed("b", 110), base, changed("c", 102))  # x0.2
+    assert "size" in parity.verdict(base, changed("b", 110), base, changed("c", 140))  # x4
+    assert parity.verdict(base, changed("b", 100.6), base, changed("c", 100.15)) == "honoured"  # x0.25 but 0.45 apart: no clear gap
+    given = parity.given_values({"speed_wall": "40", "speed_print": "25"})
+    faster = changed("b", 110, ("F1500", "F2400"))
+    assert parity.verdict(base, faster, base, changed("c", 110, ("F1500", "F2400")), given=given) == "honoured"
+    assert "F2400" in parity.verdict(base, faster, base, changed("c", 110, ("F1500", "F2700")), given=given)
+    assert parity.verdict(base, faster, base, changed("c", 110, ("F1500",)),
+                          given=parity.given_values({"speed_wall": "41"})) == "honoured"  # F2400 no setting's
+    assert parity.verdict(base, changed("b", 110, ()), base, changed("c", 110), given=given).endswith(
+        "CuraEngine stops writing ['F1500'], MixEngine does not")
+    assert parity.verdict(base, base, base, changed("c", 90)).startswith(
+        "not honoured: filament MixEngine -10 where CuraEngine's G-code does not change")
+    assert parity.verdict(base, base, base, changed("c", 100.1)) == "cura-unchanged"  # not a clear change
+
+
+def test_substituted_enum_options_are_found():
+    """Two options CuraEngine prints differently that MixEngine prints the same are named; options that both
+    engines print alike are not."""
+    outcomes = [("lines", {"cura_base": "c0", "cura": "c1", "mix_base": "m0", "mix": "m1"}),
+                ("lightning", {"cura_base": "c0", "cura": "c2", "mix_base": "m0", "mix": "m1"}),
+                ("cross", {"cura_base": "c0", "cura": "c1", "mix_base": "m0", "mix": "m1"})]
+    assert parity.enum_substitutions(outcomes, "grid") == ["cross prints as lightning", "lightning prints as lines"]
 
 
 def test_the_two_extruder_verdict_compares_set_temperatures_only():
