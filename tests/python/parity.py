@@ -866,8 +866,8 @@ def _reason(key, verdict_text):
 
 
 def list_from(results):
-    """not_honoured.json's "settings" rebuilt from a whole sweep, with the reasons above; a key is listed
-    whole when every judged value fails, else by value."""
+    """not_honoured.json's "settings" rebuilt from whole sweeps (one or more scenes' results merged), with the
+    reasons above; a key is listed whole when every judged value fails in every scene, else by value."""
     by_key = {}
     for outcome in results.values():
         if outcome["verdict"].startswith(("cura-unchanged", "cura-failed")):
@@ -882,16 +882,19 @@ def list_from(results):
         if len(failing) == len(by_key[key]) and SETTING_TYPES.get(key) != "enum":
             listed[key] = why
         else:
-            listed[key] = {"values": [o["value"] for o in failing], "why": why}
+            listed[key] = {"values": list(dict.fromkeys(o["value"] for o in failing)), "why": why}
     return listed
 
 
 if __name__ == "__main__":
     import sys
-    if len(sys.argv) > 2 and sys.argv[1] == "--write-list":
-        document = json.loads(NOT_HONOURED.read_text())  # a sweep of the single-extruder scene
+    if len(sys.argv) > 2 and sys.argv[1] == "--write-list":  # --write-list SWEEP.json...: the list rebuilt
+        document = json.loads(NOT_HONOURED.read_text())  # from sweeps of the single-extruder scenes
         kept = {k: e for k, e in document["settings"].items() if isinstance(e, dict) and e.get("multi_extruder_only")}
-        document["settings"] = dict(sorted({**list_from(json.loads(Path(sys.argv[2]).read_text())), **kept}.items()))
+        merged = {}  # one sweep per file (scene); a key fails when it fails in any of them
+        for nr, name in enumerate(sys.argv[2:]):
+            merged.update({f"{nr}:{k}": o for k, o in json.loads(Path(name).read_text()).items()})
+        document["settings"] = dict(sorted({**list_from(merged), **kept}.items()))
         NOT_HONOURED.write_text(json.dumps(document, indent=2) + "\n")
         print(f"{NOT_HONOURED}: {len(document['settings'])} settings")
         sys.exit(0)

@@ -1,20 +1,25 @@
-"""Issue 19: every setting Cura shows acts as CuraEngine 4.13's does, or is listed as not honoured yet.
+"""Issue 19, issue 28: every setting Cura shows acts as CuraEngine 4.13's does, or is listed as not honoured yet.
 
-For every flippable setting of fdmprinter / fdmextruder (parity.py: the Ender-3, 0.2 mm layers, a model with
-pillars, a bridge, overhangs, a thin fin and a tube), each changed value is sliced by both engines with the same
-resolved values, and MixEngine's print must change as CuraEngine's does (parity.verdict). The settings that do not
-yet are settings/mixengine/not_honoured.json — the same list the engine warns from — and each listed entry is a
-strict expected failure: when a listed setting starts to act, its test fails until the entry is removed, so the
-list can only shrink and cannot lie.
+For every flippable setting of fdmprinter / fdmextruder (parity.py: the Ender-3, 0.2 mm layers, on three models —
+the parity model with pillars, a bridge, overhangs, a thin fin and a tube; a shelf with wide overhangs and
+support standing on the model; seven thin parts), each changed value is sliced by both engines with the same
+resolved values, and MixEngine's print must change as CuraEngine's does (parity.verdict: direction, size within
+1/3..3 times CuraEngine's change, commands, features, temperatures and the speed / fan / acceleration / jerk
+values written; no clear change where CuraEngine's print stays the same). Every enum setting's options that
+CuraEngine prints differently must print differently in MixEngine (test_enum_options_print_differently). The
+settings that do not yet are settings/mixengine/not_honoured.json — the same list the engine warns from — and
+each listed entry is a strict expected failure: when a listed setting starts to act, its test fails until the
+entry is removed, so the list can only shrink and cannot lie.
 
-The same rule runs on a second scene, the Ultimaker S5 with one part per extruder (parity.DualScene), for the
+The same rule runs on a second printer, the Ultimaker S5 with one part per extruder (parity.DualScene), for the
 settings that matter with two extruders (test_setting_acts_as_in_curaengine_with_two_extruders). A key is listed
-when it is not honoured in either scene; an entry marked "multi_extruder_only" is expected to fail in the
+when it is not honoured in any scene; an entry marked "multi_extruder_only" is expected to fail in the
 two-extruder scene only.
 
-A setting whose change leaves CuraEngine's G-code as it was is skipped (nothing to match). CuraEngine's results
-are cached in ~/.cache/mixengine-compare/parity; a fresh run slices each changed value once with each engine,
-two at a time.
+A setting no scene can judge (Cura never shows it, CuraEngine's G-code does not change with it, it only
+matters with two extruders) is skipped with its reason, and test_every_setting_is_judged_or_named counts and
+names them all in the report; a setting no context switches on fails it. CuraEngine's results are cached in
+~/.cache/mixengine-compare/parity; a fresh run slices each changed value once with each engine, two at a time.
 """
 import pytest
 
