@@ -22,8 +22,9 @@ Verdicts (verdict()): compared on G-code signatures (signature()), not on bytes:
                       path order more than the setting); the G-code commands and ;TYPE: features CuraEngine
                       adds or drops; the temperature commands (M104/M109/M140/M190/M141/M191 with their
                       values) it adds; and the speed (F), fan (M106 S), acceleration (M204) and jerk (M205)
-                      values it starts or stops writing, where a setting gives that value (given_values:
-                      the continuous values of a slowed-down layer follow each engine's time estimate).
+                      values it starts or stops writing for a speed, fan, acceleration or jerk setting's
+                      new and old value (_value_failure; other values, such as those of a slowed-down layer,
+                      follow each engine's time estimate).
   not honoured: ...   otherwise, with the first reason.
 Distinctness (enum_substitutions): two options of an enum setting that CuraEngine prints differently must
 print differently in MixEngine (no option is quietly printed as another).
@@ -620,19 +621,26 @@ def _is_given(written, given):
 
 
 def _value_failure(cura_base, cura_flip, mix_base, mix_flip, given):
-    """A speed (F), fan (M106), acceleration (M204) or jerk (M205) value a setting gives that CuraEngine
-    starts writing and MixEngine does not, or stops writing while MixEngine keeps it; None when none."""
+    """For a speed, fan, acceleration or jerk setting, GIVEN = (written forms of its new value, of its old
+    value) (given_values): a form of the new value CuraEngine starts writing and MixEngine does not, or a form
+    of the old value CuraEngine stops writing while MixEngine keeps it; None when neither (or GIVEN is None)."""
     if given is None:
         return None
+    new, old = given
     before, after = set(cura_base.get("values", ())), set(cura_flip.get("values", ()))
     mix_before, mix_after = set(mix_base.get("values", ())), set(mix_flip.get("values", ()))
-    missing = sorted(v for v in after - before - mix_after if _is_given(v, given))
+    missing = sorted(v for v in after - before - mix_after if _is_given(v, new))
     if missing:
         return f"CuraEngine writes {missing[:4]}, MixEngine does not"
-    kept = sorted(v for v in (before - after) & mix_before & mix_after if _is_given(v, given))
+    kept = sorted(v for v in (before - after) & mix_before & mix_after if _is_given(v, old))
     if kept:
         return f"CuraEngine stops writing {kept[:4]}, MixEngine does not"
     return None
+
+
+def writes_values(key):
+    """KEY is a speed, fan, acceleration or jerk setting: its value is written as F, M106 S, M204 or M205."""
+    return any(word in key for word in ("speed", "acceleration", "jerk"))
 
 
 def _feature_failure(cura_base, cura_flip, mix_flip):
@@ -652,8 +660,9 @@ def _feature_failure(cura_base, cura_flip, mix_flip):
 
 def verdict(cura_base, cura_flip, mix_base, mix_flip, category=None, set_temperatures=None, given=None):
     """"honoured", "cura-unchanged" or "not honoured: <the first reason>" for one changed setting: the four
-    signatures, the setting's category (CATEGORY_METRICS), the temperatures compared (None: all) and the
-    written values the resolved settings give (given_values; None: values are not compared)."""
+    signatures, the setting's category (CATEGORY_METRICS), the temperatures compared (None: all) and, for a
+    speed, fan, acceleration or jerk setting, the written forms of its new and old values (_value_failure;
+    None: values are not compared)."""
     cura_base, cura_flip, mix_base, mix_flip = (_only_set_temperatures(sig, set_temperatures)
                                                 for sig in (cura_base, cura_flip, mix_base, mix_flip))
     if cura_flip["digest"] == cura_base["digest"]:
@@ -747,7 +756,8 @@ def judge_outcome(context, key, value, scene=None):
         if "error" in sig:
             text = sig["error"].strip().splitlines()[-1:] if sig["error"] else ""
             return {"verdict": f"error: {name} failed: {text}", "digests": {}}
-    given = given_values(*scene.resolve(context), *scene.resolve(flipped))
+    given = (given_values({key: value}), given_values({key: current_value(key, context, scene)})
+             if writes_values(key) else None)
     text = verdict(cb, cf, mb, mf, CATEGORIES.get(key), scene.set_temperatures(context, flipped), given)
     return {"verdict": text, "digests": digests}
 
