@@ -409,7 +409,9 @@ void GCodeExport::setFan(double ratio) {
     } else if (ratio <= 0) {
         line("M107" + fan);
     } else {
-        line("M106 S" + formatDecimal(std::min(ratio, 1.0) * 255.0, 1) + fan);
+        // as CuraEngine 4.13 scales it, from the percentage: percent · 255 / 100 (1 % is 2.5499…, "S2.5")
+        const double percent = std::min(ratio, 1.0) * 100.0;
+        line("M106 S" + formatDecimal(percent * 255.0 / 100.0, 1) + fan);
     }
 }
 

@@ -756,8 +756,9 @@ def judge_outcome(context, key, value, scene=None):
         if "error" in sig:
             text = sig["error"].strip().splitlines()[-1:] if sig["error"] else ""
             return {"verdict": f"error: {name} failed: {text}", "digests": {}}
-    given = (given_values({key: value}), given_values({key: current_value(key, context, scene)})
-             if writes_values(key) else None)
+    given = None
+    if writes_values(key):
+        given = (given_values({key: value}), given_values({key: current_value(key, context, scene)}))
     text = verdict(cb, cf, mb, mf, CATEGORIES.get(key), scene.set_temperatures(context, flipped), given)
     return {"verdict": text, "digests": digests}
 
