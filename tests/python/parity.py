@@ -250,7 +250,7 @@ DUAL_KEY_PATTERNS = [
     r"switch_extruder_.*", r"prime_tower_.*", r"prime_blob_enable", r"material_.*temperature.*",
     r"machine_nozzle_.*speed", r"material_extrusion_cool_down_speed", r"machine_extruders_share.*",
     r"machine_always_write_active_tool", r"retraction_hop_after_extruder_switch.*", r"layer_start_[xy]",
-    r"speed_equalize_flow_.*", r"skirt_brim_minimal_length", r"ooze_shield_.*", r"acceleration_.*", r"jerk_.*",
+    r"speed_equalize_flow_.*", r"speed_prime_tower", r"skirt_brim_minimal_length", r"ooze_shield_.*", r"acceleration_.*", r"jerk_.*",
     r"machine_min_cool_heat_time_window",
 ]
 _TEMPERATURE_KEY = re.compile(r"(material_(?!flow_dependent).*|build_volume_|default_material_.*)temperature(_layer_0)?")
