@@ -7,35 +7,23 @@
 namespace mixengine {
 namespace {
 
-constexpr long long kPow10[] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000};
-
-/// Appends the text of `value` with at most `decimals` decimals (rounded half away from zero), no
-/// trailing zeros, no "-0"; integer arithmetic, so no locale and no printf.
+/// Appends the text of `value` with at most `decimals` decimals, rounded from its exact binary value
+/// as printf's "%.*f" rounds it (CuraEngine 4.13 writes with printf: 2.55, stored as 2.5499…, is
+/// "2.5"), no trailing zeros, no "-0"; std::to_chars, so no locale.
 void appendScaled(std::string& out, double value, int decimals) {
-    const long long scale = kPow10[decimals];
-    const long long scaled = std::llround(value * static_cast<double>(scale));
-    const bool negative = scaled < 0;
-    const unsigned long long magnitude =
-        negative ? 0ULL - static_cast<unsigned long long>(scaled) : static_cast<unsigned long long>(scaled);
-    char buffer[48];
-    char* p = buffer;
-    if (negative && magnitude != 0)
-        *p++ = '-';
-    p = std::to_chars(p, buffer + sizeof buffer, magnitude / static_cast<unsigned long long>(scale)).ptr;
-    unsigned long long fraction = magnitude % static_cast<unsigned long long>(scale);
-    if (fraction != 0) {
-        int digits = decimals;
-        while (fraction % 10 == 0)
-            fraction /= 10, --digits;
-        *p++ = '.';
-        char tail[16];
-        char* end = std::to_chars(tail, tail + sizeof tail, fraction).ptr;
-        for (int pad = digits - static_cast<int>(end - tail); pad > 0; --pad)
-            *p++ = '0';
-        for (char* q = tail; q != end; ++q)
-            *p++ = *q;
+    char buffer[64];
+    char* end = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals).ptr;
+    if (decimals > 0) {
+        while (end[-1] == '0')
+            --end;
+        if (end[-1] == '.')
+            --end;
     }
-    out.append(buffer, p);
+    const bool negative_zero = buffer[0] == '-' && end - buffer == 2 && buffer[1] == '0';
+    if (negative_zero)
+        out += '0';
+    else
+        out.append(buffer, end);
 }
 
 }  // namespace

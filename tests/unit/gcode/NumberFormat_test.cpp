@@ -46,11 +46,20 @@ TEST(NumberFormat, FeedrateInMmPerMinute) {
 
 TEST(NumberFormat, DecimalsZeroKeepsIntegerZeros) {
     EXPECT_EQ(formatDecimal(1000.0, 0), "1000");
-    EXPECT_EQ(formatDecimal(2.5, 0), "3");
-    EXPECT_EQ(formatDecimal(-2.5, 0), "-3");
     EXPECT_EQ(formatDecimal(-0.4, 0), "0");
-    EXPECT_EQ(formatDecimal(1.25, 1), "1.3");
     EXPECT_EQ(formatDecimal(60.0, 1), "60");
+}
+
+// CuraEngine 4.13 writes F, E, M106 and M204 values with printf's "%.<n>f", which rounds the exact
+// binary value, ties to even: 2.5 → "2", 1.25 → "1.2", and 2.55 (stored as 2.5499…) → "2.5" (1 % fan).
+TEST(NumberFormat, RoundsAsPrintfDoes) {
+    EXPECT_EQ(formatDecimal(2.5, 0), "2");
+    EXPECT_EQ(formatDecimal(-2.5, 0), "-2");
+    EXPECT_EQ(formatDecimal(3.5, 0), "4");
+    EXPECT_EQ(formatDecimal(1.25, 1), "1.2");
+    EXPECT_EQ(formatDecimal(1.0 * 255 / 100, 1), "2.5");
+    EXPECT_EQ(formatDecimal(0.15, 1), "0.1");  // 0.1499…
+    EXPECT_EQ(formatDecimal(0.35, 1), "0.3");  // 0.3499…
 }
 
 }  // namespace
