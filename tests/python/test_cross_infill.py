@@ -1,0 +1,87 @@
+"""The cross patterns (infill_pattern cross / cross_3d, support_pattern cross) against CuraEngine 4.13.
+
+Both engines get the same resolved settings (side_by_side.py: the Ender-3, 0.2 mm layers). The pattern's own
+figures — the filament and the length extruded under ;TYPE:FILL (infill) or ;TYPE:SUPPORT (support), read
+back segment by segment — must be within 10 % of CuraEngine's, on the generated parity model and on the
+corpus's armadillo52k; and MixEngine's pattern must not be the lines it printed before the cross patterns
+were built (the same figures of infill_pattern / support_pattern lines must differ, and so must the G-code).
+cross_infill_pocket_size must change cross_3d's infill the way it changes CuraEngine's.
+"""
+import pytest
+
+import gcode_model
+import side_by_side as sbs
+
+TOLERANCE = 0.10
+
+CASES = {  # name -> (model, overrides, ;TYPE: of the pattern, the overrides that print lines instead)
+    "parity_cross": ("parity", {"infill_pattern": "cross"}, "FILL", {"infill_pattern": "lines"}),
+    "parity_cross_3d": ("parity", {"infill_pattern": "cross_3d"}, "FILL", {"infill_pattern": "lines"}),
+    "armadillo_cross": ("armadillo52k", {"infill_pattern": "cross"}, "FILL", {"infill_pattern": "lines"}),
+    "armadillo_cross_3d": ("armadillo52k", {"infill_pattern": "cross_3d"}, "FILL", {"infill_pattern": "lines"}),
+    "parity_support_cross": ("parity", {"support_enable": "True", "support_pattern": "cross"}, "SUPPORT",
+                             {"support_enable": "True", "support_pattern": "lines"}),
+}
+
+
+def feature_figures(path, feature):
+    """(filament mm, extruded length mm) of the segments printed under ;TYPE:feature."""
+    model = gcode_model.read(path)
+    filament = length = 0.0
+    for layer in model.layers.values():
+        mask = model.feature_mask(layer, (feature,))
+        filament += float(layer.e[mask].sum())
+        length += float(layer.lengths()[mask].sum())
+    return filament, length
+
+
+def _rel(got, want):
+    return (got - want) / want
+
+
+def _load(corpus, name):
+    if name not in sbs.GENERATED:
+        corpus(name)
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_cross_pattern_within_10_percent_of_curaengine(engine, corpus, report, case):
+    name, overrides, feature, _ = CASES[case]
+    _load(corpus, name)
+    mix, cura = sbs.run_mixengine(name, overrides), sbs.run_cura(name, overrides)
+    assert mix.rc == 0 and cura.rc == 0, (mix.stderr[-300:], cura.stderr[-300:])
+    (mix_e, mix_len), (cura_e, cura_len) = feature_figures(mix.gcode, feature), feature_figures(cura.gcode, feature)
+    report(f"{case}: {feature} filament mixengine {mix_e:.0f} / CuraEngine {cura_e:.0f} mm "
+           f"({100 * _rel(mix_e, cura_e):+.1f} %), length {mix_len:.0f} / {cura_len:.0f} mm "
+           f"({100 * _rel(mix_len, cura_len):+.1f} %)")
+    assert cura_e > 100
+    assert abs(_rel(mix_e, cura_e)) <= TOLERANCE
+    assert abs(_rel(mix_len, cura_len)) <= TOLERANCE
+
+
+@pytest.mark.parametrize("case", list(CASES))
+def test_cross_pattern_is_not_lines(engine, corpus, case):
+    name, overrides, feature, lines = CASES[case]
+    _load(corpus, name)
+    cross, plain = sbs.run_mixengine(name, overrides), sbs.run_mixengine(name, lines)
+    assert cross.rc == 0 and plain.rc == 0
+    assert cross.gcode.read_bytes() != plain.gcode.read_bytes()
+    cross_e, cross_len = feature_figures(cross.gcode, feature)
+    plain_e, plain_len = feature_figures(plain.gcode, feature)
+    # the same line distance, another shape: the cross curve is shorter than lines at that distance
+    assert abs(_rel(cross_len, plain_len)) > 0.05
+
+
+def test_pocket_size_moves_cross_3d_as_in_curaengine(engine):
+    """cross_infill_pocket_size from its default (the line distance, 2 mm) down to 0 (no pockets): the curve's
+    right-angled corners are no longer cut, so both engines print more (above about 1.3 mm the cut is a third
+    of the curve's segments, whatever the pocket size, in both)."""
+    base = {"infill_pattern": "cross_3d"}
+    pocketed = dict(base, cross_infill_pocket_size="0")
+    deltas = {}
+    for label, run in (("mixengine", sbs.run_mixengine), ("CuraEngine", sbs.run_cura)):
+        before, after = feature_figures(run("parity", base).gcode, "FILL"), feature_figures(run("parity", pocketed).gcode, "FILL")
+        deltas[label] = after[1] - before[1]
+    assert deltas["CuraEngine"] != 0
+    ratio = deltas["mixengine"] / deltas["CuraEngine"]
+    assert 1 / 3 <= ratio <= 3, deltas
