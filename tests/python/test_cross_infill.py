@@ -7,8 +7,13 @@ corpus's armadillo52k; and MixEngine's pattern must not be the lines it printed 
 were built: the G-code differs from infill_pattern / support_pattern lines', and the directions the pattern is
 printed in (shares of its length per degree, mod 180°) are far from the lines', and its shares along the
 curve's own directions (0°, 45°, 90°, 135°) close to CuraEngine's.
-cross_infill_pocket_size must change cross_3d's infill the way it changes CuraEngine's.
+cross_infill_pocket_size must change cross_3d's infill the way it changes CuraEngine's, and a density image
+(cross_infill_density_image, cross_support_density_image: a grey PNG, lighter to the right) must thin the
+pattern as it thins CuraEngine's.
 """
+import struct
+import zlib
+
 import numpy as np
 import pytest
 
@@ -111,3 +116,33 @@ def test_pocket_size_moves_cross_3d_as_in_curaengine(engine):
     assert deltas["CuraEngine"] != 0
     ratio = deltas["mixengine"] / deltas["CuraEngine"]
     assert 1 / 3 <= ratio <= 3, deltas
+
+
+def _grey_png(path, width=64, height=32):
+    """A grey PNG, white on the left to 25 % grey on the right (density 0 to 0.25: below w/d on the left,
+    the full depth on the right), lighter towards the top."""
+    rows = b"".join(b"\0" + bytes(round(255 * (1 - 0.25 * x / (width - 1) * (0.5 + y / (2 * height - 2))))
+                                   for x in range(width)) for y in range(height))
+    def chunk(kind, data):
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+    header = struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)
+    path.write_bytes(b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(rows))
+                     + chunk(b"IEND", b""))
+    return path
+
+
+@pytest.mark.parametrize("key, overrides, feature", [
+    ("cross_infill_density_image", {"infill_pattern": "cross"}, "FILL"),
+    ("cross_support_density_image", {"support_enable": "True", "support_pattern": "cross"}, "SUPPORT"),
+])
+def test_density_image_thins_the_pattern_as_in_curaengine(engine, tmp_path, key, overrides, feature):
+    image = _grey_png(tmp_path / "density.png")
+    with_image = dict(overrides, **{key: str(image)})
+    figures = {}
+    for label, run in (("mixengine", sbs.run_mixengine), ("CuraEngine", sbs.run_cura)):
+        uniform, thinned = run("parity", overrides), run("parity", with_image)
+        assert uniform.rc == 0 and thinned.rc == 0, thinned.stderr[-300:]
+        figures[label] = (feature_figures(uniform.gcode, feature)[0], feature_figures(thinned.gcode, feature)[0])
+    cura_uniform, cura_thinned = figures["CuraEngine"]
+    assert cura_thinned < 0.97 * cura_uniform
+    assert abs(_rel(figures["mixengine"][1], cura_thinned)) <= 0.02
