@@ -232,7 +232,9 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
     Drawn drawn =
         drawPattern(offsetArea(area, params.overlap_um - inset, params.area_loops), params, connected);
     if (params.multiplier > 1) {
-        const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0);
+        // As CuraEngine: the cross patterns' outline keeps the overlap they added to it.
+        const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0) -
+                                       (crossBased(params.pattern) ? params.overlap_um : 0);
         multiplyInfill(
             drawn.lines, drawn.loops, offsetArea(area, -outline_inset, params.area_loops),
             {params.multiplier, w, params.connect_lines, params.pattern == InfillPattern::Concentric});

@@ -36,8 +36,8 @@
 //     where they are connected (zigzag, or connect_lines: zig_zaggify_infill, for the line-based
 //     patterns: toolpaths/infill/ConnectedLines.h; gyroid's lines are not connected);
 //   - multiplier N > 1: toolpaths/infill/InfillMultiplier.h, inside the area shrunk by wall_count·w (and
-//     w/2 with connect_lines); for even N the lines are made unconnected and the connections come
-//     from the multiplier's cells;
+//     w/2 with connect_lines; grown by the overlap for cross and cross_3d, as CuraEngine); for even N
+//     the lines are made unconnected and the connections come from the multiplier's cells;
 //   - wall_count loops (infill_wall_line_count) w/2, 3w/2, … inside the area, printed as closed fill.
 #include <string>
 #include <vector>
