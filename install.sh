@@ -10,7 +10,7 @@ ENGINE_PACKAGES=(
   g++ cmake ninja-build pkg-config ccache clang-format make
   libprotobuf-dev protobuf-compiler
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libpolyclipping-dev nlohmann-json3-dev lib3mf-dev libzip-dev zlib1g-dev libpng-dev libfftw3-dev liblcms2-dev
+  libpolyclipping-dev nlohmann-json3-dev lib3mf-dev libzip-dev zlib1g-dev libpng-dev libjpeg-dev libfftw3-dev liblcms2-dev
   libmimalloc-dev
   # the configure step finds GoogleTest, clang-format and Python 3 (tests/CMakeLists.txt) even when only the
   # engine is built

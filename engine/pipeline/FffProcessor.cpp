@@ -65,9 +65,9 @@ void planGroup(const Scene& scene, const SceneGroup& group, const SlicedGroup& s
     input.on_progress = [&log](double share_done) { log.progress(ProgressStage::Toolpaths, share_done); };
     for (std::size_t m = 0; m < group.meshes.size(); ++m) {
         const AABB3 box = group.meshes[m].mesh.bounds();
-        const Point2 middle{(box.min.x + box.max.x) / 2, (box.min.y + box.max.y) / 2};
-        input.meshes.push_back({&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m],
-                                middle, sliced.roles[m]});
+        const Box2 flat{box.min.x, box.min.y, box.max.x, box.max.y};
+        input.meshes.push_back(
+            {&group.meshes[m].settings, group.meshes[m].mesh.name, &sliced.meshes[m], flat, sliced.roles[m]});
     }
     const GroupToolpaths toolpaths = generateGroupToolpaths(input, threads);
     for (const std::string& warning : toolpaths.warnings)

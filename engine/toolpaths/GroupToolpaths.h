@@ -36,9 +36,9 @@ struct ToolpathMeshInput {
     const Settings* settings = nullptr;                ///< the mesh's resolved settings
     std::string name;                                  ///< for ;MESH:
     const std::vector<SlicedLayer>* layers = nullptr;  ///< index = layer
-    /// The middle of the mesh's bounding box in x and y (the infill pattern's origin); unset: the
-    /// middle of its outlines' bounds.
-    std::optional<Point2> middle_um;
+    /// The mesh's bounding box in x and y (its middle is the infill pattern's origin; the cross
+    /// fractal's square is laid around it); unset: its outlines' bounds.
+    std::optional<Box2> box_um;
     /// A model, or a modifier of the others (infill mesh, support mesh, support blocker;
     /// toolpaths/InfillMeshes.h, toolpaths/support/Support.h). Cutting meshes arrive carved and print as
     /// models.

@@ -78,7 +78,7 @@ std::vector<MeshToolpaths> generateModelToolpaths(const ToolpathInput& input, in
         }
         const std::vector<SlicedLayer>& layers = mesh.role.infill_mesh ? clipped[m] : *mesh.layers;
         if (surfaceOnlyMesh(*mesh.settings))
-            result[m].layers = generateMeshToolpaths(layers, *mesh.settings, threads, mesh.middle_um);
+            result[m].layers = generateMeshToolpaths(layers, *mesh.settings, threads, mesh.box_um);
         else
             areas[m] = generateMeshAreas(layers, *mesh.settings, threads, progress);
     }
@@ -87,8 +87,8 @@ std::vector<MeshToolpaths> generateModelToolpaths(const ToolpathInput& input, in
             continue;
         const ToolpathMeshInput& mesh = input.meshes[m];
         const std::vector<SlicedLayer>& layers = mesh.role.infill_mesh ? clipped[m] : *mesh.layers;
-        result[m].layers = generateMeshPaths(std::move(*areas[m]), layers, *mesh.settings, threads,
-                                             mesh.middle_um, progress);
+        result[m].layers =
+            generateMeshPaths(std::move(*areas[m]), layers, *mesh.settings, threads, mesh.box_um, progress);
     }
     return result;
 }

@@ -38,7 +38,7 @@ double angleFor(const Settings& s, Key<SettingUnit::RealList> key, int layer,
     return angles[static_cast<std::size_t>(layer) % angles.size()];
 }
 
-Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
+Box2 outlineBounds(const std::vector<SlicedLayer>& layers) {
     Box2 box{0, 0, 0, 0};
     bool any = false;
     for (const SlicedLayer& layer : layers) {
@@ -50,7 +50,15 @@ Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
                   : b;
         any = true;
     }
+    return box;
+}
+
+Point2 middleOf(const Box2& box) {
     return {(box.left + box.right) / 2, (box.top + box.bottom) / 2};
+}
+
+Point2 meshCentre(const std::vector<SlicedLayer>& layers) {
+    return middleOf(outlineBounds(layers));
 }
 
 /// The skin's reference walls and the removal widths left over (toolpaths/skin/Skin.h).
@@ -354,14 +362,16 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
 
 std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vector<SlicedLayer>& layers,
                                                const Settings& settings, int threads,
-                                               const std::optional<Point2>& mesh_middle_um,
+                                               const std::optional<Box2>& mesh_box_um,
                                                const WorkProgress& progress) {
     std::vector<MeshLayerGroups> result = std::move(areas.walls);
     result.resize(layers.size());
     const std::vector<LayerInfill> infill =
         arrangeInfill(areas.own_infill, infillLayerParams(settings), threads);
-    const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
+    const Box2 box = mesh_box_um ? *mesh_box_um : outlineBounds(layers);
+    const Point2 middle = middleOf(box);
     const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
+    const std::unique_ptr<CrossFill> cross = meshCrossFill(settings, box);
 
     const BridgeSkinParams bridge = bridgeSkinParams(settings);
     std::vector<Paths> outlines, infill_areas;  // bridged skin: what lies below (the sparse infill as air)
@@ -395,6 +405,7 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
         InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
         const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
+        fill.cross = cross.get();
         result[i].infill = meshInfillPaths(infill[i], fill);
         if (settings.boolean(key::infill_randomize_start_location))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);
@@ -412,12 +423,12 @@ bool surfaceOnlyMesh(const Settings& settings) {
 
 std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
                                                    const Settings& settings, int threads,
-                                                   const std::optional<Point2>& mesh_middle_um) {
+                                                   const std::optional<Box2>& mesh_box_um) {
     if (surfaceOnly(settings))
         return surfaceToolpaths(layers, settings, seamParamsFrom(settings, meshCentre(layers)), threads);
     const WorkProgress silent;
     return generateMeshPaths(generateMeshAreas(layers, settings, threads, silent), layers, settings, threads,
-                             mesh_middle_um, silent);
+                             mesh_box_um, silent);
 }
 
 }  // namespace mixengine

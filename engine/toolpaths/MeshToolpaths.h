@@ -74,17 +74,17 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
 /// and combing see the skin areas' infill, not `own_infill`, as CuraEngine's.
 std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vector<SlicedLayer>& layers,
                                                const Settings& settings, int threads,
-                                               const std::optional<Point2>& mesh_middle_um,
+                                               const std::optional<Box2>& mesh_box_um,
                                                const WorkProgress& progress);
 
 /// magic_mesh_surface_mode "surface": generateMeshToolpaths prints the outlines alone.
 bool surfaceOnlyMesh(const Settings& settings);
 
 /// Both steps (or the surface alone).
-/// `mesh_middle_um`: the middle of the mesh's bounding box in x and y (CuraEngine's infill origin);
-/// without it, the middle of the bounds of all its outlines.
-std::vector<MeshLayerGroups> generateMeshToolpaths(
-    const std::vector<SlicedLayer>& layers, const Settings& settings, int threads,
-    const std::optional<Point2>& mesh_middle_um = std::nullopt);
+/// `mesh_box_um`: the mesh's bounding box in x and y (its middle is CuraEngine's infill origin, the
+/// cross fractal's square is laid around it); without it, the bounds of all its outlines.
+std::vector<MeshLayerGroups> generateMeshToolpaths(const std::vector<SlicedLayer>& layers,
+                                                   const Settings& settings, int threads,
+                                                   const std::optional<Box2>& mesh_box_um = std::nullopt);
 
 }  // namespace mixengine

@@ -82,6 +82,8 @@ CONTEXTS = [
     {"retraction_combing": "infill"},
     {"infill_pattern": "zigzag"},
     {"infill_pattern": "cubicsubdiv"},
+    {"infill_pattern": "cross_3d"},
+    {"support_enable": "True", "support_pattern": "cross"},
     {"infill_pattern": "lines"},
     {"gradual_infill_steps": "2"},
     {"clean_between_layers": "True"},

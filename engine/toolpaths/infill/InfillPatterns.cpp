@@ -8,6 +8,7 @@
 #include "geometry/Angles.h"
 #include "geometry/Point.h"
 #include "geometry/PolygonOps.h"
+#include "slicing/OutlineCleanup.h"
 #include "toolpaths/core/FeatureStyle.h"
 #include "toolpaths/infill/ConnectedLines.h"
 #include "toolpaths/infill/GyroidInfill.h"
@@ -102,6 +103,31 @@ Paths separateLines(const Paths& area, const std::vector<LineSet>& sets, coord_u
     return out;
 }
 
+/// The cross fractal's curve cut to the area: the loops it encloses when connected, else its
+/// pieces inside, each segment a line of its own (as CuraEngine).
+Drawn crossPattern(const Paths& area, const InfillParams& p, bool connected) {
+    Path curve = p.cross->curve(p.pattern == InfillPattern::Cross3d, p.z_um, p.line_width_um, p.pocket_um);
+    if (curve.size() < 2)
+        return {};
+    Drawn drawn;
+    if (connected) {
+        for (const Path& loop : intersectAll(area, {curve})) {
+            Path simple = p.simplify_resolution_um > 0 || p.simplify_deviation_um > 0
+                              ? simplifyLoop(loop, p.simplify_resolution_um, p.simplify_deviation_um)
+                              : loop;
+            if (simple.size() >= 3)
+                drawn.loops.push_back(std::move(simple));
+        }
+        return drawn;
+    }
+    curve.push_back(curve.front());
+    for (const Path& piece : clipLines({curve}, area)) {
+        for (std::size_t i = 1; i < piece.size(); ++i)
+            drawn.lines.push_back({piece[i - 1], piece[i]});
+    }
+    return drawn;
+}
+
 Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
     const coord_um d = p.line_distance_um;
     switch (p.pattern) {
@@ -115,6 +141,11 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
                 {}};
         case InfillPattern::Concentric:
             return {{}, concentricLoops(area, p)};
+        case InfillPattern::Cross:
+        case InfillPattern::Cross3d:
+            if (p.cross != nullptr)
+                return crossPattern(area, p, connected);
+            return {separateLines(area, {lineSet(p, d, p.angle_degrees, 0)}, p.line_width_um), {}};
         case InfillPattern::CubicSubdiv:
             if (p.subdiv_lines != nullptr)
                 return {clipLines(*p.subdiv_lines, area), {}};
@@ -126,9 +157,21 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
     }
 }
 
+bool crossBased(InfillPattern pattern) {
+    return pattern == InfillPattern::Cross || pattern == InfillPattern::Cross3d;
+}
+
 bool lineBased(InfillPattern pattern) {
     return pattern != InfillPattern::ZigZag && pattern != InfillPattern::Concentric &&
-           pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv;
+           pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv && !crossBased(pattern);
+}
+
+/// Whether the pattern's lines are joined (CuraEngine's zig_zaggify, off for an even multiplier).
+bool joinsLines(const InfillParams& p, bool even) {
+    if (p.pattern == InfillPattern::ZigZag)
+        return true;
+    return p.connect_lines && !even &&
+           (lineBased(p.pattern) || p.pattern == InfillPattern::Gyroid || crossBased(p.pattern));
 }
 
 Paths offsetArea(const Paths& area, coord_um delta, Loops loops) {
@@ -146,8 +189,12 @@ void appendPaths(const Paths& paths, bool closed, const InfillParams& p, std::ve
 }  // namespace
 
 InfillPattern infillPatternOf(const std::string& text, const std::string& key) {
-    if (text == "lines" || text == "cross" || text == "cross_3d" || text == "lightning")
+    if (text == "lines" || text == "lightning")
         return InfillPattern::Lines;
+    if (text == "cross")
+        return InfillPattern::Cross;
+    if (text == "cross_3d")
+        return InfillPattern::Cross3d;
     if (text == "zigzag")
         return InfillPattern::ZigZag;
     if (text == "grid")
@@ -179,15 +226,15 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
     const coord_um walls = params.wall_count * w;
     const bool even = params.multiplier > 1 && params.multiplier % 2 == 0;
     // As CuraEngine: an even multiplier draws the lines unconnected and connects its own loops.
-    const bool connected = params.pattern == InfillPattern::ZigZag ||
-                           (params.connect_lines && !even &&
-                            (lineBased(params.pattern) || params.pattern == InfillPattern::Gyroid));
+    const bool connected = joinsLines(params, even);
     const bool octree = params.pattern == InfillPattern::CubicSubdiv && params.subdiv_lines != nullptr;
     const coord_um inset = octree ? 0 : walls + (connected ? w / 2 : 0);
     Drawn drawn =
         drawPattern(offsetArea(area, params.overlap_um - inset, params.area_loops), params, connected);
     if (params.multiplier > 1) {
-        const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0);
+        // As CuraEngine: the cross patterns' outline keeps the overlap they added to it.
+        const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0) -
+                                       (crossBased(params.pattern) ? params.overlap_um : 0);
         multiplyInfill(
             drawn.lines, drawn.loops, offsetArea(area, -outline_inset, params.area_loops),
             {params.multiplier, w, params.connect_lines, params.pattern == InfillPattern::Concentric});

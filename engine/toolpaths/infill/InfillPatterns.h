@@ -17,8 +17,13 @@
 //                       caller's subdiv_lines) cut to
 //                       the area grown by the overlap (no wall inset, not connected, as CuraEngine);
 //                       as cubic without the octree.
-// cross, cross_3d and lightning print as lines at d (the same material per area, not the same
-// shape).
+//   cross, cross_3d   — the closed curve of the caller's cross fractal (toolpaths/infill/cross/CrossFill.h,
+//                       one per mesh or for the support) at this height, with cross_3d's pockets
+//                       (pocket_um); connected (zig_zaggify): the area the curve encloses cut to the
+//                       area, printed as loops simplified by simplify_resolution_um / _deviation_um
+//                       (CuraEngine simplifies its infill polygons so); else the curve cut to the area
+//                       and printed segment by segment as separate lines; without a fractal, as lines.
+// lightning prints as lines at d (the same material per area, not the same shape).
 //
 // Placement: every line set goes through the pattern origin (origin_um: CuraEngine's infill origin,
 // the mesh's middle plus infill_offset_x/_y; its shift across a set at angle a is
@@ -31,8 +36,8 @@
 //     where they are connected (zigzag, or connect_lines: zig_zaggify_infill, for the line-based
 //     patterns: toolpaths/infill/ConnectedLines.h; gyroid's lines are not connected);
 //   - multiplier N > 1: toolpaths/infill/InfillMultiplier.h, inside the area shrunk by wall_count·w (and
-//     w/2 with connect_lines); for even N the lines are made unconnected and the connections come
-//     from the multiplier's cells;
+//     w/2 with connect_lines; grown by the overlap for cross and cross_3d, as CuraEngine); for even N
+//     the lines are made unconnected and the connections come from the multiplier's cells;
 //   - wall_count loops (infill_wall_line_count) w/2, 3w/2, … inside the area, printed as closed fill.
 #include <string>
 #include <vector>
@@ -40,6 +45,7 @@
 #include "geometry/Point.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/ExtrusionPath.h"
+#include "toolpaths/infill/cross/CrossFill.h"
 
 namespace mixengine {
 
@@ -55,6 +61,8 @@ enum class InfillPattern {
     QuarterCubic,
     Concentric,
     Gyroid,
+    Cross,
+    Cross3d,
 };
 
 /// Cura's value → pattern; an unknown value is an InputError naming `key`.
@@ -80,6 +88,10 @@ struct InfillParams {
     int multiplier = 1;              ///< parallel lines per line (infill_multiplier)
     bool connect_lines = false;      ///< zig_zaggify_infill
     const Paths* subdiv_lines = nullptr;  ///< cubicsubdiv: the octree's lines at z_um (the caller's)
+    const CrossFill* cross = nullptr;     ///< cross, cross_3d: the fractal (the caller's)
+    coord_um pocket_um = 0;               ///< cross_3d: cross_infill_pocket_size (≤ 10: none)
+    coord_um simplify_resolution_um = 0;  ///< cross: the loops' meshfix_maximum_resolution (0: kept)
+    coord_um simplify_deviation_um = 0;   ///< cross: the loops' meshfix_maximum_deviation
 };
 
 /// The pattern's lines inside `area` (lines end on its boundary grown by the overlap).

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "common/ParallelFor.h"
 #include "geometry/PolygonOps.h"
+#include "toolpaths/infill/cross/DensityImage.h"
 
 namespace mixengine {
 namespace {
@@ -139,7 +141,21 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
     p.wall_count = countOf(s, key::infill_wall_line_count);
     p.multiplier = std::max(1, countOf(s, key::infill_multiplier));
     p.connect_lines = s.boolean(key::zig_zaggify_infill) || p.pattern == InfillPattern::ZigZag;
+    p.pocket_um = s.lengthMicrons(key::cross_infill_pocket_size);
+    p.simplify_resolution_um = s.lengthMicrons(key::meshfix_maximum_resolution);
+    p.simplify_deviation_um = s.lengthMicrons(key::meshfix_maximum_deviation);
     return p;
+}
+
+std::unique_ptr<CrossFill> meshCrossFill(const Settings& s, const Box2& mesh_box) {
+    const std::string pattern = s.text(key::infill_pattern);
+    const coord_um line_distance = s.lengthMicrons(key::infill_line_distance);
+    const coord_um line_width = s.lengthMicrons(key::infill_line_width);
+    if ((pattern != "cross" && pattern != "cross_3d") || line_distance <= 0 || line_width <= 0)
+        return nullptr;
+    return std::make_unique<CrossFill>(
+        mesh_box, line_distance, line_width,
+        densityImageAt(s.text(key::cross_infill_density_image), mesh_box, "cross_infill_density_image"));
 }
 
 std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,

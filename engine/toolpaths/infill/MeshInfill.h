@@ -29,6 +29,7 @@
 #include "toolpaths/infill/InfillLayers.h"
 #include "toolpaths/infill/InfillPatterns.h"
 #include "toolpaths/infill/SubdivCubes.h"
+#include "toolpaths/infill/cross/CrossFill.h"
 
 namespace mixengine {
 
@@ -36,7 +37,9 @@ namespace mixengine {
 InfillLayerParams infillLayerParams(const Settings& s);
 
 /// The pattern's parameters on `layer` at height z for density 0 of a single layer: line
-/// distance infill_line_distance, the origin at `mesh_middle` + the infill offsets.
+/// distance infill_line_distance, the origin at `mesh_middle` + the infill offsets; for cross_3d the
+/// pockets of cross_infill_pocket_size; cross's loops simplified by meshfix_maximum_resolution /
+/// _deviation.
 InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const FeatureStyle& style,
                               const Point2& mesh_middle);
 
@@ -45,6 +48,12 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
 /// wall min(2, wall_line_count); origin as meshInfillParams'.
 std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,
                                              const Point2& mesh_middle, int threads);
+
+/// The cross fractal (toolpaths/infill/cross/CrossFill.h) for a mesh whose infill_pattern is cross or
+/// cross_3d and whose infill_line_distance is positive (nothing otherwise), over `mesh_box` (x, y) with
+/// infill_line_width; the density from cross_infill_density_image when it names an existing image
+/// (toolpaths/infill/cross/DensityImage.h), else uniform.
+std::unique_ptr<CrossFill> meshCrossFill(const Settings& s, const Box2& mesh_box);
 
 /// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base);

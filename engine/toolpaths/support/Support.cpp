@@ -2,13 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
+#include <string>
 
 #include "common/ParallelFor.h"
 #include "geometry/Angles.h"
 #include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/infill/InfillLayers.h"
+#include "toolpaths/infill/cross/CrossFill.h"
+#include "toolpaths/infill/cross/DensityImage.h"
 #include "toolpaths/support/SupportAreas.h"
 #include "toolpaths/support/SupportPaths.h"
 #include "toolpaths/support/TreeSupport.h"
@@ -125,8 +129,19 @@ SupportFill fillFrom(const Settings& s, const InterfaceKeys& keys, int layer) {
     return fill;
 }
 
+/// The body's cross pattern: the support's fractal, joined with zig_zaggify_support (as CuraEngine;
+/// the other patterns' lines stay unjoined).
+void attachCross(SupportFill& fill, const Settings& body, const CrossFill* cross) {
+    if (fill.pattern != InfillPattern::Cross && fill.pattern != InfillPattern::Cross3d)
+        return;
+    fill.cross = cross;
+    fill.connect_lines = body.boolean(key::zig_zaggify_support);
+    fill.simplify_resolution_um = body.lengthMicrons(key::meshfix_maximum_resolution);
+    fill.simplify_deviation_um = body.lengthMicrons(key::meshfix_maximum_deviation);
+}
+
 /// The fills of `layer`; −1 stands for the raft's filler layers.
-SupportLayerFills layerFills(const SupportInput& in, int layer) {
+SupportLayerFills layerFills(const SupportInput& in, int layer, const CrossFill* cross) {
     const Settings& g = *in.global;
     const Key<SettingUnit::Extruder> body_key =
         layer <= 0 ? key::support_extruder_nr_layer_0 : key::support_infill_extruder_nr;
@@ -154,6 +169,7 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
         body, {key::support_line_width, key::speed_support_infill, key::support_material_flow, body_key},
         layer);
     fills.body.style.extruder = body_nr;
+    attachCross(fills.body, body, cross);
     if (in.raft)  // as CuraEngine: no initial_layer_line_width_factor for support under a raft
         fills.body.style.width_um = body.lengthMicrons(key::support_line_width);
     const Settings& roof = trainSettings(g, in.extruders, extruderOf(g, key::support_roof_extruder_nr));
@@ -358,6 +374,39 @@ Box2 meshBounds(const std::vector<SlicedLayer>& layers) {
     return boundsOf(all);
 }
 
+/// The bounding box (x, y) of the meshes other than infill meshes and support blockers (as CuraEngine,
+/// support meshes count and support_offset does not); a mesh without a placed box counts with its
+/// outlines' bounds.
+Box2 supportedBounds(const SupportInput& in) {
+    std::optional<Box2> all;
+    for (const SupportMesh& mesh : in.meshes) {
+        if (mesh.role.infill_mesh || mesh.role.anti_overhang_mesh)
+            continue;
+        const AABB3& b = mesh.role.bounds;
+        const Box2 box = b.max.x > b.min.x || b.max.y > b.min.y ? Box2{b.min.x, b.min.y, b.max.x, b.max.y}
+                                                                : meshBounds(*mesh.layers);
+        all = all ? Box2{std::min(all->left, box.left), std::min(all->top, box.top),
+                         std::max(all->right, box.right), std::max(all->bottom, box.bottom)}
+                  : box;
+    }
+    return all.value_or(Box2{0, 0, 0, 0});
+}
+
+/// The support's cross fractal when the support infill extruder's support_pattern is cross (and
+/// support_line_distance positive), over supportedBounds with its support_line_width; the density from
+/// cross_support_density_image when it names an image.
+std::unique_ptr<CrossFill> supportCrossFill(const SupportInput& in, const Settings& body) {
+    const std::string pattern = body.text(key::support_pattern);
+    const coord_um line_distance = body.lengthMicrons(key::support_line_distance);
+    const coord_um line_width = body.lengthMicrons(key::support_line_width);
+    if ((pattern != "cross" && pattern != "cross_3d") || line_distance <= 0 || line_width <= 0)
+        return nullptr;
+    const Box2 box = supportedBounds(in);
+    return std::make_unique<CrossFill>(
+        box, line_distance, line_width,
+        densityImageAt(body.text(key::cross_support_density_image), box, "cross_support_density_image"));
+}
+
 /// The tree support of the meshes with support_enable and support_structure tree
 /// (toolpaths/support/TreeSupport.h); none: empty.
 std::vector<SupportLayerAreas> treeAreas(const SupportInput& in, int threads) {
@@ -430,15 +479,16 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         result.brim = supportBrim(body, extruderOf(g, key::support_infill_extruder_nr), areas[0].support);
     const std::vector<LayerInfill> arranged =
         arrangedBodies(areas, body, g.lengthMicrons(key::layer_height), threads);
+    const std::unique_ptr<CrossFill> cross = supportCrossFill(in, body);
     parallelFor(paths.size(), threads, [&](std::size_t i) {
         const SupportLayerAreas& a = areas[i];
         if (a.support.empty() && a.roof.empty() && a.floor.empty())
             return;
-        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i)), (*in.heights)[i].print_z,
-                                     arranged.empty() ? nullptr : &arranged[i]);
+        paths[i] = supportLayerPaths(a, layerFills(in, static_cast<int>(i), cross.get()),
+                                     (*in.heights)[i].print_z, arranged.empty() ? nullptr : &arranged[i]);
     });
     if (in.raft && !paths.empty() && !paths[0].empty()) {
-        result.filler = supportLayerPaths(areas[0], layerFills(in, -1), 0);
+        result.filler = supportLayerPaths(areas[0], layerFills(in, -1, cross.get()), 0);
         paths[0].clear();
     }
     return result;

@@ -35,6 +35,10 @@ InfillParams infillParams(const SupportFill& fill, Feature feature, coord_um z) 
     p.zigzag_end_pieces = fill.connect_zigzags;
     p.zag_skip_count = fill.zag_skip_count;
     p.overlap_um = fill.overlap_um;
+    p.cross = fill.cross;
+    p.connect_lines = fill.connect_lines;
+    p.simplify_resolution_um = fill.simplify_resolution_um;
+    p.simplify_deviation_um = fill.simplify_deviation_um;
     return p;
 }
 

@@ -15,7 +15,8 @@
 // as wide, so that they keep farther from the edge, and printed at the body's width with t × the
 // flow, as CuraEngine 4.13), then the densities from the sparsest: density k of the last L at
 // 2^(k+1)·d shifted by 2^k·d for k < L, 2^L·d for L (d = the body's line distance), so that where
-// all print the lines are d apart.
+// all print the lines are d apart. The cross pattern (support_pattern cross) is the curve of one
+// fractal for all layers, the same at every density, as CuraEngine.
 #include <vector>
 
 #include "geometry/Point.h"
@@ -36,6 +37,12 @@ struct SupportFill {
     int zag_skip_count = 0;        ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
     coord_um overlap_um = 0;       ///< how far the infill reaches into the walls (infill_overlap_mm)
     FeatureStyle style;
+    /// cross: the support's fractal (toolpaths/infill/cross/CrossFill.h), its loops joined
+    /// (zig_zaggify_support) and simplified as InfillParams says.
+    const CrossFill* cross = nullptr;
+    bool connect_lines = false;
+    coord_um simplify_resolution_um = 0;
+    coord_um simplify_deviation_um = 0;
 };
 
 struct SupportLayerFills {

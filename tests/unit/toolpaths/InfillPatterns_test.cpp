@@ -165,7 +165,8 @@ TEST(InfillPatterns, NamesAsCura) {
     EXPECT_EQ(infillPatternOf("grid", "infill_pattern"), InfillPattern::Grid);
     EXPECT_EQ(infillPatternOf("quarter_cubic", "infill_pattern"), InfillPattern::QuarterCubic);
     EXPECT_EQ(infillPatternOf("cubicsubdiv", "infill_pattern"), InfillPattern::CubicSubdiv);
-    EXPECT_EQ(infillPatternOf("cross_3d", "infill_pattern"), InfillPattern::Lines);
+    EXPECT_EQ(infillPatternOf("cross", "infill_pattern"), InfillPattern::Cross);
+    EXPECT_EQ(infillPatternOf("cross_3d", "infill_pattern"), InfillPattern::Cross3d);
     EXPECT_THROW(infillPatternOf("honeycomb", "infill_pattern"), InputError);
     EXPECT_TRUE(infill(InfillPattern::Grid, 0).empty());
 }
