@@ -98,7 +98,6 @@ CONTEXTS = [
     # issue 28: contexts that switch on the settings no context above shows
     {"roofing_layer_count": "1"},
     {"infill_pattern": "lightning"},
-    {"infill_pattern": "cross_3d"},
     {"infill_pattern": "concentric"},
     {"top_bottom_pattern": "concentric"},
     {"infill_support_enabled": "True"},
@@ -113,7 +112,6 @@ CONTEXTS = [
     {"adhesion_type": "raft", "acceleration_enabled": "True"},
     {"adhesion_type": "raft", "jerk_enabled": "True"},
     {"support_enable": "True", "support_pattern": "lines"},
-    {"support_enable": "True", "support_pattern": "cross"},
     {"support_enable": "True", "support_skip_some_zags": "True"},
     {"support_enable": "True", "support_xy_overrides_z": "z_overrides_xy"},
     {"support_enable": "True", "gradual_support_infill_steps": "2"},
