@@ -362,6 +362,7 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
         arrangeInfill(areas.own_infill, infillLayerParams(settings), threads);
     const Point2 middle = mesh_middle_um ? *mesh_middle_um : meshCentre(layers);
     const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
+    const std::unique_ptr<LightningInfill> lightning = meshLightning(areas.own_infill, settings, threads);
 
     const BridgeSkinParams bridge = bridgeSkinParams(settings);
     std::vector<Paths> outlines, infill_areas;  // bridged skin: what lies below (the sparse infill as air)
@@ -395,6 +396,7 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
         InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
         const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
+        fill.lightning_trees = lightning ? &lightning->treesAt(i) : nullptr;
         result[i].infill = meshInfillPaths(infill[i], fill);
         if (settings.boolean(key::infill_randomize_start_location))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);

@@ -74,6 +74,7 @@ CONTEXTS = [
     {"infill_pattern": "zigzag"},
     {"infill_pattern": "cubicsubdiv"},
     {"infill_pattern": "lines"},
+    {"infill_pattern": "lightning"},
     {"gradual_infill_steps": "2"},
     {"clean_between_layers": "True"},
     {"adaptive_layer_height_enabled": "True"},

@@ -7,6 +7,7 @@
 #include "common/Error.h"
 #include "geometry/Angles.h"
 #include "geometry/Point.h"
+#include "geometry/PointQueries.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/FeatureStyle.h"
 #include "toolpaths/infill/ConnectedLines.h"
@@ -102,6 +103,24 @@ Paths separateLines(const Paths& area, const std::vector<LineSet>& sets, coord_u
     return out;
 }
 
+/// The segments of the trees whose root lies in the area (or within 5 µm of it, as CuraEngine moves
+/// a root on the edge 5 µm in before it tests).
+Paths lightningLines(const Paths& area, const InfillParams& p) {
+    Paths lines;
+    if (p.lightning_trees == nullptr || std::abs(areaUm2(area)) < double(p.line_width_um))
+        return lines;
+    constexpr double kEdgeMargin2 = 5.0 * 5.0;
+    for (const LightningTreeLines& tree : *p.lightning_trees) {
+        if (tree.segments.empty())
+            continue;
+        if (!insideArea(area, tree.root, true) &&
+            nearestOnOutline(area, tree.root).distance2_um2 > kEdgeMargin2)
+            continue;
+        lines.insert(lines.end(), tree.segments.begin(), tree.segments.end());
+    }
+    return lines;
+}
+
 Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
     const coord_um d = p.line_distance_um;
     switch (p.pattern) {
@@ -115,6 +134,8 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
                 {}};
         case InfillPattern::Concentric:
             return {{}, concentricLoops(area, p)};
+        case InfillPattern::Lightning:
+            return {lightningLines(area, p), {}};
         case InfillPattern::CubicSubdiv:
             if (p.subdiv_lines != nullptr)
                 return {clipLines(*p.subdiv_lines, area), {}};
@@ -128,7 +149,8 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
 
 bool lineBased(InfillPattern pattern) {
     return pattern != InfillPattern::ZigZag && pattern != InfillPattern::Concentric &&
-           pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv;
+           pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv &&
+           pattern != InfillPattern::Lightning;
 }
 
 Paths offsetArea(const Paths& area, coord_um delta, Loops loops) {
@@ -146,8 +168,10 @@ void appendPaths(const Paths& paths, bool closed, const InfillParams& p, std::ve
 }  // namespace
 
 InfillPattern infillPatternOf(const std::string& text, const std::string& key) {
-    if (text == "lines" || text == "cross" || text == "cross_3d" || text == "lightning")
+    if (text == "lines" || text == "cross" || text == "cross_3d")
         return InfillPattern::Lines;
+    if (text == "lightning")
+        return InfillPattern::Lightning;
     if (text == "zigzag")
         return InfillPattern::ZigZag;
     if (text == "grid")
@@ -184,8 +208,9 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
                             (lineBased(params.pattern) || params.pattern == InfillPattern::Gyroid));
     const bool octree = params.pattern == InfillPattern::CubicSubdiv && params.subdiv_lines != nullptr;
     const coord_um inset = octree ? 0 : walls + (connected ? w / 2 : 0);
-    Drawn drawn =
-        drawPattern(offsetArea(area, params.overlap_um - inset, params.area_loops), params, connected);
+    // Lightning's trees are cut to nothing: they are tested against the area as it is.
+    const coord_um grow = params.pattern == InfillPattern::Lightning ? 0 : params.overlap_um - inset;
+    Drawn drawn = drawPattern(offsetArea(area, grow, params.area_loops), params, connected);
     if (params.multiplier > 1) {
         const coord_um outline_inset = inset + (params.connect_lines && even ? w / 2 : 0);
         multiplyInfill(

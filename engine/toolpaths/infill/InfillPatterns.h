@@ -17,8 +17,11 @@
 //                       caller's subdiv_lines) cut to
 //                       the area grown by the overlap (no wall inset, not connected, as CuraEngine);
 //                       as cubic without the octree.
-// cross, cross_3d and lightning print as lines at d (the same material per area, not the same
-// shape).
+//   lightning         — the trees of lightning infill at this layer (toolpaths/infill/lightning/
+//                       LightningInfill.h, the caller's lightning_trees) whose root lies in the area
+//                       (or within 5 µm of it), uncut (no overlap, no wall inset, not connected, as
+//                       CuraEngine); nothing in an area below w µm² or without trees.
+// cross and cross_3d print as lines at d (the same material per area, not the same shape).
 //
 // Placement: every line set goes through the pattern origin (origin_um: CuraEngine's infill origin,
 // the mesh's middle plus infill_offset_x/_y; its shift across a set at angle a is
@@ -40,6 +43,7 @@
 #include "geometry/Point.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/ExtrusionPath.h"
+#include "toolpaths/infill/lightning/TreeLines.h"
 
 namespace mixengine {
 
@@ -55,6 +59,7 @@ enum class InfillPattern {
     QuarterCubic,
     Concentric,
     Gyroid,
+    Lightning,
 };
 
 /// Cura's value → pattern; an unknown value is an InputError naming `key`.
@@ -80,6 +85,8 @@ struct InfillParams {
     int multiplier = 1;              ///< parallel lines per line (infill_multiplier)
     bool connect_lines = false;      ///< zig_zaggify_infill
     const Paths* subdiv_lines = nullptr;  ///< cubicsubdiv: the octree's lines at z_um (the caller's)
+    const std::vector<LightningTreeLines>* lightning_trees =
+        nullptr;  ///< lightning: this layer's (the caller's)
 };
 
 /// The pattern's lines inside `area` (lines end on its boundary grown by the overlap).

@@ -29,6 +29,7 @@
 #include "toolpaths/infill/InfillLayers.h"
 #include "toolpaths/infill/InfillPatterns.h"
 #include "toolpaths/infill/SubdivCubes.h"
+#include "toolpaths/infill/lightning/LightningInfill.h"
 
 namespace mixengine {
 
@@ -45,6 +46,14 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
 /// wall min(2, wall_line_count); origin as meshInfillParams'.
 std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& layers, const Settings& s,
                                              const Point2& mesh_middle, int threads);
+
+/// Lightning infill's trees (toolpaths/infill/lightning/LightningInfill.h) for a mesh whose
+/// infill_pattern is lightning and whose infill_line_distance is above 0 (nothing otherwise):
+/// `infill_areas[i]` is layer i's infill area (before it is split by density); the trees live in
+/// it less infill_wall_line_count · infill_line_width; the angles' reaches are taken over
+/// layer_height (at most 10 m).
+std::unique_ptr<LightningInfill> meshLightning(const std::vector<Paths>& infill_areas, const Settings& s,
+                                               int threads);
 
 /// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base);
