@@ -372,6 +372,7 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
     const Point2 middle = middleOf(box);
     const std::unique_ptr<SubdivCubes> cubes = meshSubdivCubes(layers, settings, middle, threads);
     const std::unique_ptr<CrossFill> cross = meshCrossFill(settings, box);
+    const std::unique_ptr<LightningInfill> lightning = meshLightning(areas.own_infill, settings, threads);
 
     const BridgeSkinParams bridge = bridgeSkinParams(settings);
     std::vector<Paths> outlines, infill_areas;  // bridged skin: what lies below (the sparse infill as air)
@@ -406,6 +407,7 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
         const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
         fill.cross = cross.get();
+        fill.lightning_trees = lightning ? &lightning->treesAt(i) : nullptr;
         result[i].infill = meshInfillPaths(infill[i], fill);
         if (settings.boolean(key::infill_randomize_start_location))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);

@@ -85,6 +85,7 @@ CONTEXTS = [
     {"infill_pattern": "cross_3d"},
     {"support_enable": "True", "support_pattern": "cross"},
     {"infill_pattern": "lines"},
+    {"infill_pattern": "lightning"},
     {"gradual_infill_steps": "2"},
     {"clean_between_layers": "True"},
     {"adaptive_layer_height_enabled": "True"},
@@ -97,7 +98,6 @@ CONTEXTS = [
     {"cool_fan_enabled": "True", "cool_min_layer_time_fan_speed_max": "20"},
     # issue 28: contexts that switch on the settings no context above shows
     {"roofing_layer_count": "1"},
-    {"infill_pattern": "lightning"},
     {"infill_pattern": "concentric"},
     {"top_bottom_pattern": "concentric"},
     {"infill_support_enabled": "True"},

@@ -23,7 +23,10 @@
 //                       area, printed as loops simplified by simplify_resolution_um / _deviation_um
 //                       (CuraEngine simplifies its infill polygons so); else the curve cut to the area
 //                       and printed segment by segment as separate lines; without a fractal, as lines.
-// lightning prints as lines at d (the same material per area, not the same shape).
+//   lightning         — the trees of lightning infill at this layer (toolpaths/infill/lightning/
+//                       LightningInfill.h, the caller's lightning_trees) whose root lies in the area
+//                       (or within 5 µm of it), uncut (no overlap, no wall inset, not connected, as
+//                       CuraEngine); nothing in an area below w µm² or without trees.
 //
 // Placement: every line set goes through the pattern origin (origin_um: CuraEngine's infill origin,
 // the mesh's middle plus infill_offset_x/_y; its shift across a set at angle a is
@@ -46,6 +49,7 @@
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/ExtrusionPath.h"
 #include "toolpaths/infill/cross/CrossFill.h"
+#include "toolpaths/infill/lightning/TreeLines.h"
 
 namespace mixengine {
 
@@ -63,6 +67,7 @@ enum class InfillPattern {
     Gyroid,
     Cross,
     Cross3d,
+    Lightning,
 };
 
 /// Cura's value → pattern; an unknown value is an InputError naming `key`.
@@ -92,6 +97,8 @@ struct InfillParams {
     coord_um pocket_um = 0;               ///< cross_3d: cross_infill_pocket_size (≤ 10: none)
     coord_um simplify_resolution_um = 0;  ///< cross: the loops' meshfix_maximum_resolution (0: kept)
     coord_um simplify_deviation_um = 0;   ///< cross: the loops' meshfix_maximum_deviation
+    const std::vector<LightningTreeLines>* lightning_trees =
+        nullptr;  ///< lightning: this layer's (the caller's)
 };
 
 /// The pattern's lines inside `area` (lines end on its boundary grown by the overlap).

@@ -183,6 +183,37 @@ std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& lay
     return std::make_unique<SubdivCubes>(p, boundaries);
 }
 
+namespace {
+
+/// layer_height · tan(angle), at most 10 m (a right angle reaches for ever).
+coord_um reachOver(coord_um layer_height_um, double angle_radians) {
+    const double reach = double(layer_height_um) * std::tan(angle_radians);
+    return static_cast<coord_um>(std::clamp(reach, 0.0, 1e10));
+}
+
+}  // namespace
+
+std::unique_ptr<LightningInfill> meshLightning(const std::vector<Paths>& infill_areas, const Settings& s,
+                                               int threads) {
+    const coord_um line_distance = s.lengthMicrons(key::infill_line_distance);
+    if (s.text(key::infill_pattern) != "lightning" || line_distance <= 0)
+        return nullptr;
+    const coord_um width = s.lengthMicrons(key::infill_line_width);
+    const coord_um layer_height = s.lengthMicrons(key::layer_height);
+    LightningParams p;
+    p.radius_um = std::max(line_distance, width) / 2;
+    p.wall_reach_um = reachOver(layer_height, s.angleRadians(key::lightning_infill_overhang_angle));
+    p.prune_um = reachOver(layer_height, s.angleRadians(key::lightning_infill_prune_angle));
+    p.straighten_um = reachOver(layer_height, s.angleRadians(key::lightning_infill_straightening_angle));
+    p.line_width_um = width;
+    const coord_um inset = coord_um(countOf(s, key::infill_wall_line_count)) * width;
+    std::vector<Paths> outlines(infill_areas.size());
+    parallelFor(infill_areas.size(), threads, [&](std::size_t i) {
+        outlines[i] = inset > 0 ? offsetMiter(infill_areas[i], -inset) : infill_areas[i];
+    });
+    return std::make_unique<LightningInfill>(p, outlines, threads);
+}
+
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base) {
     std::vector<ExtrusionPath> out;
     if (base.line_distance_um <= 0 || layer.by_density.empty())

@@ -30,6 +30,7 @@
 #include "toolpaths/infill/InfillPatterns.h"
 #include "toolpaths/infill/SubdivCubes.h"
 #include "toolpaths/infill/cross/CrossFill.h"
+#include "toolpaths/infill/lightning/LightningInfill.h"
 
 namespace mixengine {
 
@@ -54,6 +55,13 @@ std::unique_ptr<SubdivCubes> meshSubdivCubes(const std::vector<SlicedLayer>& lay
 /// infill_line_width; the density from cross_infill_density_image when it names an existing image
 /// (toolpaths/infill/cross/DensityImage.h), else uniform.
 std::unique_ptr<CrossFill> meshCrossFill(const Settings& s, const Box2& mesh_box);
+/// Lightning infill's trees (toolpaths/infill/lightning/LightningInfill.h) for a mesh whose
+/// infill_pattern is lightning and whose infill_line_distance is above 0 (nothing otherwise):
+/// `infill_areas[i]` is layer i's infill area (before it is split by density); the trees live in
+/// it less infill_wall_line_count · infill_line_width; the angles' reaches are taken over
+/// layer_height (at most 10 m).
+std::unique_ptr<LightningInfill> meshLightning(const std::vector<Paths>& infill_areas, const Settings& s,
+                                               int threads);
 
 /// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base);

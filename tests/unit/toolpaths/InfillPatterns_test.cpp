@@ -167,6 +167,7 @@ TEST(InfillPatterns, NamesAsCura) {
     EXPECT_EQ(infillPatternOf("cubicsubdiv", "infill_pattern"), InfillPattern::CubicSubdiv);
     EXPECT_EQ(infillPatternOf("cross", "infill_pattern"), InfillPattern::Cross);
     EXPECT_EQ(infillPatternOf("cross_3d", "infill_pattern"), InfillPattern::Cross3d);
+    EXPECT_EQ(infillPatternOf("lightning", "infill_pattern"), InfillPattern::Lightning);
     EXPECT_THROW(infillPatternOf("honeycomb", "infill_pattern"), InputError);
     EXPECT_TRUE(infill(InfillPattern::Grid, 0).empty());
 }
