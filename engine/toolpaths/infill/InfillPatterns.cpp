@@ -127,88 +127,86 @@ Drawn crossPattern(const Paths& area, const InfillParams& p, bool connected) {
             drawn.lines.push_back({piece[i - 1], piece[i]});
     }
     return drawn;
+}
 
-    /// The segments of the trees whose root lies in the area (or within 5 µm of it, as CuraEngine moves
-    /// a root on the edge 5 µm in before it tests).
-    Paths lightningLines(const Paths& area, const InfillParams& p) {
-        Paths lines;
-        if (p.lightning_trees == nullptr || std::abs(areaUm2(area)) < double(p.line_width_um))
-            return lines;
-        constexpr double kEdgeMargin2 = 5.0 * 5.0;
-        for (const LightningTreeLines& tree : *p.lightning_trees) {
-            if (tree.segments.empty())
-                continue;
-            if (!insideArea(area, tree.root, true) &&
-                nearestOnOutline(area, tree.root).distance2_um2 > kEdgeMargin2)
-                continue;
-            lines.insert(lines.end(), tree.segments.begin(), tree.segments.end());
-        }
+/// The segments of the trees whose root lies in the area (or within 5 µm of it, as CuraEngine moves
+/// a root on the edge 5 µm in before it tests).
+Paths lightningLines(const Paths& area, const InfillParams& p) {
+    Paths lines;
+    if (p.lightning_trees == nullptr || std::abs(areaUm2(area)) < double(p.line_width_um))
         return lines;
+    constexpr double kEdgeMargin2 = 5.0 * 5.0;
+    for (const LightningTreeLines& tree : *p.lightning_trees) {
+        if (tree.segments.empty())
+            continue;
+        if (!insideArea(area, tree.root, true) &&
+            nearestOnOutline(area, tree.root).distance2_um2 > kEdgeMargin2)
+            continue;
+        lines.insert(lines.end(), tree.segments.begin(), tree.segments.end());
     }
+    return lines;
+}
 
-    Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
-        const coord_um d = p.line_distance_um;
-        switch (p.pattern) {
-            case InfillPattern::ZigZag: {
-                const coord_um shift = p.shift_um + originShift(p.origin_um, p.angle_degrees);
-                return {zigzagLines(area, d, p.angle_degrees, shift, p.zigzag_end_pieces, p.zag_skip_count),
-                        {}};
-            }
-            case InfillPattern::Gyroid:
-                return {gyroidCurves(area, static_cast<coord_um>(kGyroidPeriodPerLineDistance * double(d)),
-                                     p.z_um),
-                        {}};
-            case InfillPattern::Concentric:
-                return {{}, concentricLoops(area, p)};
-            case InfillPattern::Cross:
-            case InfillPattern::Cross3d:
-                if (p.cross != nullptr)
-                    return crossPattern(area, p, connected);
-                return {separateLines(area, {lineSet(p, d, p.angle_degrees, 0)}, p.line_width_um), {}};
-            case InfillPattern::Lightning:
-                return {lightningLines(area, p), {}};
-            case InfillPattern::CubicSubdiv:
-                if (p.subdiv_lines != nullptr)
-                    return {clipLines(*p.subdiv_lines, area), {}};
-                return {separateLines(area, lineSetsOf(p), p.line_width_um), {}};
-            default: {
-                const std::vector<LineSet> sets = lineSetsOf(p);
-                return {connected ? connectedLines(area, sets) : separateLines(area, sets, p.line_width_um),
-                        {}};
-            }
+Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
+    const coord_um d = p.line_distance_um;
+    switch (p.pattern) {
+        case InfillPattern::ZigZag: {
+            const coord_um shift = p.shift_um + originShift(p.origin_um, p.angle_degrees);
+            return {zigzagLines(area, d, p.angle_degrees, shift, p.zigzag_end_pieces, p.zag_skip_count), {}};
+        }
+        case InfillPattern::Gyroid:
+            return {
+                gyroidCurves(area, static_cast<coord_um>(kGyroidPeriodPerLineDistance * double(d)), p.z_um),
+                {}};
+        case InfillPattern::Concentric:
+            return {{}, concentricLoops(area, p)};
+        case InfillPattern::Cross:
+        case InfillPattern::Cross3d:
+            if (p.cross != nullptr)
+                return crossPattern(area, p, connected);
+            return {separateLines(area, {lineSet(p, d, p.angle_degrees, 0)}, p.line_width_um), {}};
+        case InfillPattern::Lightning:
+            return {lightningLines(area, p), {}};
+        case InfillPattern::CubicSubdiv:
+            if (p.subdiv_lines != nullptr)
+                return {clipLines(*p.subdiv_lines, area), {}};
+            return {separateLines(area, lineSetsOf(p), p.line_width_um), {}};
+        default: {
+            const std::vector<LineSet> sets = lineSetsOf(p);
+            return {connected ? connectedLines(area, sets) : separateLines(area, sets, p.line_width_um), {}};
         }
     }
+}
 
-    bool crossBased(InfillPattern pattern) {
-        return pattern == InfillPattern::Cross || pattern == InfillPattern::Cross3d;
-    }
+bool crossBased(InfillPattern pattern) {
+    return pattern == InfillPattern::Cross || pattern == InfillPattern::Cross3d;
+}
 
-    bool lineBased(InfillPattern pattern) {
-        return pattern != InfillPattern::ZigZag && pattern != InfillPattern::Concentric &&
-               pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv &&
-               !crossBased(pattern) && pattern != InfillPattern::Lightning;
-    }
+bool lineBased(InfillPattern pattern) {
+    return pattern != InfillPattern::ZigZag && pattern != InfillPattern::Concentric &&
+           pattern != InfillPattern::Gyroid && pattern != InfillPattern::CubicSubdiv &&
+           !crossBased(pattern) && pattern != InfillPattern::Lightning;
+}
 
-    /// Whether the pattern's lines are joined (CuraEngine's zig_zaggify, off for an even multiplier).
-    bool joinsLines(const InfillParams& p, bool even) {
-        if (p.pattern == InfillPattern::ZigZag)
-            return true;
-        return p.connect_lines && !even &&
-               (lineBased(p.pattern) || p.pattern == InfillPattern::Gyroid || crossBased(p.pattern));
-    }
+/// Whether the pattern's lines are joined (CuraEngine's zig_zaggify, off for an even multiplier).
+bool joinsLines(const InfillParams& p, bool even) {
+    if (p.pattern == InfillPattern::ZigZag)
+        return true;
+    return p.connect_lines && !even &&
+           (lineBased(p.pattern) || p.pattern == InfillPattern::Gyroid || crossBased(p.pattern));
+}
 
-    Paths offsetArea(const Paths& area, coord_um delta, Loops loops) {
-        return delta == 0 ? area : offsetMiter(area, delta, loops);
-    }
+Paths offsetArea(const Paths& area, coord_um delta, Loops loops) {
+    return delta == 0 ? area : offsetMiter(area, delta, loops);
+}
 
-    void appendPaths(const Paths& paths, bool closed, const InfillParams& p,
-                     std::vector<ExtrusionPath>& out) {
-        const FeatureStyle style{p.line_width_um, p.speed_mm_s, p.flow, p.extruder};
-        for (const Path& path : paths) {
-            if (path.size() >= (closed ? 3U : 2U))
-                out.push_back(styledPath(path, closed, p.feature, style));
-        }
+void appendPaths(const Paths& paths, bool closed, const InfillParams& p, std::vector<ExtrusionPath>& out) {
+    const FeatureStyle style{p.line_width_um, p.speed_mm_s, p.flow, p.extruder};
+    for (const Path& path : paths) {
+        if (path.size() >= (closed ? 3U : 2U))
+            out.push_back(styledPath(path, closed, p.feature, style));
     }
+}
 
 }  // namespace
 
