@@ -6,7 +6,6 @@
 #include "common/ParallelFor.h"
 #include "geometry/Angles.h"
 #include "geometry/PolygonOps.h"
-#include "toolpaths/core/LayerWindows.h"
 #include "toolpaths/support/SupportSmoothing.h"
 
 namespace mixengine {
@@ -123,27 +122,72 @@ void keepColumnsOnThePlate(std::vector<SupportLayerAreas>& layers) {
         layers[i].support = intersectAll(layers[i].support, layers[i - 1].support);
 }
 
+/// The layers CuraEngine 4.13 looks at for an interface `layers` thick, sampled every `skip`.
+float interfaceStep(int layers, int skip) {
+    const int scans = std::max(1, (layers - 1) / std::max(1, skip));
+    return std::max(1.0f, float(layers - 1) / float(scans));
+}
+
+/// The model on the layers above layer i that its roof lies under (see the header).
+Paths roofModel(const std::vector<Paths>& model, int i, const SupportAreaParams& p, float step) {
+    const int n = static_cast<int>(model.size());
+    const int top = std::min(n - 1, i + p.roof_layers + p.top_gap_layers);
+    Paths near;
+    for (float at = float(top); at > float(i + p.top_gap_layers); at -= step) {
+        const Paths& outlines = model[static_cast<std::size_t>(std::lround(at))];
+        near.insert(near.end(), outlines.begin(), outlines.end());
+    }
+    return near;
+}
+
+/// The model on the layers below layer i that its floor lies over (see the header).
+Paths floorModel(const std::vector<Paths>& model, int i, const SupportAreaParams& p, float step) {
+    const int first = std::max(0, i - p.floor_layers - p.bottom_gap_layers);
+    Paths near;
+    for (float at = float(first); std::lround(at) < i - p.bottom_gap_layers; at += step) {
+        const Paths& outlines = model[static_cast<std::size_t>(std::lround(at))];
+        near.insert(near.end(), outlines.begin(), outlines.end());
+    }
+    return near;
+}
+
+/// One interface of a layer, taken out of `support` (CuraEngine 4.13's generateSupportInterfaceLayer).
+Paths takeInterface(Paths& support, const Paths& model_near, coord_um line_width_um, coord_um offset_um,
+                    double min_area_um2) {
+    if (model_near.empty())
+        return {};
+    Paths found = intersectAll(support, unionOf(model_near));
+    if (found.empty())
+        return {};
+    found = intersectAll(offsetMiter(found, line_width_um, kCuraMiterLimit), support);
+    if (offset_um != 0) {
+        found = offsetMiter(found, offset_um, kCuraMiterLimit);
+        if (offset_um > 0)  // the interface must not reach beyond the support
+            found = intersectAll(found, support);
+    }
+    if (min_area_um2 > 0)
+        found = removeSmallIslands(found, min_area_um2);
+    if (!found.empty())
+        support = differenceOf(support, found);
+    return found;
+}
+
 void splitInterfaces(std::vector<SupportLayerAreas>& out, const std::vector<Paths>& model,
                      const SupportAreaParams& p, int threads) {
     const int n = static_cast<int>(model.size());
-    const int roof_window = p.roof_layers > 0 ? p.top_gap_layers + p.roof_layers : 0;
-    const int floor_window = p.floor_layers > 0 ? p.bottom_gap_layers + p.floor_layers : 0;
-    const std::vector<Paths> above = windowUnions(model, roof_window, threads);
-    const std::vector<Paths> below = windowUnions(model, floor_window, threads);
+    const float roof_step = interfaceStep(p.roof_layers, p.interface_skip_layers);
+    const float floor_step = interfaceStep(p.floor_layers, p.interface_skip_layers);
     parallelFor(model.size(), threads, [&](std::size_t index) {
         const int i = static_cast<int>(index);
         SupportLayerAreas& layer = out[index];
         if (layer.support.empty())
             return;
-        if (roof_window > 0 && i + 1 < n) {
-            const std::size_t from = static_cast<std::size_t>(std::min(i + 1, std::max(0, n - roof_window)));
-            layer.roof = intersectAll(layer.support, above[from]);
-        }
-        if (floor_window > 0 && i > 0) {
-            const std::size_t from = static_cast<std::size_t>(std::max(0, i - floor_window));
-            layer.floor = differenceOf(intersectAll(layer.support, below[from]), layer.roof);
-        }
-        layer.support = differenceOf(layer.support, unionOf(layer.roof, layer.floor));
+        if (p.roof_layers > 0 && i < n - p.top_gap_layers)
+            layer.roof = takeInterface(layer.support, roofModel(model, i, p, roof_step), p.roof_line_width_um,
+                                       p.roof_offset_um, p.min_roof_area_um2);
+        if (p.floor_layers > 0 && i >= p.bottom_gap_layers)
+            layer.floor = takeInterface(layer.support, floorModel(model, i, p, floor_step),
+                                        p.floor_line_width_um, p.floor_offset_um, p.min_floor_area_um2);
     });
 }
 

@@ -21,8 +21,15 @@
 //     columns that reach the plate; support with no support above or below it is dropped;
 //   - towers (params.towers, toolpaths/support/SupportTowers.h): their roofs are added to each layer's
 //     support before it is joined with the layer above;
-//   - interfaces: the top roof_layers of support under the model are roof, the bottom
-//     floor_layers on the model are floor (support_roof_height / support_bottom_height in layers).
+//   - interfaces, as CuraEngine 4.13's generateSupportRoof / generateSupportBottom (roof first, then
+//     the floor from what the roof left): on layer i the roof is the support that lies under the
+//     model on layers i + top_gap + 1 … i + top_gap + roof_layers, the floor the support over the
+//     model on layers i − bottom_gap − floor_layers … i − bottom_gap − 1 (both sampled about every
+//     interface_skip_layers layers, as CuraEngine: z_skip = (layers − 1) / max(1, (layers − 1) /
+//     skip)); that is grown by the interface's line width (kept within the support), then by its
+//     offset (support_roof_offset / support_bottom_offset; kept within the support when growing),
+//     and its islands under the minimum area (minimum_roof_area / minimum_bottom_area) are dropped;
+//     the body is what is left.
 #include <vector>
 
 #include "geometry/Point.h"
@@ -47,6 +54,13 @@ struct SupportAreaParams {
     double min_area_um2 = 0;
     int roof_layers = 0;                ///< 0 = no roof interface
     int floor_layers = 0;               ///< 0 = no floor interface
+    int interface_skip_layers = 1;      ///< support_interface_skip_height in layers (at least 1)
+    coord_um roof_line_width_um = 0;    ///< the roof's margin around the model above
+    coord_um floor_line_width_um = 0;   ///< the floor's margin around the model below
+    coord_um roof_offset_um = 0;        ///< support_roof_offset
+    coord_um floor_offset_um = 0;       ///< support_bottom_offset
+    double min_roof_area_um2 = 0;       ///< minimum_roof_area
+    double min_floor_area_um2 = 0;      ///< minimum_bottom_area
     coord_um conical_step_um = 0;       ///< conical support: offset per layer going down (0 = off)
     coord_um conical_min_width_um = 0;  ///< narrower parts are not shrunk
     SupportTowerParams towers;          ///< support towers (toolpaths/support/SupportTowers.h); default off

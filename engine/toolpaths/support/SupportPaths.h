@@ -32,9 +32,11 @@ struct SupportFill {
     coord_um line_distance_um = 0;
     double angle_degrees = 0;
     int wall_count = 0;
-    bool connect_zigzags = false;  ///< support_connect_zigzags: zigzag with its end pieces
-    int zag_skip_count = 0;        ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
-    coord_um overlap_um = 0;       ///< how far the infill reaches into the walls (infill_overlap_mm)
+    /// zigzag's end pieces, as CuraEngine 4.13 (toolpaths/infill/ZigZag.h): always printed, their last lines
+    /// only for the body with support_connect_zigzags
+    ZigzagEnds zigzag_ends = ZigzagEnds::Open;
+    int zag_skip_count = 0;   ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
+    coord_um overlap_um = 0;  ///< how far the infill reaches into the walls (infill_overlap_mm)
     FeatureStyle style;
 };
 
