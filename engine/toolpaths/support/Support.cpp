@@ -97,6 +97,14 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     p.towers = towerParams(s, layer_height);
     p.smoothing_um = smoothingDistance(s);
     interfaceParams(s, layer_height, p);
+    p.layer_height_um = layer_height;
+    // as CuraEngine: steps of support_bottom_stair_step_height / layer_height + 1 layers
+    p.stair_step_layers =
+        static_cast<int>(std::max<coord_um>(0, s.lengthMicrons(key::support_bottom_stair_step_height)) /
+                             std::max<coord_um>(1, layer_height) +
+                         1);
+    p.stair_step_width_um = s.lengthMicrons(key::support_bottom_stair_step_width);
+    p.stair_min_slope_degrees = s.angleDegrees(key::support_bottom_stair_step_min_slope);
     return p;
 }
 

@@ -7,6 +7,7 @@
 #include "geometry/Angles.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/support/SupportSmoothing.h"
+#include "toolpaths/support/SupportStairs.h"
 
 namespace mixengine {
 namespace {
@@ -54,7 +55,8 @@ void startTowersUnderIslands(TowerRoofs& roofs, const std::vector<Paths>& suppor
 /// towers' roofs), joined (closing by the join distance), minus the model here and bottom_gap layers
 /// below, simplified.
 std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<Paths>& model,
-                                 const std::vector<Paths>& blocked, const SupportAreaParams& p) {
+                                 const std::vector<Paths>& blocked, const SupportAreaParams& p,
+                                 StairSteps* stairs) {
     const std::vector<Paths>& full = overhangs.full;
     const std::size_t n = full.size();
     const bool towers = p.towers.max_supported_diameter_um > 0;
@@ -71,13 +73,15 @@ std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<P
             roofs.startAt(pointsOf(overhangs, i + 1), pointsOf(overhangs, i));
             roofs.addTo(current);
         }
+        const Paths stair = stairs != nullptr ? stairs->keptFree(i) : Paths{};  // every layer, top down
         if (current.empty())
             continue;
         if (p.join_distance_um > 0)  // as CuraEngine: its offsets bevel at a miter limit of 1.2
             current = offsetMiter(offsetMiter(current, p.join_distance_um, kCuraMiterLimit),
                                   -p.join_distance_um, kCuraMiterLimit);
         current = smoothOutward(current, kSmoothingAngleDegrees, p.smoothing_um);
-        current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
+        current = cleanPolygons(
+            differenceOf(current, stair.empty() ? blocked[i] : unionOf(blocked[i], stair)), kCleanUm);
         support[i] = current;
         if (towers)
             startTowersUnderIslands(roofs, support, model, i, p);
@@ -224,7 +228,12 @@ std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& mod
     parallelFor(n, threads, [&](std::size_t i) {
         blocked[i] = gap > 0 && i >= gap ? unionOf(simple[i], simple[i - gap]) : simple[i];
     });
-    const std::vector<Paths> propagated = propagateDown(overhangs, simple, blocked, p);
+    const StairParams stair_params{p.stair_step_layers, p.stair_step_width_um, p.stair_min_slope_degrees,
+                                   p.bottom_gap_layers};
+    const std::vector<Paths> sloped = slopedAreas(simple, stair_params, p.layer_height_um, threads);
+    StairSteps stairs(&simple, &sloped, stair_params);
+    const std::vector<Paths> propagated =
+        propagateDown(overhangs, simple, blocked, p, p.stair_step_layers > 1 ? &stairs : nullptr);
     const std::vector<Paths> from_meshes = supportMeshSupport(meshes, blocked);
     std::vector<SupportLayerAreas> out(n);
     const std::size_t top = static_cast<std::size_t>(std::max(0, p.top_gap_layers));

@@ -7,8 +7,10 @@
 //               0, as CuraEngine, one wall more and lines/zigzag become grid; Feature
 //               Support, style of the support infill extruder (support_line_width,
 //               speed_support_infill, support_material_flow);
-//   roof/floor — support_roof_* / support_bottom_* pattern, line distance, angles (default 90°),
-//               width, speed and flow; Feature SupportInterface.
+//   roof/floor — support_roof_* / support_bottom_* pattern, line distance, angles (none given: as
+//               CuraEngine 4.13, 45°/135° in turn, 90° when thinner than two layers, 0° concentric),
+//               width, speed and flow; Feature SupportInterface; a roof on layer 0 has one wall and,
+//               dense (lines closer than two widths), its lines spread by initial_layer_line_width_factor.
 // With gradual_support_infill_steps or support_infill_sparse_thickness the body's infill follows its
 // arrangement (toolpaths/infill/InfillLayers.h, as CuraEngine's gradual support and combined support
 // layers): inside the walls, the areas printed t layers thick first (laid out as for a line t times
