@@ -105,9 +105,7 @@ SIZE_CASES = [
     ({}, "support_connect_zigzags", "False"),
     ({"adhesion_type": "raft"}, "raft_surface_line_width", "0.6"),
     ({}, "support_conical_enabled", "True"),
-    pytest.param({"support_structure": "tree"}, "support_tree_branch_distance", "1.5",
-                 marks=pytest.mark.xfail(strict=True, reason="CuraEngine −89 mm of filament, MixEngine −27 mm: "
-                                         "MixEngine's branches do not thin out as CuraEngine's do")),
+    ({"support_structure": "tree"}, "support_tree_branch_distance", "1.5"),
     ({"support_structure": "tree"}, "support_tree_collision_resolution", "0.3"),
 ]
 

@@ -7,7 +7,6 @@
 #include "common/ParallelFor.h"
 #include "geometry/Angles.h"
 #include "geometry/PolygonOps.h"
-#include "slicing/OutlineCleanup.h"
 #include "toolpaths/support/TreeNodes.h"
 
 namespace mixengine {
@@ -15,6 +14,7 @@ namespace {
 
 constexpr int kCircleCorners = 10;  // as CuraEngine
 constexpr coord_um kFloorMarginUm = 10;
+constexpr coord_um kCleanUm = 10;
 
 coord_um ceilDiv(coord_um a, coord_um b) {
     return b <= 0 ? 0 : (a + b - 1) / b;
@@ -75,7 +75,6 @@ struct CircleStyle {
     coord_um tip_radius_um = 300;
     int tip_layers = 0;
     double growth_per_layer = 0;
-    coord_um resolution_um = 200;  ///< the body's simplification may deviate this much
 };
 
 CircleStyle circleStyle(const Settings& g, coord_um layer_height) {
@@ -84,7 +83,6 @@ CircleStyle circleStyle(const Settings& g, coord_um layer_height) {
     c.tip_radius_um = g.lengthMicrons(key::support_line_width) / 2 * 3 / 2;
     c.tip_layers = static_cast<int>(std::max<coord_um>(0, c.radius_um - c.tip_radius_um) / layer_height);
     c.growth_per_layer = growthPerLayer(g, layer_height, c.radius_um);
-    c.resolution_um = g.lengthMicrons(key::support_tree_collision_resolution);
     return c;
 }
 
@@ -128,25 +126,7 @@ Paths floorOf(const Paths& body, const std::vector<Paths>& model, int layer, con
     return floor;
 }
 
-/// As CuraEngine 4.13, the body of layer `layer` of `layers` is simplified as much as possible
-/// without altering a single circle: segments shorter than the side of the widest circle a branch
-/// can have there go, deviating at most support_tree_collision_resolution.
-Paths simplifiedBody(const Paths& body, const CircleStyle& c, int layer, int layers) {
-    const double side =
-        std::floor(2.0 * double(c.radius_um) * std::sin(3.14159265358979323846 / kCircleCorners));
-    const double widest = std::max(0, layers - layer - c.tip_layers) * c.growth_per_layer;
-    const coord_um shortest = static_cast<coord_um>(side * (1.0 + widest));
-    Paths out;
-    for (const Path& loop : body) {
-        Path simple = simplifyLoop(loop, shortest, c.resolution_um);
-        if (!simple.empty())
-            out.push_back(std::move(simple));
-    }
-    return out;
-}
-
-SupportLayerAreas drawLayer(const std::vector<TreeNode>& nodes, const CircleStyle& style, int layer,
-                            int layers) {
+SupportLayerAreas drawLayer(const std::vector<TreeNode>& nodes, const CircleStyle& style) {
     Paths body, roof;
     for (const TreeNode& node : nodes) {
         if (node.removed)
@@ -155,7 +135,7 @@ SupportLayerAreas drawLayer(const std::vector<TreeNode>& nodes, const CircleStyl
     }
     SupportLayerAreas out;
     out.roof = unionOf(roof);
-    out.support = simplifiedBody(differenceOf(unionOf(body), out.roof), style, layer, layers);
+    out.support = cleanPolygons(differenceOf(unionOf(body), out.roof), kCleanUm);
     return out;
 }
 
@@ -175,7 +155,7 @@ std::vector<SupportLayerAreas> treeSupportAreas(const Settings& g, const std::ve
     const CircleStyle style = circleStyle(g, height);
     const bool floors = g.boolean(key::support_bottom_enable);
     parallelFor(model.size(), threads, [&](std::size_t i) {
-        out[i] = drawLayer(nodes[i], style, static_cast<int>(i), static_cast<int>(model.size()));
+        out[i] = drawLayer(nodes[i], style);
         if (floors && !out[i].support.empty()) {
             out[i].floor = floorOf(out[i].support, model, static_cast<int>(i), g, height);
             if (!out[i].floor.empty())

@@ -9,9 +9,6 @@
 //     from 0.75 line widths at the contact to the full radius;
 //   - below, the radius grows by sin(support_tree_branch_diameter_angle) · layer_height per layer;
 //   - the top support_roof_height of each branch is roof (support_roof_enable);
-//   - the body (the circles less the roof) is simplified: segments shorter than the side of the
-//     widest circle a branch can have on that layer go, deviating at most
-//     support_tree_collision_resolution (as CuraEngine 4.13's drawCircles);
 //   - floor (support_bottom_enable): where the support stands on the model
 //     support_bottom_distance + up to support_bottom_height below (sampled every
 //     support_interface_skip_height), less the floor grown by 10 µm from the body.
