@@ -1,9 +1,12 @@
 """Normal support's detail settings against Debian's CuraEngine 4.13 (issue 19), on side_by_side's "parity" model
 (the Ender-3 with support_enable, every resolved value given to both engines): support_brim_enable,
 support_skip_some_zags, gradual_support_infill_steps and support_infill_sparse_thickness change both engines'
-prints the same way. Figures are read from the G-code (parity.signature: E moves, lengths, ;TYPE: markers).
+prints the same way; on the "shelf" model the interface, zigzag, conical, tree and raft surface settings move both
+prints by a similar amount (SIZE_CASES). Figures are read from the G-code (parity.signature: E moves, lengths, ;TYPE: markers).
 """
 import re
+
+import pytest
 
 import parity
 import side_by_side as sbs
@@ -79,3 +82,56 @@ def test_gradual_support_and_thicker_support_layers_print_less_as_in_curaengine(
     d_mix = _figures(mix)["filament"] - _figures(mix_base)["filament"]
     assert d_cura < -1.0
     assert abs(d_mix - d_cura) < 0.05 * abs(d_cura), (d_mix, d_cura)
+
+
+# ---------------------------------------------------------------------------------------------------------
+# The size of the change on the shelf (side_by_side's "shelf": wide overhangs, a bridge over a slab so that
+# support stands on the model, a cantilever over the bed, a slope): each setting must move MixEngine's
+# filament and extruded length the way it moves CuraEngine's, by between a third and three times as much,
+# wherever CuraEngine's change passes parity.THRESHOLDS' absolute part (0.5 mm of filament, 5 mm extruded;
+# the relative part would ignore every interface setting on a print this large).
+SHELF = "shelf"
+SIZE_CASES = [
+    ({}, "support_roof_enable", "False"),
+    ({}, "support_roof_pattern", "triangles"),
+    ({}, "support_roof_pattern", "concentric"),
+    ({}, "support_roof_pattern", "zigzag"),
+    ({}, "support_bottom_pattern", "triangles"),
+    ({}, "support_bottom_pattern", "concentric"),
+    ({}, "support_bottom_pattern", "zigzag"),
+    ({}, "support_bottom_height", "1.2"),
+    ({}, "support_bottom_offset", "-0.4"),
+    ({}, "support_roof_offset", "-0.4"),
+    ({}, "support_connect_zigzags", "False"),
+    ({"adhesion_type": "raft"}, "raft_surface_line_width", "0.6"),
+    ({}, "support_conical_enabled", "True"),
+    ({"support_structure": "tree"}, "support_tree_branch_distance", "1.5"),
+    ({"support_structure": "tree"}, "support_tree_collision_resolution", "0.3"),
+]
+
+
+def _shelf_deltas(context, key, value):
+    base, flipped = dict(SUPPORT, **context), dict(SUPPORT, **context, **{key: value})
+    out = {}
+    for engine, run in (("cura", sbs.run_cura), ("mix", sbs.run_mixengine)):
+        a, b = run(SHELF, base), run(SHELF, flipped)
+        assert a.rc == 0 and b.rc == 0, (a.stderr, b.stderr)
+        fa, fb = _figures(a.gcode), _figures(b.gcode)
+        out[engine] = {m: (fb[m] - fa[m], fa[m]) for m in ("filament", "extrude_len")}
+    return out
+
+
+
+@pytest.mark.parametrize("context,key,value", SIZE_CASES,
+                         ids=[f"{c[1]}={c[2]}" for c in (getattr(c, "values", c) for c in SIZE_CASES)])
+def test_support_setting_moves_the_shelf_print_as_much_as_curaengine(context, key, value):
+    deltas = _shelf_deltas(context, key, value)
+    clear = 0
+    for metric in ("filament", "extrude_len"):
+        d_cura, base = deltas["cura"][metric]
+        d_mix = deltas["mix"][metric][0]
+        if abs(d_cura) < parity.THRESHOLDS[metric][1]:
+            continue
+        clear += 1
+        assert d_cura * d_mix > 0 and 1 / 3 <= d_mix / d_cura <= 3, (metric, d_cura, d_mix)
+    assert clear > 0, deltas  # the shelf shows each of these settings

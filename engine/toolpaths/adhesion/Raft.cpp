@@ -83,7 +83,8 @@ std::vector<ExtrusionPath> raftLayerPaths(const Paths& outline, const Settings& 
         return out;
     }
     const Paths area = simplified(inside, kFineResolutionUm, kFineDeviationUm);
-    appendLines(zigzagLines(area, spacing, kind.angle_degrees, 0, false), kind.feature, style, out);
+    appendLines(zigzagLines(area, spacing, kind.angle_degrees, 0, ZigzagEnds::Open), kind.feature, style,
+                out);
     return out;
 }
 

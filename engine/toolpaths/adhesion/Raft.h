@@ -9,7 +9,9 @@
 //   interface — zigzag raft_interface_line_spacing apart at 45° (90° without surface layers) in the
 //               outline shrunk by raft_interface_line_width/2;
 //   surface k — (k = 1 … raft_surface_layers) zigzag raft_surface_line_spacing apart at 90°·k in the
-//               outline shrunk by raft_surface_line_width/2.
+//               outline shrunk by raft_surface_line_width/2;
+//   the zigzags print their end pieces without their last lines (toolpaths/infill/ZigZag.h, ZigzagEnds::
+//   Open), as CuraEngine's raft zigzag (end pieces on, not connected).
 // Each layer has its width (raft_*_line_width, no initial-layer factor), speed (raft_*_speed, no
 // first-layer slow-down), flow 100 %, fan (raft_*_fan_speed) and its own Feature (RaftBase,
 // RaftInterface, RaftSurface: ;TYPE:SUPPORT-INTERFACE, SUPPORT, SUPPORT-INTERFACE), all from the

@@ -152,7 +152,7 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
     switch (p.pattern) {
         case InfillPattern::ZigZag: {
             const coord_um shift = p.shift_um + originShift(p.origin_um, p.angle_degrees);
-            return {zigzagLines(area, d, p.angle_degrees, shift, p.zigzag_end_pieces, p.zag_skip_count), {}};
+            return {zigzagLines(area, d, p.angle_degrees, shift, p.zigzag_ends, p.zag_skip_count), {}};
         }
         case InfillPattern::Gyroid:
             return {

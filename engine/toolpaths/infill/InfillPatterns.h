@@ -48,6 +48,7 @@
 #include "geometry/Point.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/ExtrusionPath.h"
+#include "toolpaths/infill/ZigZag.h"
 #include "toolpaths/infill/cross/CrossFill.h"
 #include "toolpaths/infill/lightning/TreeLines.h"
 
@@ -83,15 +84,15 @@ struct InfillParams {
     double speed_mm_s = 60;
     double flow = 1.0;
     int extruder = 0;
-    bool zigzag_end_pieces = false;  ///< zigzag: also print the area's ends (support_connect_zigzags)
-    int zag_skip_count = 0;          ///< zigzag: leave out every n-th connection (toolpaths/infill/ZigZag.h)
-    Point2 origin_um{0, 0};          ///< every line set passes through it
-    Loops area_loops = Loops::Any;   ///< what is known of the area's loops (geometry/PolygonOps.h)
-    coord_um shift_um = 0;           ///< extra shift of every line set across its lines
-    coord_um overlap_um = 0;         ///< the lines reach this far beyond the area
-    int wall_count = 0;              ///< loops around the area (infill_wall_line_count)
-    int multiplier = 1;              ///< parallel lines per line (infill_multiplier)
-    bool connect_lines = false;      ///< zig_zaggify_infill
+    ZigzagEnds zigzag_ends = ZigzagEnds::None;  ///< zigzag: the area's ends (toolpaths/infill/ZigZag.h)
+    int zag_skip_count = 0;         ///< zigzag: leave out every n-th connection (toolpaths/infill/ZigZag.h)
+    Point2 origin_um{0, 0};         ///< every line set passes through it
+    Loops area_loops = Loops::Any;  ///< what is known of the area's loops (geometry/PolygonOps.h)
+    coord_um shift_um = 0;          ///< extra shift of every line set across its lines
+    coord_um overlap_um = 0;        ///< the lines reach this far beyond the area
+    int wall_count = 0;             ///< loops around the area (infill_wall_line_count)
+    int multiplier = 1;             ///< parallel lines per line (infill_multiplier)
+    bool connect_lines = false;     ///< zig_zaggify_infill
     const Paths* subdiv_lines = nullptr;  ///< cubicsubdiv: the octree's lines at z_um (the caller's)
     const CrossFill* cross = nullptr;     ///< cross, cross_3d: the fractal (the caller's)
     coord_um pocket_um = 0;               ///< cross_3d: cross_infill_pocket_size (≤ 10: none)

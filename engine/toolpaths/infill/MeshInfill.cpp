@@ -92,7 +92,7 @@ void thickerLayers(const LayerInfill& layer, const InfillParams& base, std::vect
                 continue;
             InfillParams p = densityParams(base, k, last);
             p.wall_count = 0;
-            p.zigzag_end_pieces = true;
+            p.zigzag_ends = ZigzagEnds::Connected;
             p.flow = base.flow * double(t + 1);
             append(generateInfill(layer.by_density[k][t], p), out);
         }

@@ -119,8 +119,9 @@ Paths chain(const Paths& polys, std::vector<Crossing>& cs) {
     return lines;
 }
 
-/// Boundary pieces between consecutive crossings of the same scanline, as separate polylines.
-void appendEndPieces(const Paths& polys, const std::vector<Crossing>& cs, Paths& lines) {
+/// Boundary pieces between consecutive crossings of the same scanline, as separate polylines; open:
+/// without their last line.
+void appendEndPieces(const Paths& polys, const std::vector<Crossing>& cs, bool open, Paths& lines) {
     forEachBoundaryStep(cs, [&](std::size_t i, std::size_t k) {
         const Crossing& from = cs[i];
         const Crossing& to = cs[k];
@@ -129,14 +130,31 @@ void appendEndPieces(const Paths& polys, const std::vector<Crossing>& cs, Paths&
         Path piece{from.point};
         const Path inner = interiorOf(polys, from, to);
         piece.insert(piece.end(), inner.begin(), inner.end());
-        piece.push_back(to.point);
-        lines.push_back(std::move(piece));
+        if (!open)
+            piece.push_back(to.point);
+        if (piece.size() >= 2)
+            lines.push_back(std::move(piece));
     });
+}
+
+/// The polygons no scanline crosses, whole (from their last vertex round to it again); open: without
+/// their last line.
+void appendUncrossed(const Paths& polys, const std::vector<Crossing>& cs, bool open, Paths& lines) {
+    std::vector<bool> crossed(polys.size(), false);
+    for (const Crossing& c : cs)
+        crossed[c.polygon] = true;
+    for (std::size_t i = 0; i < polys.size(); ++i) {
+        if (crossed[i] || polys[i].size() < 2)
+            continue;
+        Path piece{polys[i].back()};
+        piece.insert(piece.end(), polys[i].begin(), polys[i].end() - (open ? 1 : 0));
+        lines.push_back(std::move(piece));
+    }
 }
 
 }  // namespace
 
-Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um shift_um, bool end_pieces,
+Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um shift_um, ZigzagEnds ends,
                   int zag_skip_count) {
     if (d <= 0 || area.empty())
         return {};
@@ -146,8 +164,10 @@ Paths zigzagLines(const Paths& area, coord_um d, double angle_degrees, coord_um 
     std::vector<Crossing> cs = pairedCrossings(rotated, d, shift);
     linkBoundary(cs, zag_skip_count);
     Paths lines = chain(rotated, cs);
-    if (end_pieces)
-        appendEndPieces(rotated, cs, lines);
+    if (ends != ZigzagEnds::None) {
+        appendEndPieces(rotated, cs, ends == ZigzagEnds::Open, lines);
+        appendUncrossed(rotated, cs, ends == ZigzagEnds::Open, lines);
+    }
     frame.back(lines);
     return lines;
 }

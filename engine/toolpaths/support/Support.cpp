@@ -62,6 +62,23 @@ coord_um smoothingDistance(const Settings& s) {
     return widest;
 }
 
+/// The interfaces' layers (rounded, as CuraEngine: none below half a layer), margins, offsets and
+/// minimum areas (toolpaths/support/SupportAreas.h).
+void interfaceParams(const Settings& s, coord_um layer_height, SupportAreaParams& p) {
+    if (s.boolean(key::support_roof_enable))
+        p.roof_layers = layersFor(s.lengthMicrons(key::support_roof_height), layer_height, false);
+    if (s.boolean(key::support_bottom_enable))
+        p.floor_layers = layersFor(s.lengthMicrons(key::support_bottom_height), layer_height, false);
+    p.interface_skip_layers =
+        std::max(1, layersFor(s.lengthMicrons(key::support_interface_skip_height), layer_height, false));
+    p.roof_line_width_um = s.lengthMicrons(key::support_roof_line_width);
+    p.floor_line_width_um = s.lengthMicrons(key::support_bottom_line_width);
+    p.roof_offset_um = s.lengthMicrons(key::support_roof_offset);
+    p.floor_offset_um = s.lengthMicrons(key::support_bottom_offset);
+    p.min_roof_area_um2 = s.real(key::minimum_roof_area) * 1e6;
+    p.min_floor_area_um2 = s.real(key::minimum_bottom_area) * 1e6;
+}
+
 SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     SupportAreaParams p;
     p.top_gap_layers = layersFor(s.lengthMicrons(key::support_top_distance), layer_height, true);
@@ -83,12 +100,15 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     }
     p.towers = towerParams(s, layer_height);
     p.smoothing_um = smoothingDistance(s);
-    if (s.boolean(key::support_roof_enable))
-        p.roof_layers =
-            std::max(1, layersFor(s.lengthMicrons(key::support_roof_height), layer_height, false));
-    if (s.boolean(key::support_bottom_enable))
-        p.floor_layers =
-            std::max(1, layersFor(s.lengthMicrons(key::support_bottom_height), layer_height, false));
+    interfaceParams(s, layer_height, p);
+    p.layer_height_um = layer_height;
+    // as CuraEngine: steps of support_bottom_stair_step_height / layer_height + 1 layers
+    p.stair_step_layers =
+        static_cast<int>(std::max<coord_um>(0, s.lengthMicrons(key::support_bottom_stair_step_height)) /
+                             std::max<coord_um>(1, layer_height) +
+                         1);
+    p.stair_step_width_um = s.lengthMicrons(key::support_bottom_stair_step_width);
+    p.stair_min_slope_degrees = s.angleDegrees(key::support_bottom_stair_step_min_slope);
     return p;
 }
 
@@ -106,25 +126,43 @@ struct InterfaceKeys {
     Key<SettingUnit::Text> pattern;
     Key<SettingUnit::Millimetres> line_distance;
     Key<SettingUnit::RealList> angles;
+    Key<SettingUnit::Millimetres> height;
     FeatureKeys style;
 };
 
 constexpr InterfaceKeys kRoofKeys{key::support_roof_pattern,
                                   key::support_roof_line_distance,
                                   key::support_roof_angles,
+                                  key::support_roof_height,
                                   {key::support_roof_line_width, key::speed_support_roof,
                                    key::support_roof_material_flow, key::support_roof_extruder_nr}};
 constexpr InterfaceKeys kFloorKeys{key::support_bottom_pattern,
                                    key::support_bottom_line_distance,
                                    key::support_bottom_angles,
+                                   key::support_bottom_height,
                                    {key::support_bottom_line_width, key::speed_support_bottom,
                                     key::support_bottom_material_flow, key::support_bottom_extruder_nr}};
+
+/// The interface's angle on `layer`: its angles in turn; none given, as CuraEngine 4.13: concentric
+/// 0°, triangles 90°, else 45° and 135° in turn for an interface two layers thick or more, 90° for a
+/// thinner one.
+double interfaceAngle(const Settings& s, const InterfaceKeys& keys, InfillPattern pattern, int layer) {
+    if (!s.realList(keys.angles).empty())
+        return angleFor(s, keys.angles, layer, 0);
+    if (pattern == InfillPattern::Concentric)
+        return 0;
+    if (pattern == InfillPattern::Triangles)
+        return 90;
+    if (s.lengthMicrons(keys.height) < 2 * s.lengthMicrons(key::layer_height))
+        return 90;
+    return (layer % 2 + 2) % 2 == 0 ? 45 : 135;
+}
 
 SupportFill fillFrom(const Settings& s, const InterfaceKeys& keys, int layer) {
     SupportFill fill;
     fill.pattern = infillPatternOf(s.text(keys.pattern), std::string(keys.pattern.name));
     fill.line_distance_um = s.lengthMicrons(keys.line_distance);
-    fill.angle_degrees = angleFor(s, keys.angles, layer, 90);
+    fill.angle_degrees = interfaceAngle(s, keys, fill.pattern, layer);
     fill.style = featureStyle(s, keys.style, layer);
     return fill;
 }
@@ -140,6 +178,15 @@ void attachCross(SupportFill& fill, const Settings& body, const CrossFill* cross
     fill.simplify_deviation_um = body.lengthMicrons(key::meshfix_maximum_deviation);
 }
 
+/// As CuraEngine 4.13: a roof on the first layer has a wall, and a dense one (lines closer than two
+/// widths) is spread by initial_layer_line_width_factor.
+void firstLayerRoof(const Settings& s, SupportFill& roof) {
+    roof.wall_count = 1;
+    if (roof.line_distance_um < 2 * s.lengthMicrons(key::support_roof_line_width))
+        roof.line_distance_um =
+            std::llround(double(roof.line_distance_um) * s.ratio(key::initial_layer_line_width_factor));
+}
+
 /// The fills of `layer`; −1 stands for the raft's filler layers.
 SupportLayerFills layerFills(const SupportInput& in, int layer, const CrossFill* cross) {
     const Settings& g = *in.global;
@@ -152,7 +199,8 @@ SupportLayerFills layerFills(const SupportInput& in, int layer, const CrossFill*
     fills.body.line_distance_um = body.lengthMicrons(layer == 0 ? key::support_initial_layer_line_distance
                                                                 : key::support_line_distance);
     fills.body.angle_degrees = angleFor(body, key::support_infill_angles, layer, 0);
-    fills.body.connect_zigzags = body.boolean(key::support_connect_zigzags);
+    fills.body.zigzag_ends =
+        body.boolean(key::support_connect_zigzags) ? ZigzagEnds::Connected : ZigzagEnds::Open;
     if (body.boolean(key::support_skip_some_zags))
         fills.body.zag_skip_count =
             static_cast<int>(std::max<long long>(0, body.integer(key::support_zag_skip_count)));
@@ -175,6 +223,8 @@ SupportLayerFills layerFills(const SupportInput& in, int layer, const CrossFill*
     const Settings& roof = trainSettings(g, in.extruders, extruderOf(g, key::support_roof_extruder_nr));
     const Settings& floor = trainSettings(g, in.extruders, extruderOf(g, key::support_bottom_extruder_nr));
     fills.roof = fillFrom(roof, kRoofKeys, layer);
+    if (layer == 0)
+        firstLayerRoof(roof, fills.roof);
     fills.floor = fillFrom(floor, kFloorKeys, layer);
     return fills;
 }

@@ -6,8 +6,8 @@
 #include "common/ParallelFor.h"
 #include "geometry/Angles.h"
 #include "geometry/PolygonOps.h"
-#include "toolpaths/core/LayerWindows.h"
 #include "toolpaths/support/SupportSmoothing.h"
+#include "toolpaths/support/SupportStairs.h"
 
 namespace mixengine {
 namespace {
@@ -55,7 +55,8 @@ void startTowersUnderIslands(TowerRoofs& roofs, const std::vector<Paths>& suppor
 /// towers' roofs), joined (closing by the join distance), minus the model here and bottom_gap layers
 /// below, simplified.
 std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<Paths>& model,
-                                 const std::vector<Paths>& blocked, const SupportAreaParams& p) {
+                                 const std::vector<Paths>& blocked, const SupportAreaParams& p,
+                                 StairSteps* stairs) {
     const std::vector<Paths>& full = overhangs.full;
     const std::size_t n = full.size();
     const bool towers = p.towers.max_supported_diameter_um > 0;
@@ -72,13 +73,15 @@ std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<P
             roofs.startAt(pointsOf(overhangs, i + 1), pointsOf(overhangs, i));
             roofs.addTo(current);
         }
+        const Paths stair = stairs != nullptr ? stairs->keptFree(i) : Paths{};  // every layer, top down
         if (current.empty())
             continue;
         if (p.join_distance_um > 0)  // as CuraEngine: its offsets bevel at a miter limit of 1.2
             current = offsetMiter(offsetMiter(current, p.join_distance_um, kCuraMiterLimit),
                                   -p.join_distance_um, kCuraMiterLimit);
         current = smoothOutward(current, kSmoothingAngleDegrees, p.smoothing_um);
-        current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
+        current = cleanPolygons(
+            differenceOf(current, stair.empty() ? blocked[i] : unionOf(blocked[i], stair)), kCleanUm);
         support[i] = current;
         if (towers)
             startTowersUnderIslands(roofs, support, model, i, p);
@@ -123,27 +126,72 @@ void keepColumnsOnThePlate(std::vector<SupportLayerAreas>& layers) {
         layers[i].support = intersectAll(layers[i].support, layers[i - 1].support);
 }
 
+/// The layers CuraEngine 4.13 looks at for an interface `layers` thick, sampled every `skip`.
+float interfaceStep(int layers, int skip) {
+    const int scans = std::max(1, (layers - 1) / std::max(1, skip));
+    return std::max(1.0f, float(layers - 1) / float(scans));
+}
+
+/// The model on the layers above layer i that its roof lies under (see the header).
+Paths roofModel(const std::vector<Paths>& model, int i, const SupportAreaParams& p, float step) {
+    const int n = static_cast<int>(model.size());
+    const int top = std::min(n - 1, i + p.roof_layers + p.top_gap_layers);
+    Paths near;
+    for (float at = float(top); at > float(i + p.top_gap_layers); at -= step) {
+        const Paths& outlines = model[static_cast<std::size_t>(std::lround(at))];
+        near.insert(near.end(), outlines.begin(), outlines.end());
+    }
+    return near;
+}
+
+/// The model on the layers below layer i that its floor lies over (see the header).
+Paths floorModel(const std::vector<Paths>& model, int i, const SupportAreaParams& p, float step) {
+    const int first = std::max(0, i - p.floor_layers - p.bottom_gap_layers);
+    Paths near;
+    for (float at = float(first); std::lround(at) < i - p.bottom_gap_layers; at += step) {
+        const Paths& outlines = model[static_cast<std::size_t>(std::lround(at))];
+        near.insert(near.end(), outlines.begin(), outlines.end());
+    }
+    return near;
+}
+
+/// One interface of a layer, taken out of `support` (CuraEngine 4.13's generateSupportInterfaceLayer).
+Paths takeInterface(Paths& support, const Paths& model_near, coord_um line_width_um, coord_um offset_um,
+                    double min_area_um2) {
+    if (model_near.empty())
+        return {};
+    Paths found = intersectAll(support, unionOf(model_near));
+    if (found.empty())
+        return {};
+    found = intersectAll(offsetMiter(found, line_width_um, kCuraMiterLimit), support);
+    if (offset_um != 0) {
+        found = offsetMiter(found, offset_um, kCuraMiterLimit);
+        if (offset_um > 0)  // the interface must not reach beyond the support
+            found = intersectAll(found, support);
+    }
+    if (min_area_um2 > 0)
+        found = removeSmallIslands(found, min_area_um2);
+    if (!found.empty())
+        support = differenceOf(support, found);
+    return found;
+}
+
 void splitInterfaces(std::vector<SupportLayerAreas>& out, const std::vector<Paths>& model,
                      const SupportAreaParams& p, int threads) {
     const int n = static_cast<int>(model.size());
-    const int roof_window = p.roof_layers > 0 ? p.top_gap_layers + p.roof_layers : 0;
-    const int floor_window = p.floor_layers > 0 ? p.bottom_gap_layers + p.floor_layers : 0;
-    const std::vector<Paths> above = windowUnions(model, roof_window, threads);
-    const std::vector<Paths> below = windowUnions(model, floor_window, threads);
+    const float roof_step = interfaceStep(p.roof_layers, p.interface_skip_layers);
+    const float floor_step = interfaceStep(p.floor_layers, p.interface_skip_layers);
     parallelFor(model.size(), threads, [&](std::size_t index) {
         const int i = static_cast<int>(index);
         SupportLayerAreas& layer = out[index];
         if (layer.support.empty())
             return;
-        if (roof_window > 0 && i + 1 < n) {
-            const std::size_t from = static_cast<std::size_t>(std::min(i + 1, std::max(0, n - roof_window)));
-            layer.roof = intersectAll(layer.support, above[from]);
-        }
-        if (floor_window > 0 && i > 0) {
-            const std::size_t from = static_cast<std::size_t>(std::max(0, i - floor_window));
-            layer.floor = differenceOf(intersectAll(layer.support, below[from]), layer.roof);
-        }
-        layer.support = differenceOf(layer.support, unionOf(layer.roof, layer.floor));
+        if (p.roof_layers > 0 && i < n - p.top_gap_layers)
+            layer.roof = takeInterface(layer.support, roofModel(model, i, p, roof_step), p.roof_line_width_um,
+                                       p.roof_offset_um, p.min_roof_area_um2);
+        if (p.floor_layers > 0 && i >= p.bottom_gap_layers)
+            layer.floor = takeInterface(layer.support, floorModel(model, i, p, floor_step),
+                                        p.floor_line_width_um, p.floor_offset_um, p.min_floor_area_um2);
     });
 }
 
@@ -180,7 +228,12 @@ std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& mod
     parallelFor(n, threads, [&](std::size_t i) {
         blocked[i] = gap > 0 && i >= gap ? unionOf(simple[i], simple[i - gap]) : simple[i];
     });
-    const std::vector<Paths> propagated = propagateDown(overhangs, simple, blocked, p);
+    const StairParams stair_params{p.stair_step_layers, p.stair_step_width_um, p.stair_min_slope_degrees,
+                                   p.bottom_gap_layers};
+    const std::vector<Paths> sloped = slopedAreas(simple, stair_params, p.layer_height_um, threads);
+    StairSteps stairs(&simple, &sloped, stair_params);
+    const std::vector<Paths> propagated =
+        propagateDown(overhangs, simple, blocked, p, p.stair_step_layers > 1 ? &stairs : nullptr);
     const std::vector<Paths> from_meshes = supportMeshSupport(meshes, blocked);
     std::vector<SupportLayerAreas> out(n);
     const std::size_t top = static_cast<std::size_t>(std::max(0, p.top_gap_layers));

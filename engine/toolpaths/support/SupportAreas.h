@@ -9,7 +9,8 @@
 //     narrower than twice that are filled, mitred joins, so that it does not drift) and smoothed
 //     outward (its notches sharper than 135° filled, toolpaths/support/SupportSmoothing.h);
 //     the model itself is cut out on the way down, and so is the model bottom_gap =
-//     ceil(support_bottom_distance / layer_height) layers below (the support stops that far above it);
+//     ceil(support_bottom_distance / layer_height) layers below (the support stops that far above it),
+//     on slopes in stairs (toolpaths/support/SupportStairs.h);
 //   - conical support (support_conical_enabled, angle ≠ 0): on the way down the support from above
 //     is first shrunk by layer_thickness · (tan(support_conical_angle) − 0.01) (a negative angle
 //     grows it by layer_thickness · (tan(−angle) − 0.01)), except its parts narrower than
@@ -21,8 +22,15 @@
 //     columns that reach the plate; support with no support above or below it is dropped;
 //   - towers (params.towers, toolpaths/support/SupportTowers.h): their roofs are added to each layer's
 //     support before it is joined with the layer above;
-//   - interfaces: the top roof_layers of support under the model are roof, the bottom
-//     floor_layers on the model are floor (support_roof_height / support_bottom_height in layers).
+//   - interfaces, as CuraEngine 4.13's generateSupportRoof / generateSupportBottom (roof first, then
+//     the floor from what the roof left): on layer i the roof is the support that lies under the
+//     model on layers i + top_gap + 1 … i + top_gap + roof_layers, the floor the support over the
+//     model on layers i − bottom_gap − floor_layers … i − bottom_gap − 1 (both sampled about every
+//     interface_skip_layers layers, as CuraEngine: z_skip = (layers − 1) / max(1, (layers − 1) /
+//     skip)); that is grown by the interface's line width (kept within the support), then by its
+//     offset (support_roof_offset / support_bottom_offset; kept within the support when growing),
+//     and its islands under the minimum area (minimum_roof_area / minimum_bottom_area) are dropped;
+//     the body is what is left.
 #include <vector>
 
 #include "geometry/Point.h"
@@ -45,8 +53,21 @@ struct SupportAreaParams {
     coord_um smoothing_um = 0;
     coord_um offset_um = 0;
     double min_area_um2 = 0;
-    int roof_layers = 0;                ///< 0 = no roof interface
-    int floor_layers = 0;               ///< 0 = no floor interface
+    int roof_layers = 0;               ///< 0 = no roof interface
+    int floor_layers = 0;              ///< 0 = no floor interface
+    int interface_skip_layers = 1;     ///< support_interface_skip_height in layers (at least 1)
+    coord_um roof_line_width_um = 0;   ///< the roof's margin around the model above
+    coord_um floor_line_width_um = 0;  ///< the floor's margin around the model below
+    coord_um roof_offset_um = 0;       ///< support_roof_offset
+    coord_um floor_offset_um = 0;      ///< support_bottom_offset
+    double min_roof_area_um2 = 0;      ///< minimum_roof_area
+    double min_floor_area_um2 = 0;     ///< minimum_bottom_area
+    /// stair-stepping on slopes (toolpaths/support/SupportStairs.h): step height in layers (1 = off),
+    /// width, minimum slope, and the layer height the slopes are measured with
+    int stair_step_layers = 1;
+    coord_um stair_step_width_um = 5000;
+    double stair_min_slope_degrees = 10;
+    coord_um layer_height_um = 200;
     coord_um conical_step_um = 0;       ///< conical support: offset per layer going down (0 = off)
     coord_um conical_min_width_um = 0;  ///< narrower parts are not shrunk
     SupportTowerParams towers;          ///< support towers (toolpaths/support/SupportTowers.h); default off

@@ -32,7 +32,7 @@ InfillParams infillParams(const SupportFill& fill, Feature feature, coord_um z) 
     p.speed_mm_s = fill.style.speed_mm_s;
     p.flow = fill.style.flow;
     p.extruder = fill.style.extruder;
-    p.zigzag_end_pieces = fill.connect_zigzags;
+    p.zigzag_ends = fill.zigzag_ends;
     p.zag_skip_count = fill.zag_skip_count;
     p.overlap_um = fill.overlap_um;
     p.cross = fill.cross;

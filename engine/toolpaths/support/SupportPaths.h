@@ -7,8 +7,10 @@
 //               0, as CuraEngine, one wall more and lines/zigzag become grid; Feature
 //               Support, style of the support infill extruder (support_line_width,
 //               speed_support_infill, support_material_flow);
-//   roof/floor — support_roof_* / support_bottom_* pattern, line distance, angles (default 90°),
-//               width, speed and flow; Feature SupportInterface.
+//   roof/floor — support_roof_* / support_bottom_* pattern, line distance, angles (none given: as
+//               CuraEngine 4.13, 45°/135° in turn, 90° when thinner than two layers, 0° concentric),
+//               width, speed and flow; Feature SupportInterface; a roof on layer 0 has one wall and,
+//               dense (lines closer than two widths), its lines spread by initial_layer_line_width_factor.
 // With gradual_support_infill_steps or support_infill_sparse_thickness the body's infill follows its
 // arrangement (toolpaths/infill/InfillLayers.h, as CuraEngine's gradual support and combined support
 // layers): inside the walls, the areas printed t layers thick first (laid out as for a line t times
@@ -33,9 +35,11 @@ struct SupportFill {
     coord_um line_distance_um = 0;
     double angle_degrees = 0;
     int wall_count = 0;
-    bool connect_zigzags = false;  ///< support_connect_zigzags: zigzag with its end pieces
-    int zag_skip_count = 0;        ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
-    coord_um overlap_um = 0;       ///< how far the infill reaches into the walls (infill_overlap_mm)
+    /// zigzag's end pieces, as CuraEngine 4.13 (toolpaths/infill/ZigZag.h): always printed, their last lines
+    /// only for the body with support_connect_zigzags
+    ZigzagEnds zigzag_ends = ZigzagEnds::Open;
+    int zag_skip_count = 0;   ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
+    coord_um overlap_um = 0;  ///< how far the infill reaches into the walls (infill_overlap_mm)
     FeatureStyle style;
     /// cross: the support's fractal (toolpaths/infill/cross/CrossFill.h), its loops joined
     /// (zig_zaggify_support) and simplified as InfillParams says.

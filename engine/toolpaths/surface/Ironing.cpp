@@ -128,7 +128,7 @@ std::vector<ExtrusionPath> ironingPaths(const Paths& surface, const IroningParam
     }
     const Paths area = offsetMiter(surface, -p.inset_um);
     Paths lines = p.pattern == InfillPattern::ZigZag
-                      ? zigzagLines(area, p.line_spacing_um, p.angle_degrees, 0, false)
+                      ? zigzagLines(area, p.line_spacing_um, p.angle_degrees, 0, ZigzagEnds::None)
                       : lineSegments(area, p.line_spacing_um, p.angle_degrees, 0);
     if (p.monotonic)
         sortAcross(lines, p.angle_degrees);

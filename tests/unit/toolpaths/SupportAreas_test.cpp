@@ -96,6 +96,22 @@ TEST(SupportAreas, RoofAndFloorInterfaces) {
     EXPECT_TRUE(support[13].floor.empty());
 }
 
+TEST(SupportAreas, InterfaceOffsetAndMinimumAreaAsCuraEngine) {
+    SupportAreaParams p = defaults();
+    p.roof_layers = 3;
+    p.roof_line_width_um = 400;  // the margin stays within the support: each arm is roof whole
+    const double arm = 9'300.0 * 10'000.0;
+    EXPECT_EQ(areaUm2(supportOf(tee(), p)[48].roof), 2 * arm);
+    p.roof_offset_um = -1'000;  // shrunk 1 mm: 7.3 × 8 mm per arm, the rest is body
+    const std::vector<SupportLayerAreas> shrunk = supportOf(tee(), p);
+    EXPECT_EQ(areaUm2(shrunk[48].roof), 2 * 7'300.0 * 8'000.0);
+    EXPECT_EQ(areaUm2(shrunk[48].support), 2 * (arm - 7'300.0 * 8'000.0));
+    p.min_roof_area_um2 = 60e6;  // each 58.4 mm² roof is too small: all body
+    const std::vector<SupportLayerAreas> dropped = supportOf(tee(), p);
+    EXPECT_TRUE(dropped[48].roof.empty());
+    EXPECT_EQ(areaUm2(dropped[48].support), 2 * arm);
+}
+
 }  // namespace
 }  // namespace mixengine
 
