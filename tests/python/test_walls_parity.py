@@ -9,7 +9,7 @@ single-extruder parity scenes, for the settings fixed together:
                               its loops without holes under 100 line widths squared (as CuraEngine's SkirtBrim)
   skin_edge_support_layers    the infill under the skin above gets an infill wall (as CuraEngine)
   speed_equalize_flow_enabled the perimeter gaps print faster by skin width over gap width (as CuraEngine 4.13)
-  connect_skin_polygons, connect_infill_polygons  loops side by side are joined
+  connect_skin_polygons       concentric skin loops side by side are joined
 
 and the layer count: a layer with nothing to print is left out as CuraEngine leaves it out (rear_case at 0.2 mm
 layers: 504 ;LAYER: lines in both engines, ;LAYER_COUNT:505).
@@ -22,7 +22,6 @@ import side_by_side as sbs
 
 ROOF = {"roofing_layer_count": "1"}
 CONCENTRIC_SKIN = {"top_bottom_pattern": "concentric"}
-CROSS_3D = {"infill_pattern": "cross_3d"}
 BRIM = {"adhesion_type": "brim"}
 
 # (scene, context, key, value): honoured after the fixes.
@@ -37,10 +36,9 @@ CASES = [
     ("ender3", CONCENTRIC_SKIN, "connect_skin_polygons", "True"),
     ("ender3_shelf", CONCENTRIC_SKIN, "connect_skin_polygons", "True"),
     ("ender3_slivers", CONCENTRIC_SKIN, "connect_skin_polygons", "True"),
-    ("ender3", CROSS_3D, "connect_infill_polygons", "True"),
-    ("ender3_shelf", CROSS_3D, "connect_infill_polygons", "True"),
-    ("ender3_slivers", CROSS_3D, "connect_infill_polygons", "True"),
 ]
+# Not yet: connect_infill_polygons is judged with cross_3d infill, whose connected (zig_zaggify_infill) pattern
+# CuraEngine prints as closed loops; MixEngine prints cross and cross_3d as lines, so there is nothing to join.
 
 
 @pytest.mark.parametrize("scene,context,key,value", CASES,
