@@ -118,7 +118,9 @@ std::optional<SkinEdgeSplit> splitBySkinAbove(const Paths& sparsest, const Paths
 }
 
 /// The lines of density k (of `last`) in the infill under the skin above: at least one infill wall
-/// on the sparsest; a denser one's lines kept inside those walls.
+/// on the sparsest; a denser one's lines kept inside those walls. As CuraEngine 4.13 prints them, the
+/// lines (not the walls) come twice: its list of these lines is not emptied before the rest of the
+/// infill is added to it, and both lists are printed.
 void belowSkinInfill(const Paths& below_skin, const InfillParams& base, std::size_t k, std::size_t last,
                      std::vector<ExtrusionPath>& out) {
     const int walls = std::max(1, base.wall_count);
@@ -127,9 +129,13 @@ void belowSkinInfill(const Paths& below_skin, const InfillParams& base, std::siz
     p.wall_count = k < last ? 0 : walls;
     p.area_loops = Loops::United;
     std::vector<ExtrusionPath> paths = generateInfill(below_skin, p);
-    append(k < last ? keepInside(std::move(paths), offsetMiter(below_skin, -cutInset(base, walls)))
-                    : std::move(paths),
-           out);
+    if (k < last)
+        paths = keepInside(std::move(paths), offsetMiter(below_skin, -cutInset(base, walls)));
+    for (const ExtrusionPath& path : paths) {
+        if (!path.closed)
+            out.push_back(path);
+    }
+    append(std::move(paths), out);
 }
 
 void singleLayer(const LayerInfill& layer, const InfillParams& base, const SkinEdgeSupport& edge,
