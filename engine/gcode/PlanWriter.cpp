@@ -153,11 +153,24 @@ void writeStep(const PlanStep& step, coord_um layer_z, const PlanTables& plan, c
     }
 }
 
+/// Nothing to print: no step but ;TYPE: and ;MESH: markers and the fan (which every layer sets; CuraEngine
+/// 4.13's LayerPlanBuffer drops a layer plan without paths before it is written).
+bool printsNothing(const PlannedLayer& layer) {
+    return std::all_of(layer.steps.begin(), layer.steps.end(), [](const PlanStep& step) {
+        return step.kind == PlanStep::Kind::SetFeature || step.kind == PlanStep::Kind::SetMesh ||
+               step.kind == PlanStep::Kind::SetFan;
+    });
+}
+
 }  // namespace
 
 void writeLayer(const PlannedLayer& layer, int number, const PlanTables& tables,
                 const PlanWriterParams& params, GCodeExport& gcode, WrittenLayers& out) {
     gcode.takeText();  // start a fresh chunk
+    if (printsNothing(layer)) {
+        out.chunks.emplace_back();  // left out, as CuraEngine; still one chunk per layer
+        return;
+    }
     gcode.comment("LAYER:" + std::to_string(number));
     if (gcode.flavor().resets_e_each_layer && !gcode.retracted())
         gcode.resetExtrusionAxis();

@@ -1,10 +1,11 @@
 #pragma once
 // Writes the layers of a PrintPlan through a GCodeExport: ;LAYER:n, G92 E0 in absolute mode (when
 // the flavor resets E each layer, gcode/Flavor.h), the plan's steps, and
-// ;TIME_ELAPSED: at the end of each layer. Every layer is written, an empty one too (where CuraEngine
-// leaves out a layer with nothing to print but still counts it in ;LAYER_COUNT:), so that the
-// ;LAYER: lines of the model match ;LAYER_COUNT:. Returns one text chunk per layer (Cura's socket sends
-// them one by one; the CLI joins them).
+// ;TIME_ELAPSED: at the end of each layer. As CuraEngine 4.13, a layer with nothing to print (no
+// step but ;TYPE: and ;MESH: markers and its fan, which every layer sets again: e.g. the top layer of a model
+// whose last cut is too thin for a wall) is left out — no ;LAYER: line, no Z move — though ;LAYER_COUNT:
+// still counts it, and the layers after it keep their numbers. Returns one text chunk per layer, empty for a
+// layer left out (Cura's socket sends them one by one; the CLI joins them).
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@
 namespace mixengine {
 
 struct WrittenLayers {
-    std::vector<std::string> chunks;  ///< one per layer, ";LAYER:n" first
+    std::vector<std::string> chunks;  ///< one per layer, ";LAYER:n" first (empty: left out)
     Point3 min{INT64_MAX, INT64_MAX, INT64_MAX};
     Point3 max{INT64_MIN, INT64_MIN, INT64_MIN};
 };

@@ -1,11 +1,10 @@
 #pragma once
 // What CuraEngine does to outlines between slicing and toolpaths:
 //   - loops shorter than minimum_polygon_circumference are dropped;
-//   - every loop is simplified with meshfix_maximum_resolution / _deviation (FffProcessor). CuraEngine
-//     4.13's slicer itself uses a fixed 10 µm / 5 µm and applies these settings to each wall instead
-//     (toolpaths/walls/Walls.h does too); simplifying the outline with them as well keeps the seam choice
-//     and infill as CuraEngine's on the parity scenes (tests/python/test_parity.py) at the same print
-//     quality (tests/bench/quality.sh).
+//   - every loop is simplified as CuraEngine 4.13's slicer does, with a fixed 10 µm resolution and 5 µm
+//     deviation (slicing/SlicingParams.h); meshfix_maximum_resolution / _deviation act on each wall
+//     (toolpaths/walls/Walls.h), as in CuraEngine, not on the outline (a small hole or pin keeps its
+//     shape, so a hole grown by hole_xy_offset leaves the band CuraEngine leaves).
 // simplifyLoop follows CuraEngine 4.13's simplification: walking the loop, a vertex goes when the
 // segment to it from the last kept vertex is under 5 µm, when it is collinear with its neighbours
 // (within 1 µm), or when that segment is shorter than the resolution and the area cut off by going

@@ -34,8 +34,11 @@ coord_um stitchDistanceUm(const Settings& mesh) {
 OutlineCleanupParams outlineCleanupParams(const Settings& group, bool simplify) {
     OutlineCleanupParams cleanup;
     cleanup.minimum_circumference_um = group.lengthMicrons(key::minimum_polygon_circumference);
-    cleanup.maximum_resolution_um = simplify ? group.lengthMicrons(key::meshfix_maximum_resolution) : 0;
-    cleanup.maximum_deviation_um = simplify ? group.lengthMicrons(key::meshfix_maximum_deviation) : 0;
+    // CuraEngine 4.13's slicer simplifies with its fixed 10 µm / 5 µm; meshfix_maximum_resolution and
+    // _deviation act on the walls (and skin, infill, support) only.
+    constexpr coord_um kSlicerResolutionUm = 10, kSlicerDeviationUm = 5;
+    cleanup.maximum_resolution_um = simplify ? kSlicerResolutionUm : 0;
+    cleanup.maximum_deviation_um = simplify ? kSlicerDeviationUm : 0;
     return cleanup;
 }
 

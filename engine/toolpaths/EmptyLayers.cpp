@@ -5,14 +5,30 @@
 namespace mixengine {
 namespace {
 
+/// Whether mesh `k` prints something of its own on layer i: its open pieces, or (as CuraEngine drops a
+/// part too thin for a wall before it counts the empty first layers) a path of its toolpaths.
+bool meshPrints(const GroupToolpaths& toolpaths, const ToolpathInput& input, std::size_t k, std::size_t i) {
+    const ToolpathMeshInput& mesh = input.meshes[k];
+    const std::vector<SlicedLayer>& layers = *mesh.layers;
+    if (!mesh.role.printsAlone() || i >= layers.size())
+        return false;
+    if (!layers[i].open_polylines.empty())
+        return true;
+    if (k >= toolpaths.meshes.size() || i >= toolpaths.meshes[k].layers.size())
+        return !layers[i].outlines.empty();
+    const MeshLayerGroups& groups = toolpaths.meshes[k].layers[i];
+    return !groups.outer_walls.empty() || !groups.inner_walls.empty() || !groups.skin.empty() ||
+           !groups.infill.empty();
+}
+
 bool layerEmpty(const GroupToolpaths& toolpaths, const ToolpathInput& input, std::size_t i) {
     if (i < toolpaths.support.size() && !toolpaths.support[i].empty())
         return false;
-    return std::none_of(input.meshes.begin(), input.meshes.end(), [&](const ToolpathMeshInput& mesh) {
-        const std::vector<SlicedLayer>& layers = *mesh.layers;
-        return mesh.role.printsAlone() && i < layers.size() &&
-               (!layers[i].outlines.empty() || !layers[i].open_polylines.empty());
-    });
+    for (std::size_t k = 0; k < input.meshes.size(); ++k) {
+        if (meshPrints(toolpaths, input, k, i))
+            return false;
+    }
+    return true;
 }
 
 template <typename T>

@@ -1,11 +1,10 @@
 #pragma once
-// As CuraEngine: bottom layers where no mesh has an outline left after clean-up (e.g. a curved
-// bottom whose first cut is a loop under minimum_polygon_circumference) and no support is printed
-// are removed; the print starts with the first non-empty layer at the first layer's height, so the
-// layer count drops; when no layer prints (a flat or floating facet) all are removed. A layer where the
-// slicer left out open pieces of an unclosed mesh counts as non-empty (CuraEngine keeps it). Known
-// difference: CuraEngine also drops a first layer whose loops are tiny but above that circumference (knot2 at
-// 0.2 mm layers on the Ender-3).
+// As CuraEngine: bottom layers where no mesh prints anything (no outline left after clean-up, e.g. a
+// curved bottom whose first cut is a loop under minimum_polygon_circumference, or only parts too thin for
+// a wall, which CuraEngine drops before it counts the empty first layers) and no support is printed are
+// removed; the print starts with the first non-empty layer at the first layer's height, so the layer
+// count drops; when no layer prints (a flat or floating facet) all are removed. A layer where the slicer
+// left out open pieces of an unclosed mesh counts as non-empty (CuraEngine keeps it).
 //
 // Part of the toolpath stage: generateGroupToolpaths (toolpaths/GroupToolpaths.h) drops them last.
 #include <cstddef>

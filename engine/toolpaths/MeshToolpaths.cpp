@@ -150,7 +150,9 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
 }
 
 /// The lines half a wall line wide that fill the gaps of concentric skin (fill_perimeter_gaps), in
-/// CuraEngine's perimeter-gap style: skin speed, inner-wall flow.
+/// CuraEngine's perimeter-gap style: skin speed, inner-wall flow. With speed_equalize_flow_enabled the
+/// speed is multiplied, as CuraEngine 4.13 does, by skin_line_width over the gap width in whole
+/// microns divided as integers (2 for equal wall and skin widths), before the first layers' ramp.
 std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
     if (!fillsPerimeterGaps(s))
         return std::nullopt;
@@ -159,6 +161,11 @@ std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
                                        key::wall_x_material_flow, key::top_bottom_extruder_nr},
                                       layer);
     style.width_um = s.lengthMicrons(key::wall_line_width_0) / 2;
+    if (s.boolean(key::speed_equalize_flow_enabled) && style.width_um > 0) {
+        const coord_um factor = s.lengthMicrons(key::skin_line_width) / style.width_um;
+        style.speed_mm_s = slowdownBlend(s, s.number(key::speed_topbottom) * double(factor),
+                                         s.number(key::speed_print_layer_0), layer);
+    }
     return style;
 }
 
@@ -178,6 +185,7 @@ SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const Me
     p.roofing.angle_degrees = angleFor(s, key::roofing_angles, layer, {45, 135});
     p.roofing.style = styles.roofing;
     p.roofing.monotonic = s.boolean(key::roofing_monotonic);
+    p.skin.connect_polygons = p.roofing.connect_polygons = s.boolean(key::connect_skin_polygons);
     p.gap_style = gapStyle(s, layer);
     p.gap_angle_degrees = p.roofing.angle_degrees;  // as CuraEngine: perimeter gaps at the roofing angles
     return p;
@@ -360,6 +368,20 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
     return out;
 }
 
+namespace {
+
+/// skin_edge_support_layers: the skin of that many layers above layer `i`, combined as CuraEngine
+/// combines it (toolpaths/infill/MeshInfill.h); empty when the setting is 0.
+Paths skinEdgeSupport(const std::vector<SkinAreas>& skin, std::size_t i, const Settings& s) {
+    const std::size_t layers = static_cast<std::size_t>(countOf(s, key::skin_edge_support_layers));
+    std::vector<const Paths*> above;
+    for (std::size_t j = i + 1; j <= i + layers && j < skin.size(); ++j)
+        above.push_back(&skin[j].skin);
+    return above.empty() ? Paths{} : skinAboveForEdgeSupport(above);
+}
+
+}  // namespace
+
 std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vector<SlicedLayer>& layers,
                                                const Settings& settings, int threads,
                                                const std::optional<Box2>& mesh_box_um,
@@ -408,7 +430,10 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;
         fill.cross = cross.get();
         fill.lightning_trees = lightning ? &lightning->treesAt(i) : nullptr;
-        result[i].infill = meshInfillPaths(infill[i], fill);
+        SkinEdgeSupport edge{skinEdgeSupport(areas.skin, i, settings), {}};
+        if (!edge.skin_above.empty())
+            edge.parts = areas.inner_areas[i];
+        result[i].infill = meshInfillPaths(infill[i], fill, edge);
         if (settings.boolean(key::infill_randomize_start_location))
             result[i].infill_start = randomInfillStart(result[i].infill, layer);
         result[i].ironing = ironing(layers, settings, i);

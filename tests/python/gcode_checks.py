@@ -9,7 +9,9 @@ check_gcode(path) returns a GcodeCheck:
                   (G0/G1/G2/G3/G92) that is not a finite number (it reads "Xnan" as a flag, "X1e400" as
                   two words);
                 - a motion line, as written, holds a word that is not a letter and a plain decimal number;
-                - the number of model ;LAYER: lines differs from ;LAYER_COUNT:, or ;LAYER_COUNT: is missing.
+                - more model ;LAYER: lines than ;LAYER_COUNT:, a model layer numbered at or above it, none at
+                  all where ;LAYER_COUNT: is positive, or no ;LAYER_COUNT:. (As CuraEngine 4.13, a layer with
+                  nothing to print is left out but still counted, so there may be fewer ;LAYER: lines.)
 gcodeparser is pure Python (about 40k lines a second), so it reads the first GCODEPARSER_BYTES of the
 file; the written-word check and the layer count cover the whole file with compiled regular expressions.
 """
@@ -21,7 +23,7 @@ GCODEPARSER_BYTES = 4 << 20
 MOTION = {("G", 0), ("G", 1), ("G", 2), ("G", 3), ("G", 92)}
 MOTION_LINE = re.compile(r"^(?:G[0-3]|G92)(?=[ \t;]|$)[^;\n]*", re.M)
 GOOD_MOTION = re.compile(r"G\d+(?:[ \t]+[A-Z][-+]?(?:\d+\.?\d*|\.\d+))*[ \t]*")
-LAYER_LINE = re.compile(r"^;LAYER:\d+[ \t]*$", re.M)  # model layers only: raft layers are negative
+LAYER_LINE = re.compile(r"^;LAYER:(\d+)[ \t]*$", re.M)  # model layers only: raft layers are negative
 LAYER_COUNT = re.compile(r"^;LAYER_COUNT:(-?\d+)", re.M)
 MAX_LISTED = 5
 
@@ -60,9 +62,13 @@ def check_gcode(path):
                                + "; ".join(repr(line) for line in malformed[:MAX_LISTED]))
     count = LAYER_COUNT.search(text)
     result.layer_count = int(count.group(1)) if count else None
-    result.layers = len(LAYER_LINE.findall(text))
+    numbers = [int(m.group(1)) for m in LAYER_LINE.finditer(text)]
+    result.layers = len(numbers)
     if result.layer_count is None:
         result.problems.append("no ;LAYER_COUNT: line")
-    elif result.layer_count != result.layers:
-        result.problems.append(f";LAYER_COUNT:{result.layer_count} but {result.layers} model ;LAYER: lines")
+    elif result.layers > result.layer_count or (numbers and max(numbers) >= result.layer_count):
+        result.problems.append(f";LAYER_COUNT:{result.layer_count} but {result.layers} model ;LAYER: lines"
+                               f" up to {max(numbers)}")
+    elif result.layer_count > 0 and not numbers:
+        result.problems.append(f";LAYER_COUNT:{result.layer_count} but no model ;LAYER: line")
     return result

@@ -34,10 +34,7 @@ CASES = {  # name -> (model, setting overrides on top of side_by_side's)
 }
 MODELS = list(CASES)
 # Known gaps, stated and strict (an unexpected pass fails, so they are removed when fixed):
-KNOWN_GAPS = {
-    ("layers", "knot2"): "CuraEngine drops the first layer, whose cut is two loops of 0.7 mm² above "
-                         "minimum_polygon_circumference; MixEngine keeps it (toolpaths/EmptyLayers.h)",
-}
+KNOWN_GAPS = {}  # knot2's first layer (loops too thin for a wall) is now dropped as CuraEngine drops it
 
 
 def cases(test):

@@ -1,9 +1,11 @@
 #include "toolpaths/adhesion/Adhesion.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
+#include "slicing/OutlineCleanup.h"
 #include "toolpaths/adhesion/DraftShield.h"
 #include "toolpaths/core/FeatureStyle.h"
 #include "toolpaths/support/Support.h"
@@ -15,26 +17,68 @@ long long cross(const Point2& o, const Point2& a, const Point2& b) {
     return (a.X - o.X) * (b.Y - o.Y) - (a.Y - o.Y) * (b.X - o.X);
 }
 
-Paths outerContours(const Paths& polygons) {
-    Paths outer;
-    for (const Path& p : unionOf(polygons)) {
-        if (counterClockwise(p))
-            outer.push_back(p);
+/// Without the holes that hold no other loop of `area` (CuraEngine's removeEmptyHoles).
+Paths withoutEmptyHoles(const Paths& area) {
+    Paths kept;
+    for (const Path& loop : area) {
+        const bool hole = !counterClockwise(loop);
+        const bool holds_something =
+            hole && std::any_of(area.begin(), area.end(), [&](const Path& other) {
+                return counterClockwise(other) && !other.empty() && pointInLoop(other.front(), loop) != 0;
+            });
+        if (!hole || holds_something)
+            kept.push_back(loop);
     }
-    return outer;
+    return kept;
+}
+
+/// The islands of `models` that get a wall: as CuraEngine 4.13 drops a layer part too thin for its outer
+/// wall (wall_line_width_0 × initial_layer_line_width_factor on layer 0) before the brim is made.
+Paths partsWithWalls(const Paths& models, const Settings& s) {
+    if (s.integer(key::wall_line_count) <= 0)
+        return models;
+    const coord_um half_wall =
+        static_cast<coord_um>(std::llround(double(s.lengthMicrons(key::wall_line_width_0)) *
+                                           s.ratio(key::initial_layer_line_width_factor))) /
+        2;
+    Paths kept;
+    for (const Paths& island : splitIslands(models)) {
+        if (!offsetMiter(island, -half_wall, Loops::United).empty())
+            kept.insert(kept.end(), island.begin(), island.end());
+    }
+    return kept;
+}
+
+/// What the brim goes around, as CuraEngine 4.13 takes it: the outlines grown by brim_gap (mitred),
+/// united, closed by 20 µm (neighbours that nearly touch become one), simplified (200 µm segments,
+/// 50 µm deviation); with brim_outside_only, without the holes that hold nothing.
+Paths brimBase(const Paths& models, coord_um gap_um, bool outside_only) {
+    constexpr coord_um kJoinUm = 20;
+    Paths base = gap_um != 0 ? offsetMiter(models, gap_um) : unionOf(models);
+    base = offsetMiter(offsetMiter(base, kJoinUm, Loops::United), -kJoinUm, Loops::United);
+    for (Path& loop : base)
+        loop = simplifyLoop(loop, 200, 50);
+    std::erase_if(base, [](const Path& loop) { return loop.size() < 3; });
+    return outside_only ? withoutEmptyHoles(base) : base;
 }
 
 /// Loops around `base`: the first `first_um` outside it, then one width further out each; at
-/// least `count` and more until `min_length_um` is reached. Outermost first.
+/// least `count` and more until `min_length_um` is reached. Outermost first. As CuraEngine, a loop's
+/// holes smaller than 100 line widths squared are left out.
 std::vector<ExtrusionPath> rings(const Paths& base, coord_um first_um, int count, double min_length_um,
                                  const FeatureStyle& style) {
     std::vector<ExtrusionPath> loops;
     double total = 0;
+    const double min_hole_um2 = 100.0 * double(style.width_um) * double(style.width_um);
     constexpr int kMaxExtra = 1000;  // a safety bound on the lines added for the minimal length
     for (int i = 0; i < count || (total < min_length_um && i < count + kMaxExtra); ++i) {
-        const Paths ring = offsetPolygons(base, first_um + coord_um(i) * style.width_um);
+        Paths ring = offsetPolygons(base, first_um + coord_um(i) * style.width_um);
         if (ring.empty())
             break;
+        std::erase_if(ring, [&](const Path& p) {
+            const double area = signedAreaUm2(p);
+            return area < 0 && area > -min_hole_um2;
+        });
         for (const Path& p : ring) {
             ExtrusionPath path;
             path.points = p;
@@ -114,14 +158,12 @@ AdhesionResult generateAdhesion(const AdhesionInput& in) {
     style.extruder = nr;
     const double min_length = s.millimetres(key::skirt_brim_minimal_length) * 1000;
     if (type == "brim") {
-        const bool outside_only = s.boolean(key::brim_outside_only);
-        const Paths base = outside_only ? outerContours(in.models) : unionOf(in.models);
         const coord_um gap = s.lengthMicrons(key::brim_gap);
+        const Paths base = brimBase(partsWithWalls(in.models, s), gap, s.boolean(key::brim_outside_only));
         const int count = static_cast<int>(std::max<long long>(0, s.integer(key::brim_line_count)));
-        result.paths = rings(base, gap + style.width_um / 2, count, min_length, style);
+        result.paths = rings(base, style.width_um / 2, count, min_length, style);
         if (!in.shields.empty()) {
-            const coord_um reach =
-                gap + style.width_um / 2 + coord_um(std::max(0, count - 1)) * style.width_um;
+            const coord_um reach = style.width_um / 2 + coord_um(std::max(0, count - 1)) * style.width_um;
             const std::vector<ExtrusionPath> foot = shieldBrim(in.shields, base, reach, count, style);
             result.paths.insert(result.paths.end(), foot.begin(), foot.end());
         }

@@ -3,9 +3,11 @@
 //   skirt — loops around the convex hull of everything on layer 0 (models, support, prime tower):
 //           the first skirt_gap + w/2 outside it, then one line width further out each, at least
 //           skirt_line_count loops and more until they total skirt_brim_minimal_length;
-//   brim  — loops around the models' (and the support's) layer-0 outlines (outer contours only with
-//           brim_outside_only): the first brim_gap + w/2 outside them, brim_line_count of them
-//           (more while shorter than skirt_brim_minimal_length);
+//   brim  — loops around the models' (and the support's) layer-0 outlines — without the islands too thin
+//           for an outer wall, which CuraEngine drops — grown by brim_gap (mitred),
+//           united, closed by 20 µm and simplified as CuraEngine 4.13 does (with brim_outside_only
+//           without the holes that hold nothing): the first w/2 outside that, brim_line_count of them
+//           (more while shorter than skirt_brim_minimal_length), each without its holes under 100 w²;
 //   shields — with a draft or ooze shield (AdhesionInput::shields) the skirt goes around the
 //           approximate convex hull of the shields and of the hull grown by skirt_gap − w/2, its
 //           first loop w outside that; a brim fills the shields' foot from the inside with loops one

@@ -15,6 +15,7 @@
 #include "toolpaths/infill/GyroidInfill.h"
 #include "toolpaths/infill/InfillMultiplier.h"
 #include "toolpaths/infill/LineInfill.h"
+#include "toolpaths/infill/PolygonConnect.h"
 #include "toolpaths/infill/ZigZag.h"
 
 namespace mixengine {
@@ -264,13 +265,20 @@ std::vector<ExtrusionPath> generateInfill(const Paths& area, const InfillParams&
             drawn.lines, drawn.loops, offsetArea(area, -outline_inset, params.area_loops),
             {params.multiplier, w, params.connect_lines, params.pattern == InfillPattern::Concentric});
     }
+    Paths walls_loops;
     for (int wall = 0; wall < params.wall_count; ++wall) {
         const Paths loop = offsetMiter(area, -w / 2 - coord_um(wall) * w);
         if (loop.empty())
             break;  // the area is used up: no further wall fits (a huge count must not spin)
-        appendPaths(loop, true, params, result);
+        walls_loops.insert(walls_loops.end(), loop.begin(), loop.end());
     }
-    appendPaths(drawn.loops, true, params, result);
+    if (params.connect_polygons) {  // as CuraEngine: the pattern's loops, then the walls, joined
+        drawn.loops.insert(drawn.loops.end(), walls_loops.begin(), walls_loops.end());
+        appendPaths(connectLoops(drawn.loops, w), true, params, result);
+    } else {
+        appendPaths(walls_loops, true, params, result);
+        appendPaths(drawn.loops, true, params, result);
+    }
     appendPaths(drawn.lines, false, params, result);
     return result;
 }

@@ -93,6 +93,9 @@ struct InfillParams {
     int wall_count = 0;             ///< loops around the area (infill_wall_line_count)
     int multiplier = 1;             ///< parallel lines per line (infill_multiplier)
     bool connect_lines = false;     ///< zig_zaggify_infill
+    /// connect_infill_polygons / connect_skin_polygons: the loops (the pattern's, then the walls) joined
+    /// where they lie side by side (toolpaths/infill/PolygonConnect.h)
+    bool connect_polygons = false;
     const Paths* subdiv_lines = nullptr;  ///< cubicsubdiv: the octree's lines at z_um (the caller's)
     const CrossFill* cross = nullptr;     ///< cross, cross_3d: the fractal (the caller's)
     coord_um pocket_um = 0;               ///< cross_3d: cross_infill_pocket_size (≤ 10: none)

@@ -65,22 +65,109 @@ std::vector<ExtrusionPath> keepInside(std::vector<ExtrusionPath> paths, const Pa
     return out;
 }
 
-void singleLayer(const LayerInfill& layer, const InfillParams& base, std::vector<ExtrusionPath>& out) {
-    const std::size_t last = layer.by_density.size() - 1;
+/// How far inside an area the lines of a denser infill stay: `walls` infill walls, and half a line
+/// more (and 5 µm) when the lines are connected.
+coord_um cutInset(const InfillParams& base, int walls) {
     const coord_um w = base.line_width_um;
-    const coord_um cut = base.wall_count * w + (base.connect_lines ? w / 2 + 5 : 0);
-    const Paths& sparsest = layer.by_density[last][0];
-    for (std::size_t k = last + 1; k-- > 0;) {
-        const Paths& area = layer.by_density[k][0];
-        if (area.empty())
+    return walls * w + (base.connect_lines ? w / 2 + 5 : 0);
+}
+
+/// Without the loops (outer contours and holes alike) whose area is below `min_area_um2`.
+Paths withoutSmallLoops(Paths area, double min_area_um2) {
+    std::erase_if(area, [&](const Path& loop) { return std::abs(areaUm2({loop})) < min_area_um2; });
+    return area;
+}
+
+/// The sparsest infill split along the skin of the layers above, in the parts where it is split.
+struct SkinEdgeSplit {
+    Paths below_skin;   ///< under the skin above
+    Paths elsewhere;    ///< the rest of the sparsest area of those parts
+    Paths split_parts;  ///< the parts split
+};
+
+/// One part's sparsest area `own` split as CuraEngine 4.13 partitions it for skin_edge_support_layers:
+/// its part under `skin_above` (opened by a line width, without loops under 25 line widths squared) and
+/// the rest (without islands under that); nothing when either is empty.
+std::optional<std::pair<Paths, Paths>> splitPart(const Paths& own, const Paths& skin_above, coord_um w) {
+    const double min_area_um2 = 25.0 * double(w) * double(w);
+    Paths below = withoutSmallLoops(openPolygons(intersectAll(skin_above, own), w), min_area_um2);
+    Paths rest = removeSmallIslands(differenceOf(own, below), min_area_um2);
+    constexpr coord_um kTinyUm = 20;  // CuraEngine: the skin/infill overlap is not enough
+    if (rest.empty() || offsetMiter(below, -kTinyUm, Loops::United).empty())
+        return std::nullopt;
+    return std::make_pair(std::move(below), std::move(rest));
+}
+
+/// skin_edge_support_layers: `sparsest` split part by part (`parts`: the layer's parts; none: one
+/// part); nothing when no part is split.
+std::optional<SkinEdgeSplit> splitBySkinAbove(const Paths& sparsest, const Paths& skin_above,
+                                              const Paths& parts, coord_um w) {
+    if (skin_above.empty() || sparsest.empty())
+        return std::nullopt;
+    SkinEdgeSplit split;
+    for (const Paths& part : parts.empty() ? std::vector<Paths>{sparsest} : splitIslands(parts)) {
+        const std::optional<std::pair<Paths, Paths>> two =
+            splitPart(parts.empty() ? sparsest : intersectAll(sparsest, part), skin_above, w);
+        if (!two)
             continue;
+        split.below_skin = unionOf(split.below_skin, two->first);
+        split.elsewhere = unionOf(split.elsewhere, two->second);
+        split.split_parts = unionOf(split.split_parts, part);
+    }
+    if (split.below_skin.empty())
+        return std::nullopt;
+    return split;
+}
+
+/// The lines of density k (of `last`) in the infill under the skin above: at least one infill wall
+/// on the sparsest; a denser one's lines kept inside those walls. As CuraEngine 4.13 prints them, the
+/// lines (not the walls) come twice: its list of these lines is not emptied before the rest of the
+/// infill is added to it, and both lists are printed.
+void belowSkinInfill(const Paths& below_skin, const InfillParams& base, std::size_t k, std::size_t last,
+                     std::vector<ExtrusionPath>& out) {
+    const int walls = std::max(1, base.wall_count);
+    InfillParams p = densityParams(base, k, last);
+    p.multiplier = base.connect_lines && last != 0 ? 1 : base.multiplier;
+    p.wall_count = k < last ? 0 : walls;
+    p.area_loops = Loops::United;
+    std::vector<ExtrusionPath> paths = generateInfill(below_skin, p);
+    if (k < last)
+        paths = keepInside(std::move(paths), offsetMiter(below_skin, -cutInset(base, walls)));
+    for (const ExtrusionPath& path : paths) {
+        if (!path.closed)
+            out.push_back(path);
+    }
+    append(std::move(paths), out);
+}
+
+void singleLayer(const LayerInfill& layer, const InfillParams& base, const SkinEdgeSupport& edge,
+                 std::vector<ExtrusionPath>& out) {
+    const std::size_t last = layer.by_density.size() - 1;
+    const std::optional<SkinEdgeSplit> split =
+        splitBySkinAbove(layer.by_density[last][0], edge.skin_above, edge.parts, base.line_width_um);
+    // As CuraEngine: in a part split, every density fills the whole rest.
+    auto areaOf = [&](std::size_t k) {
+        if (!split)
+            return layer.by_density[k][0];
+        return unionOf(differenceOf(layer.by_density[k][0], split->split_parts), split->elsewhere);
+    };
+    const Paths sparsest = areaOf(last);
+    for (std::size_t k = last + 1; k-- > 0;) {
+        if (layer.by_density[k][0].empty())
+            continue;
+        if (split)
+            belowSkinInfill(split->below_skin, base, k, last, out);
+        const Paths area = k == last ? sparsest : areaOf(k);
         InfillParams p = densityParams(base, k, last);
         p.multiplier = base.connect_lines && last != 0 ? 1 : base.multiplier;
         p.wall_count = k < last ? 0 : base.wall_count;
         p.area_loops = Loops::United;  // the islands of a union
         std::vector<ExtrusionPath> paths =
             generateInfill(removeSmallIslands(area, 4.0 * perimeterUm(area)), p);
-        append(k < last ? keepInside(std::move(paths), offsetMiter(sparsest, -cut)) : std::move(paths), out);
+        append(k < last
+                   ? keepInside(std::move(paths), offsetMiter(sparsest, -cutInset(base, base.wall_count)))
+                   : std::move(paths),
+               out);
     }
 }
 
@@ -144,6 +231,7 @@ InfillParams meshInfillParams(const Settings& s, int layer, coord_um z_um, const
     p.pocket_um = s.lengthMicrons(key::cross_infill_pocket_size);
     p.simplify_resolution_um = s.lengthMicrons(key::meshfix_maximum_resolution);
     p.simplify_deviation_um = s.lengthMicrons(key::meshfix_maximum_deviation);
+    p.connect_polygons = s.boolean(key::connect_infill_polygons);
     return p;
 }
 
@@ -214,13 +302,38 @@ std::unique_ptr<LightningInfill> meshLightning(const std::vector<Paths>& infill_
     return std::make_unique<LightningInfill>(p, outlines, threads);
 }
 
-std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base) {
+std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base,
+                                           const SkinEdgeSupport& edge) {
     std::vector<ExtrusionPath> out;
     if (base.line_distance_um <= 0 || layer.by_density.empty())
         return out;
     thickerLayers(layer, base, out);
-    singleLayer(layer, base, out);
+    singleLayer(layer, base, edge, out);
     return out;
+}
+
+Paths skinAboveForEdgeSupport(const std::vector<const Paths*>& skins) {
+    constexpr coord_um kGapUm = 20;  // CuraEngine's tiny_infill_offset
+    Paths combined;
+    for (std::size_t i = skins.size(); i-- > 0;) {  // from the highest layer down
+        for (const Paths& part : splitIslands(*skins[i])) {
+            if (combined.empty()) {
+                combined = part;
+                continue;
+            }
+            const Paths overlap = intersectAll(combined, part);
+            if (overlap.empty()) {
+                combined = unionOf(combined, part);
+            } else if (i > 0) {  // a layer above the next one: a small gap around the overlap
+                const Paths grown = offsetMiter(overlap, kGapUm, Loops::United);
+                combined =
+                    unionOf(unionOf(differenceOf(combined, grown), differenceOf(part, grown)), overlap);
+            } else {  // the layer right above: its skin whole, a small gap around it
+                combined = unionOf(differenceOf(combined, offsetMiter(part, kGapUm, Loops::United)), part);
+            }
+        }
+    }
+    return combined;
 }
 
 std::optional<Point2> randomInfillStart(const std::vector<ExtrusionPath>& infill, int layer) {

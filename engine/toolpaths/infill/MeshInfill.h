@@ -62,9 +62,28 @@ std::unique_ptr<CrossFill> meshCrossFill(const Settings& s, const Box2& mesh_box
 /// layer_height (at most 10 m).
 std::unique_ptr<LightningInfill> meshLightning(const std::vector<Paths>& infill_areas, const Settings& s,
                                                int threads);
+/// skin_edge_support_layers on one layer: the skin of the layers above (skinAboveForEdgeSupport; empty:
+/// none) and the layer's parts (each island one part; empty: the whole layer one part).
+struct SkinEdgeSupport {
+    Paths skin_above;
+    Paths parts;
+};
 
 /// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
-std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base);
+/// With `edge.skin_above`, as CuraEngine 4.13, the sparsest single-layer area of each part is split
+/// along it — its piece under that skin (opened by a line width, without loops under 25 line widths
+/// squared) gets at least one infill wall and every density's lines of its own, printed twice as
+/// CuraEngine 4.13 prints them (its list of them is not emptied before the rest is added), the rest (without
+/// islands under that size) every density's lines; a part where either piece would be empty is not
+/// split.
+std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base,
+                                           const SkinEdgeSupport& edge = {});
+
+/// The skin of the layers above combined as CuraEngine 4.13 does for skin_edge_support_layers:
+/// `skins` are the skin areas of layers i+1 … i+n (nearest first); from the highest down each island
+/// is added, where it overlaps what is there a 20 µm gap is kept around the overlap (around the whole
+/// island for the nearest layer), so that terraced skin edges stay apart.
+Paths skinAboveForEdgeSupport(const std::vector<const Paths*>& skins);
 
 /// infill_randomize_start_location: the first point of an infill line picked at random (a
 /// generator seeded with the layer number, as CuraEngine seeds rand() with it; a random vertex of

@@ -2,6 +2,7 @@
 
 #include "geometry/PolygonOps.h"
 #include "toolpaths/infill/LineInfill.h"
+#include "toolpaths/infill/PolygonConnect.h"
 #include "toolpaths/skin/MonotonicOrder.h"
 
 namespace mixengine {
@@ -64,6 +65,7 @@ InfillParams patternParams(const SkinFillParams& fill, coord_um z_um) {
     p.speed_mm_s = fill.style.speed_mm_s;
     p.flow = fill.style.flow;
     p.extruder = fill.style.extruder;
+    p.connect_polygons = fill.connect_polygons;
     return p;
 }
 
@@ -90,8 +92,10 @@ void appendFill(const Paths& area, const SkinFillParams& fill, const SkinPathPar
     if (area.empty())
         return;
     if (fill.pattern == InfillPattern::Concentric) {
-        appendStyledLoops(concentricLoops(area, fill, params.gap_style ? &out.gaps : nullptr), Feature::Skin,
-                          fill.style, out.paths);
+        Paths loops = concentricLoops(area, fill, params.gap_style ? &out.gaps : nullptr);
+        if (fill.connect_polygons)
+            loops = connectLoops(loops, fill.style.width_um);
+        appendStyledLoops(loops, Feature::Skin, fill.style, out.paths);
         return;
     }
     std::vector<ExtrusionPath> lines =

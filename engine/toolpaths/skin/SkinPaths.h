@@ -34,6 +34,8 @@ struct SkinFillParams {
     FeatureStyle style;
     bool monotonic = false;
     double density = 1.0;  ///< lines width / density apart (bridge_skin_density; skin: 1)
+    /// connect_skin_polygons: loops side by side joined (toolpaths/infill/PolygonConnect.h)
+    bool connect_polygons = false;
     /// A bridge's fill: its paths are marked ExtrusionPath::bridge with this fan.
     std::optional<double> bridge_fan_ratio;
 };

@@ -108,6 +108,27 @@ TEST(GCodePlanWriter, LayerFirstTimeLastInEveryChunk) {
     EXPECT_NE(written.chunks[1].find("G0 F600 Z0.5\n"), std::string::npos) << written.chunks[1];
 }
 
+TEST(GCodePlanWriter, LayerWithNothingToPrintIsLeftOut) {
+    // As CuraEngine 4.13: no ;LAYER: line, Z move or time for it; its chunk is empty, and the next
+    // layer keeps its number and moves to its own height.
+    PrintPlan plan = twoLayerPlan();
+    PlannedLayer empty;
+    empty.index = 1;
+    empty.z = 500;
+    PlanStep mesh = step(PlanStep::Kind::SetMesh);
+    mesh.mesh_index = 0;
+    empty.steps = {step(PlanStep::Kind::SetFan), mesh, step(PlanStep::Kind::SetFeature)};
+    plan.layers.insert(plan.layers.begin() + 1, empty);
+    plan.layers[2].index = 2;
+    plan.layers[2].z = 700;
+    GCodeExport gcode(params());
+    const WrittenLayers written = writePlan(plan, PlanWriterParams{}, gcode);
+    ASSERT_EQ(written.chunks.size(), 3U);
+    EXPECT_TRUE(written.chunks[1].empty()) << written.chunks[1];
+    EXPECT_EQ(written.chunks[2].rfind(";LAYER:2\n", 0), 0U) << written.chunks[2];
+    EXPECT_NE(written.chunks[2].find("G0 F600 Z0.7\n"), std::string::npos) << written.chunks[2];
+}
+
 TEST(GCodePlanWriter, BoundsOfExtrudedMoves) {
     GCodeExport gcode(params());
     const WrittenLayers written = writePlan(twoLayerPlan(), PlanWriterParams{}, gcode);

@@ -56,6 +56,31 @@ TEST(Adhesion, BrimGapAndHoles) {
     EXPECT_EQ(adhesion(inside, {square(0, 0, 20'000), hole}).paths.size(), 4U);  // also in the hole
 }
 
+TEST(Adhesion, BrimLeavesOutHolesUnderAHundredLineWidthsSquared) {
+    // As CuraEngine's SkirtBrim: a 3 mm hole's brim loops (2.6 mm and less across, under 16 mm²) are left
+    // out, a 10 mm hole's are printed.
+    const SettingValues values{{"adhesion_type", "brim"},
+                               {"brim_line_count", "2"},
+                               {"brim_outside_only", "False"},
+                               {"skirt_brim_minimal_length", "0"}};
+    Path small = square(8'500, 8'500, 3'000);
+    std::reverse(small.begin(), small.end());
+    EXPECT_EQ(adhesion(values, {square(0, 0, 20'000), small}).paths.size(), 2U);
+    Path large = square(5'000, 5'000, 10'000);
+    std::reverse(large.begin(), large.end());
+    EXPECT_EQ(adhesion(values, {square(0, 0, 20'000), large}).paths.size(), 4U);
+}
+
+TEST(Adhesion, BrimGapJoinsNeighboursAndDropsTheEmptyHoleBetween) {
+    // Two 10 mm squares 1 mm apart with a 0.6 mm gap: grown by the gap they overlap, so one brim goes around
+    // both (two loops), none between them.
+    const SettingValues values{{"adhesion_type", "brim"},
+                               {"brim_line_count", "2"},
+                               {"brim_gap", "0.6"},
+                               {"skirt_brim_minimal_length", "0"}};
+    EXPECT_EQ(adhesion(values, {square(0, 0, 10'000), square(11'000, 0, 10'000)}).paths.size(), 2U);
+}
+
 TEST(Adhesion, SkirtDistanceAndMinimalLength) {
     const AdhesionResult one = adhesion({{"adhesion_type", "skirt"},
                                          {"skirt_gap", "3"},

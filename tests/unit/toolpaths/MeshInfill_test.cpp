@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "ToolpathTestSupport.h"
@@ -17,6 +18,29 @@ InfillParams linesAt(coord_um distance) {
     p.line_distance_um = distance;
     p.angle_degrees = 0;
     return p;
+}
+
+TEST(MeshInfill, SkinEdgeSupportWallsTheInfillUnderTheSkinAbove) {
+    // skin_edge_support_layers: the left half of a 20 mm square has skin above; as CuraEngine, that piece
+    // gets an infill wall (a loop) and lines of its own, the right half its lines alone.
+    LayerInfill layer;
+    layer.by_density = {{{square(0, 0, 20'000)}}};
+    InfillParams params = linesAt(2'000);
+    auto loops = [](const std::vector<ExtrusionPath>& paths) {
+        return std::count_if(paths.begin(), paths.end(), [](const ExtrusionPath& p) { return p.closed; });
+    };
+    EXPECT_EQ(loops(meshInfillPaths(layer, params)), 0);
+    const SkinEdgeSupport edge{{test::rect(0, 0, 10'000, 20'000)}, {square(0, 0, 20'000)}};
+    const std::vector<ExtrusionPath> split = meshInfillPaths(layer, params, edge);
+    EXPECT_EQ(loops(split), 1);
+    for (const ExtrusionPath& path : split) {
+        if (path.closed) {
+            for (const Point2& p : path.points)
+                EXPECT_LE(p.X, 10'000);  // around the piece under the skin
+        }
+    }
+    // Skin above all of it: nothing is left beside it, so nothing is split.
+    EXPECT_EQ(loops(meshInfillPaths(layer, params, {{square(0, 0, 20'000)}, {square(0, 0, 20'000)}})), 0);
 }
 
 TEST(MeshInfill, DensitiesTogetherMakeTheBaseSpacing) {
