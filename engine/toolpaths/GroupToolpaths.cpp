@@ -12,6 +12,7 @@
 #include "toolpaths/adhesion/ExtruderSkirts.h"
 #include "toolpaths/adhesion/PrimeTower.h"
 #include "toolpaths/support/Support.h"
+#include "toolpaths/support/SupportedSkinFan.h"
 
 namespace mixengine {
 namespace {
@@ -155,6 +156,10 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         support.meshes.push_back({mesh.settings, mesh.layers, mesh.role});
     SupportResult support_result = generateSupport(support, threads);
     result.support = std::move(support_result.paths);
+    for (MeshToolpaths& mesh : result.meshes) {
+        if (mesh.settings != nullptr)
+            markSupportedSkinFan(*input.global, *mesh.settings, support_result.areas, mesh.layers, threads);
+    }
 
     std::vector<std::set<int>> used = extrudersPerLayer(result, input.heights.size());
     const TowerInput tower{input.global, input.extruders, &input.heights, used, &model};

@@ -85,6 +85,18 @@ SupportAreaParams areaParams(const Settings& s, coord_um layer_height) {
     if (s.boolean(key::support_bottom_enable))
         p.floor_layers =
             std::max(1, layersFor(s.lengthMicrons(key::support_bottom_height), layer_height, false));
+    p.stair_layers =
+        static_cast<int>(std::max<coord_um>(0, s.lengthMicrons(key::support_bottom_stair_step_height)) /
+                             std::max<coord_um>(1, layer_height) +
+                         1);
+    p.stair_width_um = std::max<coord_um>(0, s.lengthMicrons(key::support_bottom_stair_step_width));
+    const double min_slope =
+        std::tan(radiansFromDegrees(s.angleDegrees(key::support_bottom_stair_step_min_slope)));
+    p.slope_band_um =
+        10 + (min_slope > 1e-9 ? static_cast<coord_um>(double(layer_height) / min_slope) / 2 : 0);
+    p.roof_offset_um = s.lengthMicrons(key::support_roof_offset);
+    p.min_roof_area_um2 = s.real(key::minimum_roof_area) * 1e6;
+    p.min_floor_area_um2 = s.real(key::minimum_bottom_area) * 1e6;
     return p;
 }
 
@@ -138,6 +150,7 @@ SupportLayerFills layerFills(const SupportInput& in, int layer) {
                                                                 : key::support_line_distance);
     fills.body.angle_degrees = angleFor(body, key::support_infill_angles, layer, 0);
     fills.body.connect_zigzags = body.boolean(key::support_connect_zigzags);
+    fills.body.connect_lines = body.boolean(key::zig_zaggify_support);
     if (body.boolean(key::support_skip_some_zags))
         fills.body.zag_skip_count =
             static_cast<int>(std::max<long long>(0, body.integer(key::support_zag_skip_count)));
@@ -441,6 +454,7 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         result.filler = supportLayerPaths(areas[0], layerFills(in, -1), 0);
         paths[0].clear();
     }
+    result.areas = std::move(areas);
     return result;
 }
 

@@ -51,15 +51,77 @@ void startTowersUnderIslands(TowerRoofs& roofs, const std::vector<Paths>& suppor
         roofs.startUnderSmallIslands(support[i], support[i + look], model[i - below]);
 }
 
+/// The band from `inner_um` inside the outlines to `outer_um` outside them (CuraEngine's tubeShape).
+Paths tube(const Paths& outlines, coord_um inner_um, coord_um outer_um) {
+    return differenceOf(offsetMiter(outlines, outer_um, kCuraMiterLimit),
+                        offsetMiter(outlines, -inner_um, kCuraMiterLimit));
+}
+
+/// Per layer the model's slopes for the stair steps (see the header), summed over each step's layers.
+std::vector<Paths> slopedAreas(const std::vector<Paths>& model, const SupportAreaParams& p, int threads) {
+    const std::size_t n = model.size();
+    std::vector<Paths> sloped(n);
+    if (p.stair_layers <= 1)
+        return sloped;
+    const coord_um band = p.slope_band_um;
+    parallelFor(n, threads, [&](std::size_t i) {
+        if (i == 0)
+            return;
+        const Paths meet = intersectAll(tube(model[i - 1], band, 10), tube(model[i], 10, band));
+        sloped[i] = offsetMiter(offsetMiter(meet, -10, kCuraMiterLimit), 10 + band, kCuraMiterLimit);
+    });
+    const std::size_t step = static_cast<std::size_t>(p.stair_layers);
+    for (std::size_t i = 2; i < n; ++i) {
+        if (i % step != 1)
+            sloped[i] = unionOf(sloped[i], sloped[i - 1]);
+    }
+    return sloped;
+}
+
+/// The stair steps' removal carried down the layers (see the header).
+class StairSteps {
+  public:
+    StairSteps(const std::vector<Paths>& model, const SupportAreaParams& p, int threads)
+        : model_(model), p_(p), sloped_(slopedAreas(model, p, threads)) {}
+
+    /// Layer i's support less the current step's removal.
+    void cut(Paths& support, std::size_t i) const {
+        if (p_.stair_layers > 1 && i >= gap() && !removal_.empty())
+            support = differenceOf(support, removal_);
+    }
+
+    /// After layer i (every layer, with support or not): the removal for the layers below.
+    void advance(std::size_t i) {
+        const std::size_t gap = this->gap();
+        const std::size_t step = static_cast<std::size_t>(std::max(1, p_.stair_layers));
+        if (step <= 1 || i < gap || i % step != 0)
+            return;
+        const std::size_t bottom = i - gap;
+        const Paths supporting = bottom >= 1 ? model_[bottom - 1] : Paths{};
+        const Paths allowed =
+            intersectAll(offsetMiter(supporting, p_.stair_width_um, kCuraMiterLimit), sloped_[i]);
+        removal_ = bottom + 1 >= step ? intersectAll(model_[bottom + 1 - step], allowed) : allowed;
+    }
+
+  private:
+    std::size_t gap() const { return static_cast<std::size_t>(std::max(0, p_.bottom_gap_layers)); }
+
+    const std::vector<Paths>& model_;
+    const SupportAreaParams& p_;
+    std::vector<Paths> sloped_;
+    Paths removal_;
+};
+
 /// Top-down: each layer's support is the layer above's plus the overhangs it must carry (and the
 /// towers' roofs), joined (closing by the join distance), minus the model here and bottom_gap layers
 /// below, simplified.
 std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<Paths>& model,
-                                 const std::vector<Paths>& blocked, const SupportAreaParams& p) {
+                                 const std::vector<Paths>& blocked, const SupportAreaParams& p, int threads) {
     const std::vector<Paths>& full = overhangs.full;
     const std::size_t n = full.size();
     const bool towers = p.towers.max_supported_diameter_um > 0;
     TowerRoofs roofs(p.towers);
+    StairSteps stairs(model, p, threads);
     std::vector<Paths> support(n);
     Paths current;
     for (std::size_t i = n; i-- > 0;) {
@@ -72,13 +134,17 @@ std::vector<Paths> propagateDown(const Overhangs& overhangs, const std::vector<P
             roofs.startAt(pointsOf(overhangs, i + 1), pointsOf(overhangs, i));
             roofs.addTo(current);
         }
-        if (current.empty())
+        if (current.empty()) {
+            stairs.advance(i);
             continue;
+        }
         if (p.join_distance_um > 0)  // as CuraEngine: its offsets bevel at a miter limit of 1.2
             current = offsetMiter(offsetMiter(current, p.join_distance_um, kCuraMiterLimit),
                                   -p.join_distance_um, kCuraMiterLimit);
         current = smoothOutward(current, kSmoothingAngleDegrees, p.smoothing_um);
         current = cleanPolygons(differenceOf(current, blocked[i]), kCleanUm);
+        stairs.cut(current, i);
+        stairs.advance(i);
         support[i] = current;
         if (towers)
             startTowersUnderIslands(roofs, support, model, i, p);
@@ -123,6 +189,17 @@ void keepColumnsOnThePlate(std::vector<SupportLayerAreas>& layers) {
         layers[i].support = intersectAll(layers[i].support, layers[i - 1].support);
 }
 
+/// An interface as CuraEngine 4.13 finishes it: grown by `offset_um` (a growth kept within `support`),
+/// then its islands under `min_area_um2` dropped.
+Paths finishInterface(Paths interface, const Paths& support, coord_um offset_um, double min_area_um2) {
+    if (offset_um != 0 && !interface.empty()) {
+        interface = offsetMiter(interface, offset_um, kCuraMiterLimit);
+        if (offset_um > 0)
+            interface = intersectAll(interface, support);
+    }
+    return min_area_um2 > 0 ? removeSmallIslands(interface, min_area_um2) : interface;
+}
+
 void splitInterfaces(std::vector<SupportLayerAreas>& out, const std::vector<Paths>& model,
                      const SupportAreaParams& p, int threads) {
     const int n = static_cast<int>(model.size());
@@ -137,11 +214,14 @@ void splitInterfaces(std::vector<SupportLayerAreas>& out, const std::vector<Path
             return;
         if (roof_window > 0 && i + 1 < n) {
             const std::size_t from = static_cast<std::size_t>(std::min(i + 1, std::max(0, n - roof_window)));
-            layer.roof = intersectAll(layer.support, above[from]);
+            layer.roof = finishInterface(intersectAll(layer.support, above[from]), layer.support,
+                                         p.roof_offset_um, p.min_roof_area_um2);
         }
         if (floor_window > 0 && i > 0) {
             const std::size_t from = static_cast<std::size_t>(std::max(0, i - floor_window));
-            layer.floor = differenceOf(intersectAll(layer.support, below[from]), layer.roof);
+            layer.floor = differenceOf(finishInterface(intersectAll(layer.support, below[from]),
+                                                       layer.support, 0, p.min_floor_area_um2),
+                                       layer.roof);
         }
         layer.support = differenceOf(layer.support, unionOf(layer.roof, layer.floor));
     });
@@ -180,7 +260,7 @@ std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& mod
     parallelFor(n, threads, [&](std::size_t i) {
         blocked[i] = gap > 0 && i >= gap ? unionOf(simple[i], simple[i - gap]) : simple[i];
     });
-    const std::vector<Paths> propagated = propagateDown(overhangs, simple, blocked, p);
+    const std::vector<Paths> propagated = propagateDown(overhangs, simple, blocked, p, threads);
     const std::vector<Paths> from_meshes = supportMeshSupport(meshes, blocked);
     std::vector<SupportLayerAreas> out(n);
     const std::size_t top = static_cast<std::size_t>(std::max(0, p.top_gap_layers));

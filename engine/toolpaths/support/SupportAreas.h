@@ -19,10 +19,19 @@
 //     only support_xy_distance_overhang next to the layer's own overhang) and the model top_gap
 //     layers up, and islands under minimum_support_area; support_type buildplate keeps only
 //     columns that reach the plate; support with no support above or below it is dropped;
+//   - stair steps (stair_layers s > 1), as CuraEngine 4.13 rests support on slopes: every s-th layer
+//     i (i mod s = 0) the model of layer i − bottom_gap − s + 1, where it lies on a slope and within
+//     support_bottom_stair_step_width of the model of layer i − bottom_gap − 1, is taken out of the
+//     support of the layers below i as well (so the support stands on the slope in steps s layers
+//     high); the slopes of layer n are where the bands slope_band inside layer n−1's outline and
+//     slope_band outside layer n's meet, summed over the layers of each step;
 //   - towers (params.towers, toolpaths/support/SupportTowers.h): their roofs are added to each layer's
 //     support before it is joined with the layer above;
 //   - interfaces: the top roof_layers of support under the model are roof, the bottom
-//     floor_layers on the model are floor (support_roof_height / support_bottom_height in layers).
+//     floor_layers on the model are floor (support_roof_height / support_bottom_height in layers);
+//     as CuraEngine 4.13, the roof is then grown by support_roof_offset (mitred; a positive offset kept
+//     within the support), and roof and floor islands smaller than minimum_roof_area /
+//     minimum_bottom_area stay plain support.
 #include <vector>
 
 #include "geometry/Point.h"
@@ -47,6 +56,12 @@ struct SupportAreaParams {
     double min_area_um2 = 0;
     int roof_layers = 0;                ///< 0 = no roof interface
     int floor_layers = 0;               ///< 0 = no floor interface
+    coord_um roof_offset_um = 0;        ///< support_roof_offset: the roof grown (within the support)
+    double min_roof_area_um2 = 0;       ///< minimum_roof_area: smaller roof islands stay support
+    double min_floor_area_um2 = 0;      ///< minimum_bottom_area: smaller floor islands stay support
+    int stair_layers = 1;               ///< support_bottom_stair_step_height in layers, + 1 (1 = no stairs)
+    coord_um stair_width_um = 0;        ///< support_bottom_stair_step_width
+    coord_um slope_band_um = 0;         ///< how wide a slope between two layers is looked for (see above)
     coord_um conical_step_um = 0;       ///< conical support: offset per layer going down (0 = off)
     coord_um conical_min_width_um = 0;  ///< narrower parts are not shrunk
     SupportTowerParams towers;          ///< support towers (toolpaths/support/SupportTowers.h); default off

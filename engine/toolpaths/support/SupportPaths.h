@@ -8,7 +8,8 @@
 //               Support, style of the support infill extruder (support_line_width,
 //               speed_support_infill, support_material_flow);
 //   roof/floor — support_roof_* / support_bottom_* pattern, line distance, angles (default 90°),
-//               width, speed and flow; Feature SupportInterface.
+//               width, speed and flow; Feature SupportInterface (the floor SupportBottom, marked
+//               as interface, printed with its own acceleration and jerk as CuraEngine's).
 // With gradual_support_infill_steps or support_infill_sparse_thickness the body's infill follows its
 // arrangement (toolpaths/infill/InfillLayers.h, as CuraEngine's gradual support and combined support
 // layers): inside the walls, the areas printed t layers thick first (laid out as for a line t times
@@ -34,6 +35,7 @@ struct SupportFill {
     int wall_count = 0;
     bool connect_zigzags = false;  ///< support_connect_zigzags: zigzag with its end pieces
     int zag_skip_count = 0;        ///< support_skip_some_zags: its support_zag_skip_count (0 = off)
+    bool connect_lines = false;    ///< zig_zaggify_support: the lines joined along the area's edge
     coord_um overlap_um = 0;       ///< how far the infill reaches into the walls (infill_overlap_mm)
     FeatureStyle style;
 };
