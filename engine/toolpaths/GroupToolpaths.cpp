@@ -7,12 +7,12 @@
 #include "geometry/PolygonOps.h"
 #include "toolpaths/EmptyLayers.h"
 #include "toolpaths/InfillMeshes.h"
+#include "toolpaths/SupportedSkinFan.h"
 #include "toolpaths/adhesion/Adhesion.h"
 #include "toolpaths/adhesion/DraftShield.h"
 #include "toolpaths/adhesion/ExtruderSkirts.h"
 #include "toolpaths/adhesion/PrimeTower.h"
 #include "toolpaths/support/Support.h"
-#include "toolpaths/support/SupportedSkinFan.h"
 
 namespace mixengine {
 namespace {

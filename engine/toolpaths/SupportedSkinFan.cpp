@@ -1,4 +1,4 @@
-#include "toolpaths/support/SupportedSkinFan.h"
+#include "toolpaths/SupportedSkinFan.h"
 
 #include <algorithm>
 
