@@ -155,7 +155,7 @@ bool isRaft(Feature feature) {
 
 bool isSupport(Feature feature) {
     return feature == Feature::Support || feature == Feature::SupportInterface ||
-           feature == Feature::DraftShield;
+           feature == Feature::SupportBottom || feature == Feature::DraftShield;
 }
 
 int scopeOf(Feature feature, int mesh) {

@@ -39,6 +39,8 @@ MotionKeys featureMotionKeys(Feature feature) {
             return {key::acceleration_support_infill, key::jerk_support_infill};
         case Feature::SupportInterface:
             return {key::acceleration_support_roof, key::jerk_support_roof};
+        case Feature::SupportBottom:
+            return {key::acceleration_support_bottom, key::jerk_support_bottom};
         case Feature::Skirt:
         case Feature::DraftShield:
             return {key::acceleration_skirt_brim, key::jerk_skirt_brim};

@@ -2,16 +2,49 @@
 
 #include <algorithm>
 
+#include "geometry/Clip.h"
+
 namespace mixengine {
+
+namespace {
+
+/// Whether the mesh's outlines are its outer walls' (see partOutlines).
+bool outlinedByOuterWall(const Settings& s) {
+    return s.boolean(key::support_enable) && !s.boolean(key::fill_outline_gaps) &&
+           s.integer(key::wall_line_count) > 0;
+}
+
+/// The outer walls' loops grown by half their width (squared corners, as CuraEngine's print outline).
+Paths outerWallOutline(const MeshLayerGroups& layer) {
+    Paths loops;
+    coord_um width_um = 0;
+    for (const ExtrusionPath& path : layer.outer_walls) {
+        if (!path.closed || path.points.size() < 3)
+            continue;
+        loops.push_back(path.points);
+        width_um = std::max(width_um, path.width_um);
+    }
+    if (loops.empty())
+        return {};
+    const Paths area = clipAreas(loops, {}, ClipOp::Union, FillRule::EvenOdd);
+    return offsetMitred(area, double(width_um) / 2, OffsetEnds::ClosedPolygon, 2.0, 25.0);
+}
+
+}  // namespace
 
 Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer) {
     Paths area;
     const std::size_t sliced_layer = toolpaths.first_sliced_layer + layer;
     for (const MeshToolpaths& mesh : toolpaths.meshes) {
-        if (mesh.sliced && sliced_layer < mesh.sliced->size()) {
-            const Paths& outlines = (*mesh.sliced)[sliced_layer].outlines;
-            area.insert(area.end(), outlines.begin(), outlines.end());
+        if (!mesh.sliced || sliced_layer >= mesh.sliced->size())
+            continue;
+        if (mesh.settings && outlinedByOuterWall(*mesh.settings) && layer < mesh.layers.size()) {
+            const Paths outline = outerWallOutline(mesh.layers[layer]);
+            area.insert(area.end(), outline.begin(), outline.end());
+            continue;
         }
+        const Paths& outlines = (*mesh.sliced)[sliced_layer].outlines;
+        area.insert(area.end(), outlines.begin(), outlines.end());
     }
     return area;
 }

@@ -13,7 +13,9 @@
 namespace mixengine {
 
 /// The outlines of every mesh's sliced layer toolpaths.first_sliced_layer + layer, one after the
-/// other (microns).
+/// other (microns). As CuraEngine 4.13's print outline: a mesh with support_enable, walls and without
+/// fill_outline_gaps is outlined by its outer walls grown by half their width (parts too thin for an
+/// outer wall are left out).
 Paths partOutlines(const GroupToolpaths& toolpaths, std::size_t layer);
 
 /// Where travel on `layer` of `toolpaths` may go without retraction: every mesh's comb area for its

@@ -7,6 +7,7 @@
 #include "geometry/PolygonOps.h"
 #include "toolpaths/EmptyLayers.h"
 #include "toolpaths/InfillMeshes.h"
+#include "toolpaths/SupportedSkinFan.h"
 #include "toolpaths/adhesion/Adhesion.h"
 #include "toolpaths/adhesion/DraftShield.h"
 #include "toolpaths/adhesion/ExtruderSkirts.h"
@@ -155,6 +156,10 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         support.meshes.push_back({mesh.settings, mesh.layers, mesh.role});
     SupportResult support_result = generateSupport(support, threads);
     result.support = std::move(support_result.paths);
+    for (MeshToolpaths& mesh : result.meshes) {
+        if (mesh.settings != nullptr)
+            markSupportedSkinFan(*input.global, *mesh.settings, support_result.areas, mesh.layers, threads);
+    }
 
     std::vector<std::set<int>> used = extrudersPerLayer(result, input.heights.size());
     const TowerInput tower{input.global, input.extruders, &input.heights, used, &model};

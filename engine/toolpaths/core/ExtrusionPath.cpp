@@ -8,6 +8,7 @@ Feature markedFeature(Feature feature) {
             return Feature::Skin;
         case Feature::RaftBase:
         case Feature::RaftSurface:
+        case Feature::SupportBottom:
             return Feature::SupportInterface;
         case Feature::RaftInterface:
             return Feature::Support;

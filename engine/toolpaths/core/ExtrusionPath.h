@@ -28,12 +28,14 @@ enum class Feature {
     RaftInterface,
     RaftSurface,
     DraftShield,
+    SupportBottom,  ///< the support's floor: an interface with its own acceleration and jerk
 };
 
 std::string_view featureMarker(Feature feature);  ///< "WALL-OUTER", "FILL", ...
 
 /// The feature CuraEngine files `feature` under (;TYPE:, time estimates, preview line types):
-/// Ironing → Skin, RaftBase/RaftSurface → SupportInterface, RaftInterface → Support, else itself.
+/// Ironing → Skin, RaftBase/RaftSurface/SupportBottom → SupportInterface, RaftInterface → Support, else
+/// itself.
 Feature markedFeature(Feature feature);
 
 /// How a wall prints where it crosses air (bridge_wall_*; toolpaths/walls/BridgeWalls.h).

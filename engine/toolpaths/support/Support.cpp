@@ -201,6 +201,7 @@ SupportLayerFills layerFills(const SupportInput& in, int layer, const CrossFill*
     fills.body.angle_degrees = angleFor(body, key::support_infill_angles, layer, 0);
     fills.body.zigzag_ends =
         body.boolean(key::support_connect_zigzags) ? ZigzagEnds::Connected : ZigzagEnds::Open;
+    fills.body.connect_lines = body.boolean(key::zig_zaggify_support);
     if (body.boolean(key::support_skip_some_zags))
         fills.body.zag_skip_count =
             static_cast<int>(std::max<long long>(0, body.integer(key::support_zag_skip_count)));
@@ -541,6 +542,7 @@ SupportResult generateSupport(const SupportInput& in, int threads) {
         result.filler = supportLayerPaths(areas[0], layerFills(in, -1, cross.get()), 0);
         paths[0].clear();
     }
+    result.areas = std::move(areas);
     return result;
 }
 

@@ -23,6 +23,7 @@
 #include "slicing/MultiVolumes.h"
 #include "slicing/Slicer.h"
 #include "toolpaths/core/ExtrusionPath.h"
+#include "toolpaths/support/SupportAreas.h"
 
 namespace mixengine {
 
@@ -52,6 +53,7 @@ struct SupportResult {
     Paths first_layer_area;                         ///< the support's area on layer 0 (for the brim)
     std::vector<ExtrusionPath> filler;              ///< raft only: the paths of every raft filler layer
     std::vector<ExtrusionPath> brim;                ///< the support brim (see above), outermost first
+    std::vector<SupportLayerAreas> areas;           ///< [layer] the areas printed (empty without support)
 };
 
 SupportResult generateSupport(const SupportInput& input, int threads);

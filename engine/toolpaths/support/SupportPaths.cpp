@@ -34,9 +34,9 @@ InfillParams infillParams(const SupportFill& fill, Feature feature, coord_um z) 
     p.extruder = fill.style.extruder;
     p.zigzag_ends = fill.zigzag_ends;
     p.zag_skip_count = fill.zag_skip_count;
+    p.connect_lines = fill.connect_lines;
     p.overlap_um = fill.overlap_um;
     p.cross = fill.cross;
-    p.connect_lines = fill.connect_lines;
     p.simplify_resolution_um = fill.simplify_resolution_um;
     p.simplify_deviation_um = fill.simplify_deviation_um;
     return p;
@@ -110,7 +110,7 @@ void appendArrangedFill(const Paths& area, const LayerInfill& arranged, const Su
 std::vector<ExtrusionPath> supportLayerPaths(const SupportLayerAreas& areas, const SupportLayerFills& fills,
                                              coord_um z_um, const LayerInfill* arranged) {
     std::vector<ExtrusionPath> out;
-    appendFill(areas.floor, fills.floor, Feature::SupportInterface, z_um, out);
+    appendFill(areas.floor, fills.floor, Feature::SupportBottom, z_um, out);
     if (arranged != nullptr)
         appendArrangedFill(areas.support, *arranged, fills.body, z_um, out);
     else
