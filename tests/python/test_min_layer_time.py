@@ -73,7 +73,7 @@ def test_one_factor_for_every_extrusion(tmp_path):
 
 
 @pytest.mark.parametrize("setting", ["speed_print=75", "speed_wall=37.5", "speed_topbottom=37.5",
-                                     "speed_infill=75"])
+                                     "speed_infill=75", "small_feature_max_length=1", "small_hole_max_size=1"])
 def test_faster_speeds_change_the_slivers_print_as_curaengine(setting):
     key, value = setting.split("=")
     verdict = parity.judge({}, key, value, SCENE)
