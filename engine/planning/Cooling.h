@@ -1,18 +1,21 @@
 #pragma once
-// Cooling of one planned layer, with Cura's keys:
+// Cooling of one planned layer, with Cura's keys, as CuraEngine 4.13 does it (ExtruderPlan::
+// processFanSpeedAndMinimalLayerTime / forceMinimalLayerTime), on its naive estimate (estimateLayer):
 //   - minimum layer time: when the layer would take less than cool_min_layer_time, every
-//     extrusion is slowed by the same factor so that it takes that long, but never below
-//     cool_min_speed (travel keeps its speed);
-//   - fan: from cool_fan_full_layer on, cool_fan_speed_min for layers that take at least
-//     cool_min_layer_time_fan_speed_max, cool_fan_speed_max for layers at or under
-//     cool_min_layer_time, linear in between; before that layer a ramp from cool_fan_speed_0
-//     (layers below the model — raft filler layers — count as layer 0);
+//     extrusion is slowed by the same factor so that the extrusions take cool_min_layer_time minus
+//     the travel time (at least 1 s); when that would bring the slowest extrusion under
+//     cool_min_speed, the factor is the one that prints it at cool_min_speed (travel keeps its
+//     speed);
+//   - fan: from cool_fan_full_layer on, cool_fan_speed_max for layers whose estimate (before the
+//     slow-down, retracted travel left out) is under cool_min_layer_time, else cool_fan_speed_min
+//     for layers that take at least cool_min_layer_time_fan_speed_max, linear in between; before
+//     that layer a ramp from cool_fan_speed_0 (layers below the model — raft filler layers — count
+//     as layer 0);
 //   - raft layers (raftCooling): their raft_*_fan_speed replaces cool_fan_speed_min and there is no
 //     ramp, as CuraEngine 4.13 cools them; the minimum layer time and cool_fan_speed_max still apply;
 //   - cool_lift_head: when the layer still takes more than 0.1 s less than cool_min_layer_time once
 //     slowed down, the layer ends with a LiftHead step (as CuraEngine 4.13: retract, lift 3 mm, move
 //     20 mm towards the middle of the bed, wait out the rest).
-// Layer time here is the planner's simple estimate: distance / speed of every move.
 #include <vector>
 
 #include "planning/LayerPlan.h"
@@ -32,9 +35,28 @@ struct CoolingParams {
     bool lift_head = false;      ///< cool_lift_head
     Point2 bed_middle_um{0, 0};  ///< where the lifted head moves towards
     double travel_speed_mm_s = 150;
+    /// What a retracted travel adds to the estimate: retraction_amount / retraction_retract_speed
+    /// of the layer's (last) extruder, 0 without retraction (coolingParams takes the global ones).
+    double retract_seconds = 0;
 };
 
+/// CuraEngine 4.13's naive estimate of a layer (ExtruderPlan::computeNaiveTimeEstimates): every
+/// move's distance / speed; the travel the layer starts with counts as one straight unretracted
+/// move from the head's start to where it ends (CuraEngine estimates a layer before it plans the
+/// travel that connects it to the one below); each later retracted travel adds retract_seconds.
+struct LayerEstimate {
+    double extrude_s = 0;      ///< extrusions
+    double travel_s = 0;       ///< travel and retractions
+    double unretracted_s = 0;  ///< travel that does not retract, and half of each retraction
+};
+
+/// The estimate of `layer` (see LayerEstimate), the head at `start`.
+LayerEstimate estimateLayer(const PlannedLayer& layer, Point2 start, double retract_seconds);
+
 CoolingParams coolingParams(const Settings& settings);
+
+/// retraction_amount / retraction_retract_speed of an extruder (0 when it does not retract).
+double retractSeconds(const Settings& extruder);
 
 /// The model's cooling for a raft layer printed with `raft_fan_ratio` (0..1).
 CoolingParams raftCooling(const CoolingParams& model, double raft_fan_ratio);
@@ -45,7 +67,8 @@ std::vector<double> stepSeconds(const PlannedLayer& layer, Point2 start);
 /// Seconds the layer's moves take at their planned speeds (distance / speed, from `start`).
 double naiveLayerSeconds(const PlannedLayer& layer, Point2 start);
 
-/// Slows the layer down and sets its fan (the layer's SetFan steps) as described above.
+/// Slows the layer down and sets its fan (the layer's SetFan steps) as described above; the
+/// estimate is estimateLayer(layer, start, params.retract_seconds).
 void applyCooling(PlannedLayer& layer, Point2 start, const CoolingParams& params);
 
 }  // namespace mixengine

@@ -339,11 +339,13 @@ void useExtruder(int extruder, PlannedLayer& planned, PlanRun& run) {
         switchTo(extruder, run.extruders, run.state, planned.steps);
 }
 
-/// Retraction at the layer start (not on the print's first layer), cooling and acceleration/jerk.
+/// Retraction at the layer start (not on the print's first layer), cooling (its estimate with the
+/// retractions of the extruder the layer ends with, as CuraEngine) and acceleration/jerk.
 void finishLayer(PlannedLayer& planned, bool after_first, int layer_extruder, Point2 layer_start,
-                 const CoolingParams& cooling, PlanRun& run) {
+                 CoolingParams cooling, PlanRun& run) {
     if (after_first)
         retractAtLayerStart(planned, run.extruders[trainOf(layer_extruder, run.extruders)]);
+    cooling.retract_seconds = retractSeconds(run.extruders[trainOf(run.state.extruder, run.extruders)]);
     applyCooling(planned, layer_start, cooling);
     assignMotion(planned, run.motion, layer_extruder);
 }

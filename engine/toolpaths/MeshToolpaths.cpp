@@ -19,6 +19,7 @@
 #include "toolpaths/walls/BridgeWalls.h"
 #include "toolpaths/walls/OutlineOffsets.h"
 #include "toolpaths/walls/Seam.h"
+#include "toolpaths/walls/SmallFeatures.h"
 #include "toolpaths/walls/WallOverlap.h"
 #include "toolpaths/walls/Walls.h"
 
@@ -343,6 +344,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
                 walls.walls = generateWalls(parts.others, params).walls;
         }
         applyFuzzySkin(walls.walls, fuzzySkinParams(settings, layer), layer);
+        slowSmallFeatures(walls.walls, smallFeatureParams(settings, layer));
         placeSeams(walls.walls, seam, layer);
         if (bridge_walls.enabled && layer > 0)
             markBridgedWalls(walls.walls, outlines,

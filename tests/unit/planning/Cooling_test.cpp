@@ -45,6 +45,65 @@ TEST(Cooling, NeverBelowMinimumSpeed) {
     EXPECT_DOUBLE_EQ(layer.steps[1].speed_mm_s, 10);
 }
 
+PlanStep moveTo(PlanStep::Kind kind, double x_mm, double speed, bool retract = false) {
+    PlanStep step;
+    step.kind = kind;
+    step.to = {static_cast<coord_um>(x_mm * 1000), 0};
+    step.speed_mm_s = speed;
+    step.retract = retract;
+    return step;
+}
+
+TEST(Cooling, OneFactorForEveryExtrusionTheSlowestAtTheMinimumSpeed) {
+    // 100 mm at 50 mm/s and 20 mm at 20 mm/s: 3 s; 0.6 would print the slow one at 12 mm/s, but
+    // the 10 mm/s minimum speed already caps the slow one when the layer needs 0.3
+    PlannedLayer layer = layerOf(100, 50);
+    layer.steps.push_back(moveTo(PlanStep::Kind::Extrude, 120, 20));
+    CoolingParams p = params();
+    p.min_layer_time_s = 10;  // would need 0.3
+    applyCooling(layer, {0, 0}, p);
+    EXPECT_DOUBLE_EQ(layer.steps[1].speed_mm_s, 25);  // the same factor, 0.5, as the slow one
+    EXPECT_DOUBLE_EQ(layer.steps[2].speed_mm_s, 10);
+}
+
+TEST(Cooling, EstimateCountsRetractionsButNotTheLeadingTravelsRoute) {
+    PlannedLayer layer = layerOf(0, 50);
+    layer.steps.pop_back();
+    // the travel the layer starts with: a route of two moves, counted as the straight 30 mm
+    layer.steps.push_back(moveTo(PlanStep::Kind::Travel, 60, 150, true));
+    layer.steps.push_back(moveTo(PlanStep::Kind::Travel, 30, 150));
+    layer.steps.push_back(moveTo(PlanStep::Kind::Extrude, 130, 50));         // 2 s
+    layer.steps.push_back(moveTo(PlanStep::Kind::Travel, 280, 150, true));   // 1 s + 0.5 s retraction
+    layer.steps.push_back(moveTo(PlanStep::Kind::Travel, 430, 150));         // the same travel
+    layer.steps.push_back(moveTo(PlanStep::Kind::Travel, 580, 150, false));  // still the same travel
+    const LayerEstimate estimate = estimateLayer(layer, {0, 0}, 0.5);
+    EXPECT_NEAR(estimate.extrude_s, 2.0, 1e-9);
+    EXPECT_NEAR(estimate.travel_s, 0.2 + 3.0 + 0.5, 1e-9);
+    EXPECT_NEAR(estimate.unretracted_s, 0.2 + 0.25, 1e-9);
+}
+
+TEST(Cooling, ExtrusionsTakeAtLeastOneSecond) {
+    // 4.5 s of travel leaves 0.5 s of a 5 s minimum for 0.4 s of extrusion: slowed to 1 s, not 0.5
+    PlannedLayer layer = layerOf(20, 50);
+    layer.steps.push_back(moveTo(PlanStep::Kind::Travel, 695, 150));
+    CoolingParams p = params();
+    p.min_speed_mm_s = 1;
+    applyCooling(layer, {0, 0}, p);
+    EXPECT_DOUBLE_EQ(layer.steps[1].speed_mm_s, 20);
+}
+
+TEST(Cooling, FanFollowsTheEstimateBeforeTheSlowDownWithoutRetractedTravel) {
+    // 5.5 s extruding, a retracted 1 s travel and its 0.5 s retraction: 7 s, no slow-down; the fan
+    // sees 5.5 s + half the retraction = 5.75 s
+    PlannedLayer layer = layerOf(275, 50);
+    layer.steps.push_back(moveTo(PlanStep::Kind::Travel, 425, 150, true));
+    CoolingParams p = params();
+    p.retract_seconds = 0.5;
+    applyCooling(layer, {0, 0}, p);
+    EXPECT_DOUBLE_EQ(layer.steps[1].speed_mm_s, 50);
+    EXPECT_NEAR(layer.steps[0].fan_ratio, 0.5 + 0.5 * (10 - 5.75) / 5, 1e-9);
+}
+
 TEST(Cooling, LiftHeadWaitsOutWhatTheMinimumSpeedLeaves) {
     CoolingParams p = params();
     p.lift_head = true;
