@@ -73,16 +73,18 @@ const std::vector<TriangleSoup>& soupsOf(const MeshInput& input, std::vector<Tri
     return loaded;
 }
 
+/// `formula_failures` collects the definition formulas that fail only in a mesh's scope.
 void addMeshes(const Scene& scene, const UserSettings& request_user, const MeshInput& input,
-               SceneGroup& group, Log& log) {
+               SceneGroup& group, Log& log, std::vector<std::string>& formula_failures) {
     std::vector<TriangleSoup> loaded;
     const std::vector<TriangleSoup>& soups = soupsOf(input, loaded, log);
     std::size_t kept = 0;
     std::vector<std::string> skipped;
     for (std::size_t part = 0; part < soups.size(); ++part) {
         const std::string name = soups.size() == 1 ? input.name : input.name + "#" + soups[part].name;
-        Settings settings = resolveMesh(scene.definitions, request_user, scene.machine, group.settings,
-                                        input.settings, input.default_extruder, name, &scene.profiles);
+        Settings settings =
+            resolveMesh(scene.definitions, request_user, scene.machine, group.settings, input.settings,
+                        input.default_extruder, name, &scene.profiles, &formula_failures);
         MeshBuildStats stats;
         Mesh mesh = buildMesh(soups[part], input.transform, &stats, name);
         if (stats.degenerate_dropped || stats.duplicates_dropped) {
@@ -140,7 +142,7 @@ Scene prepareScene(const SliceRequest& request, Log& log) {
     for (std::size_t g = 0; g < request.groups.size(); ++g) {
         SceneGroup& group = scene.groups[g];
         for (const MeshInput& input : request.groups[g].meshes)
-            addMeshes(scene, request.user, input, group, log);
+            addMeshes(scene, request.user, input, group, log, scene.machine.formula_failures);
         for (const SceneMesh& m : group.meshes)
             checkLineWidths(m.settings, given);
         // Dual-nozzle orientation pass (orient/OrientSettings.h): before placement.

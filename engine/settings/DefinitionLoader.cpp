@@ -133,6 +133,7 @@ struct MergedChain {
     std::map<std::string, std::string> metadata;
     json extruder_trains = json::object();
     std::vector<fs::path> files;
+    std::set<std::string, std::less<>> undeclared;  ///< overridden keys no file of the chain declares
 };
 
 void mergeFile(const fs::path& file, const json& doc, MergedChain& merged) {
@@ -146,6 +147,8 @@ void mergeFile(const fs::path& file, const json& doc, MergedChain& merged) {
     }
     if (auto it = doc.find("overrides"); it != doc.end() && it->is_object()) {
         for (const auto& [key, node] : it->items()) {
+            if (!merged.settings.count(key))
+                merged.undeclared.insert(key);
             SettingDefinition& def = merged.settings[key];
             def.key = key;
             applyProperties(def, node);
@@ -202,6 +205,7 @@ ExtruderDefinition loadExtruder(const std::string& id, int position, const std::
     extruder.id = id;
     extruder.position = position;
     extruder.overrides = std::move(merged.settings);
+    extruder.undeclared = std::move(merged.undeclared);
     return extruder;
 }
 

@@ -4,6 +4,7 @@
 // (`machine_extruder_trains` metadata → extruder definitions inheriting fdmextruder).
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,10 @@ struct ExtruderDefinition {
     std::string id;                  ///< definition id, e.g. "creality_base_extruder_0"
     int position = 0;                ///< extruder_nr
     SettingDefinitionMap overrides;  ///< what this extruder's chain changes relative to the global one
+    /// Keys of `overrides` that only an `overrides` entry names, no `settings` tree of the chain
+    /// (e.g. machine_nozzle_head_distance in ultimaker_s5_extruder_left). CuraEngine's -j applies
+    /// them; Cura's frontend (Uranium's DefinitionContainer) ignores them ("Unable to override").
+    std::set<std::string, std::less<>> undeclared;
 };
 
 struct DefinitionSet {

@@ -47,10 +47,15 @@ SettingValues withValues(const Settings& settings, const SettingValues& changes)
     return values;
 }
 
-/// `scope` plus Cura's time, date and day, which start/end codes may use as tokens. They are not
-/// kept in the resolved settings, so that resolution stays reproducible.
-Settings withClock(const Settings& scope) {
-    return scope.with(scope.scope(), {{"time", formatLocalTime("%H:%M:%S")},
+/// `scope` plus what Cura adds to every stack's tokens (StartSliceJob._buildReplacementTokens): the
+/// renamed copies of its own values, initial_extruder_nr, and time, date and day. The clock values
+/// are not kept in the resolved settings, so that resolution stays reproducible.
+Settings withTokenExtras(const Settings& scope, const std::string& initial_extruder_nr) {
+    return scope.with(scope.scope(), {{"print_bed_temperature", scope.text(key::material_bed_temperature)},
+                                      {"print_temperature", scope.text(key::material_print_temperature)},
+                                      {"travel_speed", scope.text(key::speed_travel)},
+                                      {"initial_extruder_nr", initial_extruder_nr},
+                                      {"time", formatLocalTime("%H:%M:%S")},
                                       {"date", formatLocalTime("%d-%m-%Y")},
                                       {"day", formatLocalTime("%a")}});
 }
@@ -105,25 +110,26 @@ void applyFrontendValues(ResolvedMachine& machine, const UserSettings& user) {
                                               "print_temperature");
         changes["material_print_temp_prepend"] = referenced ? "False" : "True";
     }
-    const Settings& initial = machine.extruders.front();
+    // Cura sends the extruder it starts with (StartSliceJob); the command line does not.
+    const std::string initial_nr =
+        global.has(key::initial_extruder_nr) ? global.text(key::initial_extruder_nr) : "0";
+    const Settings initial = withTokenExtras(machine.extruders.front(), initial_nr);
     changes["machine_start_gcode"] =
-        expandGcodeTokens(global.text(key::machine_start_gcode), withClock(initial), machine);
-    changes["machine_end_gcode"] =
-        expandGcodeTokens(global.text(key::machine_end_gcode), withClock(initial), machine);
+        expandGcodeTokens(global.text(key::machine_start_gcode), initial, machine);
+    changes["machine_end_gcode"] = expandGcodeTokens(global.text(key::machine_end_gcode), initial, machine);
     changes["print_bed_temperature"] = global.text(key::material_bed_temperature);
     changes["print_temperature"] = global.text(key::material_print_temperature);
     changes["travel_speed"] = global.text(key::speed_travel);
-    // Cura sends the extruder it starts with (StartSliceJob); the command line does not.
-    if (!global.has(key::initial_extruder_nr))
-        changes["initial_extruder_nr"] = "0";
+    changes["initial_extruder_nr"] = initial_nr;
     machine.global = Settings(global.scope(), withValues(global, changes));
 
     for (Settings& extruder : machine.extruders) {
         SettingValues own;
+        const Settings tokens = withTokenExtras(extruder, initial_nr);
         own["machine_extruder_start_code"] =
-            expandGcodeTokens(extruder.text(key::machine_extruder_start_code), extruder, machine);
+            expandGcodeTokens(extruder.text(key::machine_extruder_start_code), tokens, machine);
         own["machine_extruder_end_code"] =
-            expandGcodeTokens(extruder.text(key::machine_extruder_end_code), extruder, machine);
+            expandGcodeTokens(extruder.text(key::machine_extruder_end_code), tokens, machine);
         for (const char* key : {"material_bed_temp_prepend", "material_print_temp_prepend"}) {
             if (auto it = changes.find(key); it != changes.end())
                 own[key] = it->second;

@@ -3,10 +3,11 @@
 // quality, material and variant (nozzle) profiles, for the global stack and for each extruder
 // train. Values are text, or formulas (Cura writes those with a leading '=' in .inst.cfg files).
 //
-// Lookup order inside StackEvaluator, first hit wins:
-//   extruder N: -eN user, global user, extruder N's containers (top first), the extruder definition,
+// Lookup order inside StackEvaluator, first hit wins (Cura's own order):
+//   extruder N: -eN user, extruder N's containers (top first), the extruder definition, global user,
 //               the global containers, the machine definition;
 //   global:     global user, the global containers, the machine definition.
+// Without Cura's stacks (ProfileStack::cura false) the global user values come right after -eN's.
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ struct InstanceContainer {
 };
 
 struct ProfileStack {
+    /// The stacks of Cura's frontend (--profiles): StackEvaluator then resolves as Cura 4.13 does
+    /// (see settings/StackEvaluator.h, "Cura's frontend"). False: definitions and user values only,
+    /// as CuraEngine's command line.
+    bool cura = false;
     std::vector<InstanceContainer> global;                    ///< top first
     std::map<int, std::vector<InstanceContainer>> extruders;  ///< by extruder_nr, top first
 };

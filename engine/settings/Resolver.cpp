@@ -48,7 +48,7 @@ Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& g
 Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& given_user,
                      const ResolvedMachine& machine, const Settings& group,
                      const SettingValues& given_mesh_user, int default_extruder, const std::string& mesh_name,
-                     const ProfileStack* profiles) {
+                     const ProfileStack* profiles, std::vector<std::string>* failures) {
     const UserSettings user = withCanonicalKeys(given_user);  // seed 001's aliases
     const SettingValues mesh_user = withCanonicalKeys(given_mesh_user);
     int extruder = default_extruder;
@@ -74,6 +74,10 @@ Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& given
     } else {
         StackEvaluator stack(definitions, user, count, profiles);
         values = stack.allText(stack.addMeshScope(own, extruder));
+        for (const std::string& failure : stack.failures()) {
+            if (failures && std::find(failures->begin(), failures->end(), failure) == failures->end())
+                failures->push_back(failure);
+        }
     }
     values["extruder_nr"] = std::to_string(extruder);
     return Settings(scope, std::move(values));

@@ -31,10 +31,12 @@ Settings resolveMeshGroup(const ResolvedMachine& machine, const SettingValues& g
 
 /// A mesh's view. `default_extruder` is the train in focus when the mesh was given; the mesh's own
 /// extruder_nr, if set, wins. Formulas are re-evaluated in the mesh's scope when it has values of
-/// its own. Throws InputError when the extruder does not exist.
+/// its own. Throws InputError when the extruder does not exist. Definition formulas that fail only
+/// in the mesh's scope fall back to default_value and are appended to `failures` (when given) unless
+/// already there, so that each is reported once.
 Settings resolveMesh(const DefinitionSet& definitions, const UserSettings& user,
                      const ResolvedMachine& machine, const Settings& group, const SettingValues& mesh_user,
                      int default_extruder, const std::string& mesh_name,
-                     const ProfileStack* profiles = nullptr);
+                     const ProfileStack* profiles = nullptr, std::vector<std::string>* failures = nullptr);
 
 }  // namespace mixengine

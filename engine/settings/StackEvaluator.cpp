@@ -67,6 +67,15 @@ std::optional<long long> asInteger(const formula::Value& v) {
     return std::nullopt;
 }
 
+/// Python's `value == -1` for a number (a string never equals -1).
+bool isMinusOne(const formula::Value& v) {
+    if (v.is<std::int64_t>())
+        return v.as<std::int64_t>() == -1;
+    if (v.is<double>())
+        return v.as<double>() == -1.0;
+    return false;
+}
+
 std::string argumentKey(const std::vector<formula::Value>& args, std::size_t index) {
     if (index < args.size() && args[index].is<std::string>())
         return args[index].as<std::string>();
@@ -80,6 +89,7 @@ StackEvaluator::StackEvaluator(const DefinitionSet& definitions, const UserSetti
     : definitions_(definitions),
       user_(user),
       profiles_(profiles),
+      cura_(profiles != nullptr && profiles->cura),
       extruder_count_(std::max(1, extruder_count)) {
     scopes_.push_back(std::make_unique<Scope>());
     for (int e = 0; e < extruder_count_; ++e) {
@@ -115,6 +125,8 @@ const SettingDefinition* StackEvaluator::extruderOwn(int extruder, std::string_v
     // that train's overrides of machine settings.
     if (chosen->position != extruder && definitions_.find(key))
         return nullptr;
+    if (cura_ && chosen->undeclared.count(key))
+        return nullptr;  // Cura ignores an override of a key the extruder's chain does not declare
     auto it = chosen->overrides.find(key);
     return it == chosen->overrides.end() ? nullptr : &it->second;
 }
@@ -137,12 +149,17 @@ const formula::Expression& StackEvaluator::compiled(const std::string& formula) 
 formula::Value StackEvaluator::userValue(std::string_view key, const std::string& text) const {
     const SettingDefinition* def = anyDefinition(key);
     try {
-        return valueFromText(key, def ? def->type : std::string(), text);
+        return typedValue(key, def ? def->type : std::string(), text);
     } catch (const UserValueError&) {
         throw;
     } catch (const InputError& e) {
         throw UserValueError(e.what());
     }
+}
+
+formula::Value StackEvaluator::typedValue(std::string_view key, const std::string& type,
+                                          std::string_view text) const {
+    return cura_ ? curaValueFromText(key, type, text) : valueFromText(key, type, text);
 }
 
 formula::Value StackEvaluator::evaluateFormula(int scope, std::string_view key, const std::string& formula) {
@@ -213,10 +230,8 @@ std::optional<formula::Value> StackEvaluator::resolveGlobal(std::string_view key
         return evaluateFormula(kGlobal, key, *def->resolve_formula);
     }
     if (def->limit_to_extruder && def->settable_per_extruder) {
-        std::optional<int> target = limitTarget(kGlobal, *def);
-        const int extruder = target.value_or(0) < 0 ? 0 : target.value_or(0);
-        if (target && extruder < extruder_count_)
-            return resolve(extruderScope(extruder), key, Mode::NoLimit);
+        if (const std::optional<int> target = limitTarget(kGlobal, *def))
+            return resolve(extruderScope(*target), key, Mode::NoLimit);
     }
     if (user != user_.global.end())
         return userValue(key, user->second);
@@ -259,7 +274,7 @@ std::optional<formula::Value> StackEvaluator::valueFromElsewhere(int scope, std:
     if (!def->limit_to_extruder)
         return std::nullopt;
     const std::optional<int> target = limitTarget(scope, *def);
-    if (!target || *target < 0 || *target >= extruder_count_)
+    if (!target)
         return std::nullopt;
     // The scope's own train: only a mesh without values of its own takes that train's value here.
     if (*target != s.extruder || (s.is_mesh && s.mesh_user.empty()))
@@ -272,6 +287,8 @@ std::optional<formula::Value> StackEvaluator::trainUserValue(int extruder, std::
         if (auto it = train->second.find(key); it != train->second.end())
             return userValue(key, it->second);
     }
+    if (cura_)
+        return std::nullopt;  // Cura: the global user container sits under the train's containers
     if (auto it = user_.global.find(key); it != user_.global.end())
         return userValue(key, it->second);
     return std::nullopt;
@@ -302,32 +319,70 @@ std::optional<formula::Value> StackEvaluator::fromDefinitions(int scope, std::st
                 return v;
         }
     }
-    for (const SettingDefinition* source : {own, def}) {
-        if (!source)
-            continue;
-        if (source == def && profiles_) {
-            if (auto v = fromContainers(scope, profiles_->global, key))
-                return v;
-        }
-        if (source->value_formula)
-            return evaluateFormula(scope, key, *source->value_formula);
-        if (source == own && source->default_value.empty() && source->type.empty())
-            continue;
-        return valueFromText(key, type, source->default_value);
+    // An extruder definition's entry without type or default (an override of a property only)
+    // leaves the value to the machine definition.
+    if (own && (own->value_formula || !own->default_value.empty() || !own->type.empty()))
+        return definitionValue(scope, key, *own, type);
+    if (!def)
+        return std::nullopt;
+    if (extruder >= 0 && cura_) {  // Cura: the global stack's user container, under the train's
+        if (auto it = user_.global.find(key); it != user_.global.end())
+            return userValue(key, it->second);
     }
-    return std::nullopt;
+    if (profiles_) {
+        if (auto v = fromContainers(scope, profiles_->global, key))
+            return v;
+    }
+    return definitionValue(scope, key, *def, type);
+}
+
+formula::Value StackEvaluator::definitionValue(int scope, std::string_view key,
+                                               const SettingDefinition& source, const std::string& type) {
+    if (source.value_formula)
+        return evaluateFormula(scope, key, *source.value_formula);
+    return typedValue(key, type, source.default_value);
 }
 
 std::optional<int> StackEvaluator::limitTarget(int scope, const SettingDefinition& def) {
     const formula::Value v = evaluateFormula(scope, def.key + ".limit_to_extruder", *def.limit_to_extruder);
+    if (cura_)
+        return curaExtruderIndex(v, scope == kGlobal);
     std::optional<long long> n = asInteger(v);
-    if (!n)
+    if (!n || *n >= extruder_count_ || (*n < 0 && scope != kGlobal))
         return std::nullopt;
-    return static_cast<int>(*n);
+    return *n < 0 ? 0 : static_cast<int>(*n);  // the global scope reads a negative target as train 0
+}
+
+std::optional<int> StackEvaluator::curaExtruderIndex(const formula::Value& limit, bool global) const {
+    if (isMinusOne(limit))
+        return 0;  // the default extruder position: the first (every train counts as enabled)
+    // Compared as str(): the string "-1" of an optional_extruder setting means "no extruder".
+    const std::string text = formula::toPythonStr(limit);
+    long long n = 0;
+    try {
+        std::size_t used = 0;
+        n = std::stoll(text, &used);
+        if (used != text.size() || text == "-1")
+            return std::nullopt;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (global)  // GlobalStack: the text must name one of its extruders ("0", "1", ...)
+        return n >= 0 && n < extruder_count_ && std::to_string(n) == text
+                   ? std::optional<int>(static_cast<int>(n))
+                   : std::nullopt;
+    if (n < 0)  // ExtruderStack: extruderList[int(text)], Python indexing
+        n += extruder_count_;
+    return n >= 0 && n < extruder_count_ ? std::optional<int>(static_cast<int>(n)) : std::nullopt;
 }
 
 std::optional<formula::Value> StackEvaluator::callCuraFunction(std::string_view name,
                                                                const std::vector<formula::Value>& args) {
+    if (name == "extruderValue" && cura_) {
+        const std::string key = argumentKey(args, 1);
+        return resolve(extruderScope(curaExtruderValueIndex(args.empty() ? formula::Value() : args[0])), key,
+                       Mode::Raw);
+    }
     if (name == "extruderValue") {
         std::optional<long long> n = args.empty() ? std::nullopt : asInteger(args[0]);
         const std::string key = argumentKey(args, 1);
@@ -358,6 +413,19 @@ std::optional<formula::Value> StackEvaluator::callCuraFunction(std::string_view 
         return formula::Value(std::int64_t{0});
     }
     return std::nullopt;
+}
+
+int StackEvaluator::curaExtruderValueIndex(const formula::Value& position) const {
+    if (isMinusOne(position))
+        return 0;  // the default extruder position
+    const std::optional<long long> n = asInteger(position);
+    if (!n)
+        throw InputError("extruderValue: extruder position '" + formula::toPythonStr(position) +
+                         "' is not a number");
+    long long index = *n < 0 ? *n + extruder_count_ : *n;  // extruderList[int(position)]
+    if (index < 0 || index >= extruder_count_)
+        index = 0;  // Cura: "that extruder is not available. Returning the result from extruder 0 instead"
+    return static_cast<int>(index);
 }
 
 SettingValues StackEvaluator::allText(int scope) {

@@ -20,6 +20,20 @@
 // resolveOrValue, defaultExtruderPosition, anyExtruderWithMaterial and
 // anyExtruderNrWithOrDefault are provided; every extruder counts as enabled.
 //
+// Cura's frontend (ProfileStack::cura, i.e. --profiles) differs where Cura's stacks (Uranium's
+// ContainerStack, cura/Settings/GlobalStack.py, ExtruderStack.py, CuraFormulaFunctions.py) differ
+// from CuraEngine's command line:
+//   - values keep Python's literal types (curaValueFromText): "235" is an int, extruder-typed
+//     values are strings, a material's "true" stays text; so the text is what Cura sends;
+//   - a limit_to_extruder value equal to the number -1 means the default extruder (0), but the
+//     string "-1" (an optional_extruder setting left at its default, e.g. infill_extruder_nr)
+//     means no limit: the global scope then keeps its own value, it does not read train 0's;
+//   - in a train, the global user values come after the train's containers and the extruder
+//     definition (Cura's global user container sits in the next stack, under them);
+//   - an extruder definition's override of a key its chain does not declare is ignored
+//     (ExtruderDefinition::undeclared);
+//   - extruderValue(n, key): n == -1 → train 0, a negative n counts from the last train (Python
+//     indexing), a train that does not exist → train 0.
 // Errors: a cycle, or a formula that fails, is an InputError naming the setting and the formula.
 // allText() evaluates every key; a failing *definition* formula there falls back to the
 // definition's default_value and is reported in failures() instead of stopping the slice.
@@ -90,7 +104,17 @@ class StackEvaluator {
     /// -eN user values, then global user values.
     std::optional<formula::Value> trainUserValue(int extruder, std::string_view key) const;
     std::optional<formula::Value> fromDefinitions(int scope, std::string_view key);
+    /// `source`'s value formula evaluated in `scope`, else its default_value read as `type`.
+    formula::Value definitionValue(int scope, std::string_view key, const SettingDefinition& source,
+                                   const std::string& type);
+    /// The train a `limit_to_extruder` formula sends `def` to from `scope`, or nullopt (no limit).
     std::optional<int> limitTarget(int scope, const SettingDefinition& def);
+    /// (Cura) GlobalStack / ExtruderStack's reading of a limit_to_extruder value.
+    std::optional<int> curaExtruderIndex(const formula::Value& limit, bool global) const;
+    /// (Cura) the train extruderValue(position, ...) reads (CuraFormulaFunctions.getValueInExtruder).
+    int curaExtruderValueIndex(const formula::Value& position) const;
+    /// Text → value: valueFromText, or curaValueFromText (Python's literal types) for Cura's stacks.
+    formula::Value typedValue(std::string_view key, const std::string& type, std::string_view text) const;
     formula::Value evaluateFormula(int scope, std::string_view key, const std::string& formula);
     formula::Value userValue(std::string_view key, const std::string& text) const;
     std::optional<formula::Value> callCuraFunction(std::string_view name,
@@ -104,6 +128,7 @@ class StackEvaluator {
     const DefinitionSet& definitions_;
     const UserSettings& user_;
     const ProfileStack* profiles_;
+    bool cura_;  ///< resolve as Cura's frontend (ProfileStack::cura)
     int extruder_count_;
     std::vector<std::unique_ptr<Scope>> scopes_;
     std::unordered_map<const std::string*, std::unique_ptr<formula::Expression>> expressions_;

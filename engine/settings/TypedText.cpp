@@ -75,6 +75,27 @@ formula::Value valueFromText(std::string_view key, std::string_view type, std::s
     return std::string(text);
 }
 
+formula::Value curaValueFromText(std::string_view key, std::string_view type, std::string_view text) {
+    if (type == "float" || type == "int") {
+        if (!looksLikeNumber(text))
+            return std::int64_t{0};  // Uranium's conversion gives 0 for what does not parse
+        const double number = parseReal(key, text);
+        const bool integral = text.find_first_of(".eEinfINFnaN") == std::string_view::npos;
+        if (integral && std::fabs(number) < 9e15)
+            return static_cast<std::int64_t>(number);
+        return number;
+    }
+    if (type == "bool") {
+        if (text == "True" || text == "False")
+            return text == "True";
+        return std::string(text);  // literal_eval fails; Uranium keeps the text ("true")
+    }
+    if (type == "extruder" || type == "optional_extruder" || type == "[int]" || type == "str" ||
+        type == "enum")
+        return std::string(text);
+    return valueFromText(key, type, text);
+}
+
 std::string textFromValue(const formula::Value& value) {
     return formula::toPythonStr(value);
 }

@@ -45,3 +45,19 @@ def test_a_failing_formula_is_one_warning_and_the_default(tmp_path):
     assert travel_f == {60.0 * fdmprinter_default("speed_travel")}
     settings = helpers.mixengine("settings", "-j", printer)
     assert [line for line in helpers.stderr_lines(settings) if "formula" in line] == warnings
+
+
+def test_a_formula_failing_only_for_a_mesh_is_one_warning_too(tmp_path):
+    """A formula that fails only with a mesh's own value (its scope is resolved apart from the
+    trains') is reported once as well, however many meshes have that value."""
+    path = tmp_path / "mesh_broken_printer.def.json"
+    path.write_text(json.dumps({"version": 2, "name": "Mesh broken formula printer", "inherits": "fdmprinter",
+                                "metadata": {}, "overrides": {"infill_line_distance": {
+                                    "value": "line_width * 100 / (infill_sparse_density - 50)"}}}))
+    cube = box_stl(tmp_path / "cube.stl", 20, 20, 5)
+    proc = helpers.mixengine("slice", "-j", path, "-l", cube, "-s", "infill_sparse_density=50",
+                             "-l", cube, "-s", "infill_sparse_density=50", "-o", tmp_path / "out.gcode")
+    assert proc.returncode == 0, proc.stderr
+    warnings = [line for line in helpers.stderr_lines(proc) if "formula" in line]
+    assert warnings == ["[warning] formula fell back to default_value: setting 'infill_line_distance': formula "
+                        "'line_width * 100 / (infill_sparse_density - 50)': division by zero"], proc.stderr

@@ -27,6 +27,7 @@ void push(std::vector<InstanceContainer>& stack, const DefinitionSet& definition
 
 ProfileStack toStack(const DefinitionSet& definitions, const CuraSession& session) {
     ProfileStack stack;
+    stack.cura = true;
     push(stack.global, definitions, session.globalQuality(), "quality");
     const std::vector<ExtruderChoice>& extruders = session.extruders();
     for (std::size_t position = 0; position < extruders.size(); ++position) {
