@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planning/PathOrder.h"
+#include "planning/order/PathOrder.h"
 
 namespace mixengine {
 namespace {

@@ -11,11 +11,11 @@
 #include "planning/Cooling.h"
 #include "planning/LayerWipes.h"
 #include "planning/Motion.h"
-#include "planning/PartOrder.h"
-#include "planning/PathOrder.h"
 #include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 #include "planning/TravelAreas.h"
+#include "planning/order/PartOrder.h"
+#include "planning/order/PathOrder.h"
 #include "toolpaths/core/FeatureStyle.h"
 
 namespace mixengine {
@@ -163,7 +163,7 @@ Point2 partOrderFrom(const PlannedLayer& planned, const Settings& extruder, cons
     return {extruder.lengthMicrons(key::layer_start_x), extruder.lengthMicrons(key::layer_start_y)};
 }
 
-/// A mesh's layer part by part (planning/PartOrder.h), then its paths in no part and its ironing.
+/// A mesh's layer part by part (planning/order/PartOrder.h), then its paths in no part and its ironing.
 void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
                    PlannedLayer& planned) {
     const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(ctx.layer)];
@@ -437,7 +437,7 @@ PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, boo
 }
 
 /// About the steps model layer `i` takes: a move per point and a few per path of its meshes and
-/// support (PathOrder.h reserves as much per call), so the layer's steps are allocated once.
+/// support (order/PathOrder.h reserves as much per call), so the layer's steps are allocated once.
 std::size_t expectedSteps(const GroupToolpaths& toolpaths, std::size_t i) {
     std::size_t steps = 64;  // markers, fan and temperature steps
     auto add = [&](const std::vector<ExtrusionPath>& paths) {

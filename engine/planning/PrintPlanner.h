@@ -7,7 +7,7 @@
 // extruder prints the skirt/brim (layer 0), the ooze shield, its prime tower rings — when it was
 // switched to on the layer, or as the tower's outermost extruder, then (prime_tower_wipe_enabled of
 // the extruder left) a travel to the tower's middle — its support, then every mesh in order, each
-// mesh's layer part by part in CuraEngine's part order (planning/PartOrder.h), each part's inner walls,
+// mesh's layer part by part in CuraEngine's part order (planning/order/PartOrder.h), each part's inner walls,
 // outer walls, skin, infill, then the mesh's paths in no part and its ironing — with travel,
 // retraction and the fan.
 // The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).

@@ -1,4 +1,4 @@
-#include "planning/PathOrder.h"
+#include "planning/order/PathOrder.h"
 
 #include "planning/BridgeWalls.h"
 

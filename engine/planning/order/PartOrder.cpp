@@ -1,4 +1,4 @@
-#include "planning/PartOrder.h"
+#include "planning/order/PartOrder.h"
 
 #include <cmath>
 #include <limits>
