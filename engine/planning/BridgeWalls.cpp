@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planning/order/PathOrder.h"
+#include "planning/PathOrder.h"
 
 namespace mixengine {
 namespace {

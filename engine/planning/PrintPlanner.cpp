@@ -11,11 +11,11 @@
 #include "planning/Cooling.h"
 #include "planning/LayerWipes.h"
 #include "planning/Motion.h"
+#include "planning/PathOrder.h"
 #include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 #include "planning/TravelAreas.h"
 #include "planning/order/PartOrder.h"
-#include "planning/order/PathOrder.h"
 #include "toolpaths/core/FeatureStyle.h"
 
 namespace mixengine {
@@ -437,7 +437,7 @@ PlannedLayer planRaftLayer(const RaftLayer& layer, const CombBoundary& comb, boo
 }
 
 /// About the steps model layer `i` takes: a move per point and a few per path of its meshes and
-/// support (order/PathOrder.h reserves as much per call), so the layer's steps are allocated once.
+/// support (PathOrder.h reserves as much per call), so the layer's steps are allocated once.
 std::size_t expectedSteps(const GroupToolpaths& toolpaths, std::size_t i) {
     std::size_t steps = 64;  // markers, fan and temperature steps
     auto add = [&](const std::vector<ExtrusionPath>& paths) {

@@ -1,6 +1,6 @@
-// Ordering one layer's paths (planning/order/PathOrder.h): nearest start, ;TYPE: changes, retraction on
+// Ordering one layer's paths (planning/PathOrder.h): nearest start, ;TYPE: changes, retraction on
 // long travels, and the extruded volume.
-#include "planning/order/PathOrder.h"
+#include "planning/PathOrder.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "planning/order/PathOrder.h"
+#include "planning/PathOrder.h"
 
 #include "planning/BridgeWalls.h"
 
