@@ -15,6 +15,7 @@
 #include "planning/SwitchTemperatures.h"
 #include "planning/Temperatures.h"
 #include "planning/TravelAreas.h"
+#include "planning/order/PartOrder.h"
 #include "toolpaths/core/FeatureStyle.h"
 
 namespace mixengine {
@@ -120,23 +121,70 @@ TravelParams infillTravel(TravelParams travel, const MeshLayerGroups& groups, co
     return travel;
 }
 
+/// Whether CuraEngine prints the mesh as a model (SliceMeshStorage::isPrinted): its parts then go in
+/// z seam order, else nearest first.
+bool printedAsModel(const Settings& s) {
+    return !s.boolean(key::infill_mesh) && !s.boolean(key::cutting_mesh);
+}
+
+/// What the groups of one mesh on a layer share while they are planned.
+struct MeshRun {
+    const MeshToolpaths& mesh;
+    int mesh_index = 0;
+    const LayerContext& ctx;
+    TravelParams travel;
+    std::optional<Feature> feature;
+    bool marked = false;  ///< the mesh's marker is written
+};
+
+/// The paths of `groups` (a part's, or those in no part) for the context's extruder, in groupOrder().
+void planGroups(const MeshLayerGroups& groups, MeshRun& run, Point2& head, PlannedLayer& planned) {
+    const Settings& s = *run.mesh.settings;
+    for (const OrderedGroup& group : groupOrder(groups, s, run.ctx.layer)) {
+        std::vector<ExtrusionPath> selected = ofExtruder(group.paths, run.ctx.extruder);
+        if (selected.empty())
+            continue;
+        if (!run.marked)
+            addMeshMarker(run.mesh_index, planned.steps);
+        run.marked = true;
+        appendOrderedPaths(std::move(selected),
+                           group.infill ? infillTravel(run.travel, groups, s) : run.travel, head, run.feature,
+                           planned.steps);
+    }
+}
+
+/// Where CuraEngine's part order looks from (getLastPlannedPositionOrStartingPosition): the head once
+/// the layer has a move, else the extruder's layer_start_x/_y (each layer is planned from there).
+Point2 partOrderFrom(const PlannedLayer& planned, const Settings& extruder, const Point2& head) {
+    for (const PlanStep& step : planned.steps) {
+        if (step.kind == PlanStep::Kind::Travel || step.kind == PlanStep::Kind::Extrude)
+            return head;
+    }
+    return {extruder.lengthMicrons(key::layer_start_x), extruder.lengthMicrons(key::layer_start_y)};
+}
+
+/// A mesh's layer part by part (planning/order/PartOrder.h), then its paths in no part and its ironing.
 void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext& ctx, Point2& head,
                    PlannedLayer& planned) {
     const MeshLayerGroups& groups = mesh.layers[static_cast<std::size_t>(ctx.layer)];
-    const TravelParams travel = travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb, ctx.free);
-    std::optional<Feature> feature;
-    bool marked = false;
-    for (const OrderedGroup& group : groupOrder(groups, *mesh.settings, ctx.layer)) {
-        std::vector<ExtrusionPath> selected = ofExtruder(group.paths, ctx.extruder);
-        if (selected.empty())
-            continue;
-        if (!marked)
-            addMeshMarker(mesh_index, planned.steps);
-        marked = true;
-        appendOrderedPaths(std::move(selected),
-                           group.infill ? infillTravel(travel, groups, *mesh.settings) : travel, head,
-                           feature, planned.steps);
+    MeshRun run{mesh,         mesh_index,
+                ctx,          travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb, ctx.free),
+                std::nullopt, false};
+    const LayerParts parts = splitByPart(groups);
+    if (printedAsModel(*mesh.settings)) {
+        const Point2 from = partOrderFrom(planned, *ctx.extruder_settings, head);
+        for (std::size_t part : seamPartOrder(parts, groups.seam_position, from))
+            planGroups(parts.parts[part], run, head, planned);
+    } else {
+        std::vector<bool> done(parts.parts.size(), false);
+        for (std::size_t part =
+                 nearestPart(parts, done, partOrderFrom(planned, *ctx.extruder_settings, head));
+             part < done.size(); part = nearestPart(parts, done, head)) {
+            done[part] = true;
+            planGroups(parts.parts[part], run, head, planned);
+        }
     }
+    planGroups(parts.rest, run, head, planned);
 }
 
 void planNonMesh(const std::vector<ExtrusionPath>& paths, const LayerContext& ctx, Point2& head,

@@ -6,8 +6,10 @@
 // extruders print one after the other, the one already active first (fewest tool changes); each
 // extruder prints the skirt/brim (layer 0), the ooze shield, its prime tower rings — when it was
 // switched to on the layer, or as the tower's outermost extruder, then (prime_tower_wipe_enabled of
-// the extruder left) a travel to the tower's middle — its support, then every mesh in order —
-// inner walls, outer walls, skin, infill — with travel, retraction and the fan.
+// the extruder left) a travel to the tower's middle — its support, then every mesh in order, each
+// mesh's layer part by part in CuraEngine's part order (planning/order/PartOrder.h), each part's inner walls,
+// outer walls, skin, infill, then the mesh's paths in no part and its ironing — with travel,
+// retraction and the fan.
 // The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).
 // Travel combs inside the layer's comb area and goes around the parts through the air with
 // travel_avoid_other_parts (planning/TravelAreas.h).

@@ -354,6 +354,9 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
             (path.feature == Feature::WallOuter ? out.walls[i].outer_walls : out.walls[i].inner_walls)
                 .push_back(std::move(path));
         }
+        out.walls[i].parts = splitIslands(outlines);
+        if (seam.type == SeamType::Back)
+            out.walls[i].seam_position = seam.position_um;
         out.inner_areas[i] = std::move(walls.inner_area);
         top_reference[i] = std::move(walls.top_reference);
         bottom_reference[i] = std::move(walls.bottom_reference);

@@ -46,6 +46,14 @@ struct MeshLayerGroups {
     std::vector<ExtrusionPath> ironing;
     /// infill_randomize_start_location: planning starts the infill nearest this point.
     std::optional<Point2> infill_start;
+    /// CuraEngine's layer parts: the islands of the outline the walls are made from, each its outer
+    /// contour first, then the holes directly inside it (disjoint areas). Every path of the layer
+    /// lies in one of them (planning prints them part by part, planning/order/PartOrder.h). Empty in
+    /// magic_mesh_surface_mode "surface".
+    std::vector<Paths> parts;
+    /// z_seam_type "back": the seam position (z_seam_relative applied), where CuraEngine starts
+    /// looking for the first part; unset for the other seam types.
+    std::optional<Point2> seam_position;
 };
 
 /// Whether the outer walls go before the inner ones on `layer`: outer_inset_first, and (as
