@@ -43,8 +43,8 @@ constexpr std::string_view kSlice =
                 ("AA 0.4,BB 0.4"); an unknown name lists the available ones.
                 Without these the definitions alone apply (as CuraEngine's command line does),
                 but their `value` formulas are always evaluated, so derived settings follow.
-                With them, values resolve as in Cura's stacks: a -s value sits in the global
-                user container, under each extruder's profiles; -e<N> -s sets one over them.
+                With them, values resolve as in Cura's stacks, and a -s value wins over every
+                profile (as a value set in Cura does); -e<N> -s sets one extruder's alone.
   --help, -h    Show this usage.
 
 	Settings are appended to the last supplied object:

@@ -287,8 +287,9 @@ std::optional<formula::Value> StackEvaluator::trainUserValue(int extruder, std::
         if (auto it = train->second.find(key); it != train->second.end())
             return userValue(key, it->second);
     }
-    if (cura_)
-        return std::nullopt;  // Cura: the global user container sits under the train's containers
+    // A command-line -s value wins over every profile, with --profiles too: Cura's own global user
+    // container sits under the train's containers, but Cura writes a per-extruder value the user sets
+    // into the train's user container, so what the user sets is what prints.
     if (auto it = user_.global.find(key); it != user_.global.end())
         return userValue(key, it->second);
     return std::nullopt;

@@ -28,8 +28,9 @@
 //   - a limit_to_extruder value equal to the number -1 means the default extruder (0), but the
 //     string "-1" (an optional_extruder setting left at its default, e.g. infill_extruder_nr)
 //     means no limit: the global scope then keeps its own value, it does not read train 0's;
-//   - in a train, the global user values come after the train's containers and the extruder
-//     definition (Cura's global user container sits in the next stack, under them);
+//   - in a train, the global user values still come first: Cura's global user container sits in the
+//     next stack, under the train's containers, but Cura writes what a user sets for an extruder into
+//     that train's user container, so a command-line -s value wins over every profile as the user meant;
 //   - an extruder definition's override of a key its chain does not declare is ignored
 //     (ExtruderDefinition::undeclared);
 //   - extruderValue(n, key): n == -1 → train 0, a negative n counts from the last train (Python

@@ -76,3 +76,17 @@ def test_resolved_settings_equal_what_cura_sends(engine, name, report):
         report(f"    {line}")
     assert compared > 900
     assert not mismatches, f"{len(mismatches)} of {compared} differ:\n" + "\n".join(mismatches[:40])
+
+
+def test_a_command_line_value_wins_over_the_profiles(engine):
+    """With --profiles the S5's AA 0.4 profile sets speed_print 70; a -s value is what the user means to
+    print, so it reaches every extruder (as a value set in Cura, which writes it to the extruder's own user
+    container)."""
+    fixture = json.loads((FIXTURES / "ultimaker_s5_default.json").read_text())
+    base = [str(engine), "settings", "-j", fixture["machine"], "--profiles", "--json"]
+    plain = json.loads(subprocess.run(base, capture_output=True, text=True, timeout=60, check=True).stdout)
+    assert [float(e["speed_print"]) for e in plain["extruders"]] == [70.0, 70.0]
+    changed = json.loads(subprocess.run(base[:-1] + ["-s", "speed_print=80", "--json"], capture_output=True,
+                                        text=True, timeout=60, check=True).stdout)
+    assert float(changed["global"]["speed_print"]) == 80.0
+    assert [float(e["speed_print"]) for e in changed["extruders"]] == [80.0, 80.0]
