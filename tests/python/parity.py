@@ -286,24 +286,27 @@ SCENES = {scene.name: scene for scene in (*SINGLES, DUAL)}
 
 
 def load_not_honoured():
-    """key -> (values or None, why, multi_extruder_only): None = any value other than the definitions' is
-    not honoured; multi_extruder_only: listed for prints with two or more extruders alone (the entry's
-    "multi_extruder_only": true), so it is expected to fail in the two-extruder scene only."""
+    """key -> (values or None, why, multi_extruder_only, substituted): None = any value other than the
+    definitions' is not honoured; multi_extruder_only: listed for prints with two or more extruders alone (the
+    entry's "multi_extruder_only": true), so it is expected to fail in the two-extruder scene only; substituted:
+    the listed options print as another option (the entry's "substituted": true; the distinctness test's
+    finding, while each option alone may still change the print as CuraEngine's does)."""
     entries = json.loads(NOT_HONOURED.read_text())["settings"]
     out = {}
     for key, entry in entries.items():
         if isinstance(entry, str):
-            out[key] = (None, entry, False)
+            out[key] = (None, entry, False, False)
         else:
             values = tuple(str(v) for v in entry["values"]) if "values" in entry else None
-            out[key] = (values, entry["why"], bool(entry.get("multi_extruder_only", False)))
+            out[key] = (values, entry["why"], bool(entry.get("multi_extruder_only", False)),
+                        bool(entry.get("substituted", False)))
     return out
 
 
 def is_listed(listed, key, value):
     if key not in listed:
         return None
-    values, why, _ = listed[key]
+    values, why = listed[key][:2]
     return why if values is None or str(value) in values else None
 
 
