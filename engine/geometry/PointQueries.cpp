@@ -7,16 +7,6 @@
 namespace mixengine {
 namespace {
 
-/// The point of segment a–b nearest to p.
-Point2 nearestOnSegment(Point2 a, Point2 b, Point2 p) {
-    const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
-    const double length2 = dx * dx + dy * dy;
-    if (length2 <= 0)
-        return a;
-    const double t = std::clamp((double(p.X - a.X) * dx + double(p.Y - a.Y) * dy) / length2, 0.0, 1.0);
-    return {a.X + std::llround(t * dx), a.Y + std::llround(t * dy)};
-}
-
 void nearestOnLoop(const Path& loop, Point2 p, NearestOnOutline& best) {
     for (std::size_t i = 0; i < loop.size(); ++i) {
         const Point2 a = loop[i];
@@ -29,6 +19,15 @@ void nearestOnLoop(const Path& loop, Point2 p, NearestOnOutline& best) {
 }
 
 }  // namespace
+
+Point2 nearestOnSegment(Point2 a, Point2 b, Point2 p) {
+    const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+    const double length2 = dx * dx + dy * dy;
+    if (length2 <= 0)
+        return a;
+    const double t = std::clamp((double(p.X - a.X) * dx + double(p.Y - a.Y) * dy) / length2, 0.0, 1.0);
+    return {a.X + std::llround(t * dx), a.Y + std::llround(t * dy)};
+}
 
 bool insideLoop(const Path& loop, Point2 p) {
     return loop.size() >= 3 && ClipperLib::PointInPolygon(p, loop) != 0;

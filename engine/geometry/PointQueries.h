@@ -14,6 +14,9 @@ namespace mixengine {
 /// inside when `border_inside`.
 bool insideArea(const Paths& area, Point2 p, bool border_inside);
 
+/// The point of segment a–b nearest to `p` (rounded to microns).
+Point2 nearestOnSegment(Point2 a, Point2 b, Point2 p);
+
 /// Whether `p` lies inside the single loop `loop` (either orientation), its edge included.
 bool insideLoop(const Path& loop, Point2 p);
 

@@ -1,5 +1,7 @@
 #include "planning/CombBoundary.h"
+
 #include "geometry/Point.h"
+#include "geometry/PointQueries.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,16 +35,6 @@ int crossingXComparedTo(const Point2& a, const Point2& b, coord_um y, coord_um x
     const Wide scaled = (Wide(a.X) - Wide(x)) * dy + (Wide(y) - Wide(a.Y)) * (Wide(b.X) - Wide(a.X));
     const int sign = scaled > 0 ? 1 : (scaled < 0 ? -1 : 0);
     return dy > 0 ? sign : -sign;
-}
-
-/// The point of segment a–b nearest to p (double precision, rounded to the micron).
-Point2 nearestOnSegment(const Point2& p, const Point2& a, const Point2& b) {
-    const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
-    const double length2 = dx * dx + dy * dy;
-    const double t =
-        length2 > 0 ? std::clamp((double(p.X - a.X) * dx + double(p.Y - a.Y) * dy) / length2, 0.0, 1.0) : 0.0;
-    return {a.X + static_cast<coord_um>(std::llround(t * dx)),
-            a.Y + static_cast<coord_um>(std::llround(t * dy))};
 }
 
 }  // namespace
@@ -295,7 +287,7 @@ std::optional<Point2> CombBoundary::moveInside(const Point2& p, coord_um max_dis
     for (coord_um r = r0; r <= r1; ++r) {
         for (coord_um c = c0; c <= c1; ++c) {
             for (std::uint32_t e : cells_[cellIndex(c, r)]) {
-                const Point2 q = nearestOnSegment(p, edges_[e].a, edges_[e].b);
+                const Point2 q = nearestOnSegment(edges_[e].a, edges_[e].b, p);
                 const double d = distanceUm(q, p);
                 if (d <= best)
                     best = d, nearest = q;

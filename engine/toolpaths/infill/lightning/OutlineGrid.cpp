@@ -47,15 +47,6 @@ std::optional<Point2> crossing(Point2 a, Point2 b, Point2 c, Point2 d) {
     return Point2{a.X + std::llround(t * rx), a.Y + std::llround(t * ry)};
 }
 
-Point2 nearestOnSegment(Point2 a, Point2 b, Point2 p) {
-    const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
-    const double length2 = dx * dx + dy * dy;
-    if (length2 <= 0)
-        return a;
-    const double t = std::clamp((double(p.X - a.X) * dx + double(p.Y - a.Y) * dy) / length2, 0.0, 1.0);
-    return {a.X + std::llround(t * dx), a.Y + std::llround(t * dy)};
-}
-
 long long floorDiv(coord_um a, coord_um b) {
     return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
