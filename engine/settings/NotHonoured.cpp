@@ -51,12 +51,22 @@ bool sameText(std::string_view a, std::string_view b) {
 }
 
 /// The offending value in one scope as text, or nullopt when this scope honours the entry.
+/// The key's value in `scope`, or nullopt where its formula fails (reported as such, with its
+/// fallback, by the settings' own formula warning, not here).
+std::optional<formula::Value> valueOrNothing(StackEvaluator& stack, int scope, const std::string& key) {
+    try {
+        return stack.value(scope, key);
+    } catch (const InputError&) {
+        return std::nullopt;
+    }
+}
+
 std::optional<std::string> offending(const NotHonouredEntry& entry, StackEvaluator& given,
                                      StackEvaluator& stock, int scope) {
-    const std::optional<formula::Value> value = given.value(scope, entry.key);
+    const std::optional<formula::Value> value = valueOrNothing(given, scope, entry.key);
     if (!value || !given.enabled(scope, entry.key))
         return std::nullopt;  // not there, or hidden in Cura: it acts in neither engine
-    const std::optional<formula::Value> reference = stock.value(scope, entry.key);
+    const std::optional<formula::Value> reference = valueOrNothing(stock, scope, entry.key);
     if (reference && formula::pythonEquals(*value, *reference))
         return std::nullopt;  // the definitions' own value: nothing the user asked for is ignored
     const std::string text = formula::toPythonStr(*value);
