@@ -239,7 +239,7 @@ std::unique_ptr<CrossFill> meshCrossFill(const Settings& s, const Box2& mesh_box
     const std::string pattern = s.text(key::infill_pattern);
     const coord_um line_distance = s.lengthMicrons(key::infill_line_distance);
     const coord_um line_width = s.lengthMicrons(key::infill_line_width);
-    if ((pattern != "cross" && pattern != "cross_3d") || line_distance <= 0 || line_width <= 0)
+    if (!wantsCrossFill(pattern, line_distance, line_width))
         return nullptr;
     return std::make_unique<CrossFill>(
         mesh_box, line_distance, line_width,

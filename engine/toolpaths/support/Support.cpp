@@ -450,7 +450,7 @@ std::unique_ptr<CrossFill> supportCrossFill(const SupportInput& in, const Settin
     const std::string pattern = body.text(key::support_pattern);
     const coord_um line_distance = body.lengthMicrons(key::support_line_distance);
     const coord_um line_width = body.lengthMicrons(key::support_line_width);
-    if ((pattern != "cross" && pattern != "cross_3d") || line_distance <= 0 || line_width <= 0)
+    if (!wantsCrossFill(pattern, line_distance, line_width))
         return nullptr;
     const Box2 box = supportedBounds(in);
     return std::make_unique<CrossFill>(

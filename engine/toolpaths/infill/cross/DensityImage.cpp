@@ -89,4 +89,8 @@ DensityAt densityImageAt(const std::string& file, const Box2& model_box, const s
     }
 }
 
+bool wantsCrossFill(const std::string& pattern, coord_um line_distance_um, coord_um line_width_um) {
+    return (pattern == "cross" || pattern == "cross_3d") && line_distance_um > 0 && line_width_um > 0;
+}
+
 }  // namespace mixengine

@@ -22,4 +22,8 @@ DensityAt imageDensity(DecodedImage image, const Box2& model_box);
 /// naming `key`.
 DensityAt densityImageAt(const std::string& file, const Box2& model_box, const std::string& key);
 
+/// Whether `pattern` (an infill_pattern / support_pattern value) is drawn from a cross fractal (cross,
+/// cross_3d) and can be: a positive line distance and width.
+bool wantsCrossFill(const std::string& pattern, coord_um line_distance_um, coord_um line_width_um);
+
 }  // namespace mixengine
