@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <string>
+
 namespace mixengine {
 namespace {
 
@@ -60,6 +65,39 @@ TEST(NumberFormat, RoundsAsPrintfDoes) {
     EXPECT_EQ(formatDecimal(1.0 * 255 / 100, 1), "2.5");
     EXPECT_EQ(formatDecimal(0.15, 1), "0.1");  // 0.1499…
     EXPECT_EQ(formatDecimal(0.35, 1), "0.3");  // 0.3499…
+}
+
+/// printf's "%.*f" text of `value`, trailing zeros and point removed, "-0" as "0": the oracle.
+std::string printfText(double value, int decimals) {
+    char buffer[128];
+    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, value);
+    std::string text(buffer);
+    if (decimals > 0) {
+        while (text.back() == '0')
+            text.pop_back();
+        if (text.back() == '.')
+            text.pop_back();
+    }
+    return text == "-0" ? "0" : text;
+}
+
+// The integer path must write what printf writes for every value G-code carries: coordinates, feedrates,
+// E values, and values on and next to the .5 ties of each number of decimals.
+TEST(NumberFormat, MatchesPrintfOnManyValues) {
+    std::mt19937_64 random(20261205);
+    std::uniform_real_distribution<double> spread(-5000.0, 5000.0);
+    std::uniform_int_distribution<int> digits(0, 8);
+    for (int i = 0; i < 200000; ++i) {
+        const int decimals = digits(random);
+        double value = spread(random);
+        if (i % 4 == 1)  // a tie, or the double next to it
+            value = (std::round(value * 1000.0) + 0.5) / 1000.0;
+        if (i % 4 == 2)
+            value = std::nextafter((std::round(value * 10.0) + 0.5) / 10.0, 0.0);
+        if (i % 4 == 3)
+            value /= 1e6;
+        ASSERT_EQ(formatDecimal(value, decimals), printfText(value, decimals)) << value << " " << decimals;
+    }
 }
 
 }  // namespace
