@@ -45,6 +45,13 @@ bool holds(const Box2& outer, coord_um margin, const Box2& inner) {
 std::size_t parentOf(const Path& child, const Paths& parents, const std::vector<Box2>& bounds,
                      coord_um step_um) {
     const Box2 box = boundsOf({child});
+    std::size_t candidates = 0, only = 0;
+    for (std::size_t j = 0; j < parents.size() && candidates < 2; ++j) {
+        if (holds(bounds[j], 2 * step_um, box))
+            ++candidates, only = j;
+    }
+    if (candidates == 1)  // the usual case: no distances to weigh
+        return only;
     std::size_t best = 0;
     double best_distance = std::numeric_limits<double>::max();
     for (bool filtered : {true, false}) {
