@@ -87,6 +87,11 @@ struct ExtrusionPath {
     /// prints bridged; empty / none for everything else.
     std::vector<std::uint8_t> air_edges;
     std::optional<BridgeWallStyle> bridge_wall;
+    /// An overhanging wall loop (toolpaths/walls/OverhangWalls.h): empty, or one flag per point, non-zero
+    /// where the point overhangs. A line with an overhanging end prints at speed × overhang_speed_factor,
+    /// and the loop starts at its first point from the chosen start that does not overhang.
+    std::vector<std::uint8_t> overhanging;
+    double overhang_speed_factor = 1.0;
 };
 
 }  // namespace mixengine
