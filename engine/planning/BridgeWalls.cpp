@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planning/OverhangWalls.h"
 #include "planning/PathOrder.h"
 
 namespace mixengine {
@@ -29,7 +28,7 @@ struct WallRun {
     double volume = kFullVolume;  ///< since the last bridge
     double speed_factor = 1;
     double to_bridge = 0;    ///< along the wall to the next bridged edge (0: none ahead)
-    bool overhangs = false;  ///< the edge has an overhanging end (planning/OverhangWalls.h)
+    bool overhangs = false;  ///< the edge has an overhanging end (planning/BridgeWalls.h)
 
     void extrude(const Point2& to, double speed_mm_s, double flow) {
         markBridge(wall.feature, false, -1, feature, marks, steps);
@@ -185,6 +184,26 @@ std::size_t emitBridgedWall(const ExtrusionPath& wall, std::size_t start, const 
     }
     head = run.head;
     return start;
+}
+
+bool overhangsAt(const ExtrusionPath& path, std::size_t k) {
+    return path.overhanging.size() == path.points.size() && k < path.overhanging.size() &&
+           path.overhanging[k] != 0;
+}
+
+std::size_t firstNonOverhanging(const ExtrusionPath& path, std::size_t start) {
+    const std::size_t n = path.points.size();
+    if (path.overhanging.size() != n)
+        return start;
+    for (std::size_t t = 0; t < n; ++t) {
+        if (!overhangsAt(path, (start + t) % n))
+            return (start + t) % n;
+    }
+    return start;
+}
+
+double overhangSpeedFactor(const ExtrusionPath& path, std::size_t from, std::size_t to) {
+    return overhangsAt(path, from) || overhangsAt(path, to) ? path.overhang_speed_factor : 1.0;
 }
 
 }  // namespace mixengine

@@ -1,7 +1,6 @@
 #include "planning/PathOrder.h"
 
 #include "planning/BridgeWalls.h"
-#include "planning/OverhangWalls.h"
 
 #include <algorithm>
 #include <cmath>

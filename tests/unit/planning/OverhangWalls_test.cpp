@@ -1,6 +1,6 @@
-// Printing an overhanging wall (planning/OverhangWalls.h through planning/PathOrder.h): it starts on a
+// Printing an overhanging wall (planning/BridgeWalls.h through planning/PathOrder.h): it starts on a
 // vertex that does not overhang, and its lines with an overhanging end are slower.
-#include "planning/OverhangWalls.h"
+#include "planning/BridgeWalls.h"
 
 #include <gtest/gtest.h>
 
