@@ -18,7 +18,6 @@
 #include "toolpaths/surface/Spiralize.h"
 #include "toolpaths/walls/BridgeWalls.h"
 #include "toolpaths/walls/OutlineOffsets.h"
-#include "toolpaths/walls/OverhangWalls.h"
 #include "toolpaths/walls/Seam.h"
 #include "toolpaths/walls/SmallFeatures.h"
 #include "toolpaths/walls/WallOverlap.h"
@@ -314,12 +313,6 @@ void addSpirals(const std::vector<Paths>& spiral_loops, const Settings& s, const
     }
 }
 
-/// Layer `i`'s thickness (i > 0) as CuraEngine's path configs have it: layer_height on layer 1, the
-/// distance to the layer below above it (adaptive layers).
-coord_um layerThickness(const std::vector<SlicedLayer>& layers, std::size_t i, const Settings& s) {
-    return i <= 1 ? s.lengthMicrons(key::layer_height) : layers[i].print_z - layers[i - 1].print_z;
-}
-
 }  // namespace
 
 bool outerWallFirst(const Settings& s, int layer) {
@@ -340,7 +333,6 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
     std::vector<Paths>& spiral_loops = out.spiral_loops;
     spiral_loops.resize(spiralize ? layers.size() : 0);
     const BridgeWallParams bridge_walls = bridgeWallParams(settings);
-    const OverhangWallParams overhang_walls = overhangWallParams(settings);
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         const int layer = static_cast<int>(i);
         const Paths outlines = adjustedOutlines(layers[i].outlines, settings, layer);
@@ -355,17 +347,10 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
         applyFuzzySkin(walls.walls, fuzzySkinParams(settings, layer), layer);
         slowSmallFeatures(walls.walls, smallFeatureParams(settings, layer));
         placeSeams(walls.walls, seam, layer);
-        const Paths below = (bridge_walls.enabled || overhang_walls.enabled) && layer > 0
-                                ? adjustedOutlines(layers[i - 1].outlines, settings, layer - 1)
-                                : Paths{};
         if (bridge_walls.enabled && layer > 0)
-            markBridgedWalls(walls.walls, outlines, below, bridge_walls);
+            markBridgedWalls(walls.walls, outlines,
+                             adjustedOutlines(layers[i - 1].outlines, settings, layer - 1), bridge_walls);
         compensateOverlaps(walls.walls, settings, params);
-        if (overhang_walls.enabled && !spiralize && layer > 0)
-            markOverhangingWalls(
-                walls.walls,
-                overhangWallMask(outlines, below, layerThickness(layers, i, settings), overhang_walls),
-                overhang_walls);
         for (ExtrusionPath& path : walls.walls) {
             (path.feature == Feature::WallOuter ? out.walls[i].outer_walls : out.walls[i].inner_walls)
                 .push_back(std::move(path));

@@ -8,7 +8,8 @@
 // wall_overhang_speed_factor of its speed (not on a small feature, which keeps its own factor), and
 // a loop starts at the first vertex from its seam that is neither overhanging nor over a bridge's
 // air — both planning's (planning/PathOrder.h, planning/BridgeWalls.h).
-// As for bridged walls (toolpaths/walls/BridgeWalls.h), the layer below is the mesh's own.
+// What counts as the layer below (every mesh's parts and the support) is the caller's
+// (toolpaths/OverhangingWalls.h).
 #include <vector>
 
 #include "settings/Settings.h"
@@ -17,7 +18,7 @@
 namespace mixengine {
 
 struct OverhangWallParams {
-    bool enabled = false;           ///< wall_overhang_angle < 90 (the caller leaves spiralized meshes out)
+    bool enabled = false;           ///< wall_overhang_angle < 90 (the caller leaves spiralized prints out)
     double tan_angle = 0;           ///< tan(wall_overhang_angle)
     coord_um outer_width_um = 400;  ///< wall_line_width_0
     double speed_factor = 1;        ///< wall_overhang_speed_factor, as a fraction
