@@ -27,7 +27,8 @@ struct WallRun {
     Point2 head;
     double volume = kFullVolume;  ///< since the last bridge
     double speed_factor = 1;
-    double to_bridge = 0;  ///< along the wall to the next bridged edge (0: none ahead)
+    double to_bridge = 0;    ///< along the wall to the next bridged edge (0: none ahead)
+    bool overhangs = false;  ///< the edge has an overhanging end (planning/BridgeWalls.h)
 
     void extrude(const Point2& to, double speed_mm_s, double flow) {
         markBridge(wall.feature, false, -1, feature, marks, steps);
@@ -73,8 +74,8 @@ struct WallRun {
                          end.Y + static_cast<coord_um>(double(from.Y - end.Y) * coast / length)},
                         wall.speed_mm_s * speed_factor, flow);
             extrude(end, wall.speed_mm_s * speed_factor, 0);
-        } else {
-            extrude(end, wall.speed_mm_s * speed_factor, flow);
+        } else {  // as CuraEngine: an overhanging edge's factor replaces the speeding up
+            extrude(end, wall.speed_mm_s * (overhangs ? wall.overhang_speed_factor : speed_factor), flow);
         }
         if (to_bridge > 0)
             to_bridge -= length;
@@ -105,6 +106,15 @@ struct WallRun {
 bool overAir(const std::vector<std::uint8_t>& edges, std::size_t k) {
     const std::size_t n = edges.size();
     return kindOf(edges[k]) != kSupported || kindOf(edges[(k + n - 1) % n]) != kSupported;
+}
+
+/// The end point of the wall edge that starts at point `k` (its pieces split at air run on to it).
+std::size_t edgeEnd(const ExtrusionPath& wall, std::size_t k) {
+    const std::size_t n = wall.points.size();
+    std::size_t end = (k + 1) % n;
+    for (std::size_t t = 0; t + 1 < n && (wall.air_edges[end] & kContinuesEdge); ++t)
+        end = (end + 1) % n;
+    return end;
 }
 
 /// Along the wall from edge `e` (in print order from `start`) to its next bridged edge; 0 if none.
@@ -152,7 +162,7 @@ std::size_t emitBridgedWall(const ExtrusionPath& wall, std::size_t start, const 
                             std::vector<PlanStep>& steps) {
     const std::size_t n = wall.points.size();
     for (std::size_t t = 0; t < n; ++t) {
-        if (!overAir(wall.air_edges, (start + t) % n)) {
+        if (!overAir(wall.air_edges, (start + t) % n) && !overhangsAt(wall, (start + t) % n)) {
             start = (start + t) % n;
             break;
         }
@@ -165,6 +175,7 @@ std::size_t emitBridgedWall(const ExtrusionPath& wall, std::size_t start, const 
         if (!(wall.air_edges[k] & kContinuesEdge)) {  // a new edge of the wall: CuraEngine's addWallLine
             run.speed_factor = 1;
             run.to_bridge = distanceToBridge(wall, start, e);
+            run.overhangs = overhangsAt(wall, k) || overhangsAt(wall, edgeEnd(wall, k));
         }
         if (kindOf(wall.air_edges[k]) == kBridged && distanceUm(run.head, end) > kMinLineUm)
             run.bridge(end);
@@ -173,6 +184,26 @@ std::size_t emitBridgedWall(const ExtrusionPath& wall, std::size_t start, const 
     }
     head = run.head;
     return start;
+}
+
+bool overhangsAt(const ExtrusionPath& path, std::size_t k) {
+    return path.overhanging.size() == path.points.size() && k < path.overhanging.size() &&
+           path.overhanging[k] != 0;
+}
+
+std::size_t firstNonOverhanging(const ExtrusionPath& path, std::size_t start) {
+    const std::size_t n = path.points.size();
+    if (path.overhanging.size() != n)
+        return start;
+    for (std::size_t t = 0; t < n; ++t) {
+        if (!overhangsAt(path, (start + t) % n))
+            return (start + t) % n;
+    }
+    return start;
+}
+
+double overhangSpeedFactor(const ExtrusionPath& path, std::size_t from, std::size_t to) {
+    return overhangsAt(path, from) || overhangsAt(path, to) ? path.overhang_speed_factor : 1.0;
 }
 
 }  // namespace mixengine

@@ -48,6 +48,8 @@ MotionKeys featureMotionKeys(Feature feature) {
             return {key::acceleration_prime_tower, key::jerk_prime_tower};
         case Feature::Ironing:
             return {key::acceleration_ironing, key::jerk_ironing};
+        case Feature::Roofing:
+            return {key::acceleration_roofing, key::jerk_roofing};
         default:
             return {key::acceleration_print, key::jerk_print};
     }

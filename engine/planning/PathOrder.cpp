@@ -111,6 +111,8 @@ std::vector<coord_um> spiralRises(const ExtrusionPath& path, coord_um thickness_
 
 void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& params, Point2& head,
               std::vector<PlanStep>& steps) {
+    if (path.closed)
+        start = firstNonOverhanging(path, start);
     const Point2& first = path.points[start];
     appendTravel(head, first, params, steps);
     head = first;
@@ -123,11 +125,12 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
     Point2 before_end = head;
     for (std::size_t k = 1; k <= count; ++k) {
         std::size_t index = path.closed ? (start + k) % n : (reverse ? n - 1 - k : k);
+        const std::size_t from = path.closed ? (start + k - 1) % n : (reverse ? n - k : k - 1);
         const Point2& to = path.points[index];
         PlanStep extrude;
         extrude.kind = PlanStep::Kind::Extrude;
         extrude.to = to;
-        extrude.speed_mm_s = path.speed_mm_s;
+        extrude.speed_mm_s = path.speed_mm_s * overhangSpeedFactor(path, from, index);
         const double flow = path.flows.size() == n ? path.flows[index] : path.flow;
         extrude.width_um = path.width_um;
         extrude.volume_mm3 = extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, flow);

@@ -7,6 +7,7 @@
 #include "geometry/PolygonOps.h"
 #include "toolpaths/EmptyLayers.h"
 #include "toolpaths/InfillMeshes.h"
+#include "toolpaths/OverhangingWalls.h"
 #include "toolpaths/SupportedSkinFan.h"
 #include "toolpaths/adhesion/Adhesion.h"
 #include "toolpaths/adhesion/DraftShield.h"
@@ -160,6 +161,7 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         if (mesh.settings != nullptr)
             markSupportedSkinFan(*input.global, *mesh.settings, support_result.areas, mesh.layers, threads);
     }
+    markOverhangingWallsOfGroup(*input.global, input.heights, support_result.areas, result.meshes, threads);
 
     std::vector<std::set<int>> used = extrudersPerLayer(result, input.heights.size());
     const TowerInput tower{input.global, input.extruders, &input.heights, used, &model};

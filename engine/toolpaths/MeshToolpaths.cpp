@@ -185,6 +185,7 @@ SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const Me
     p.roofing.pattern = infillPatternOf(s.text(key::roofing_pattern), "roofing_pattern");
     p.roofing.angle_degrees = angleFor(s, key::roofing_angles, layer, {45, 135});
     p.roofing.style = styles.roofing;
+    p.roofing.feature = Feature::Roofing;
     p.roofing.monotonic = s.boolean(key::roofing_monotonic);
     p.skin.connect_polygons = p.roofing.connect_polygons = s.boolean(key::connect_skin_polygons);
     p.gap_style = gapStyle(s, layer);

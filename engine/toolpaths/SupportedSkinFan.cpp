@@ -13,11 +13,16 @@ bool isPlainSkin(const ExtrusionPath& path) {
     return path.feature == Feature::Skin && !path.bridge && path.points.size() >= 2;
 }
 
+/// Lines of a skin part: plain skin and its roofing (which CuraEngine prints without this fan).
+bool isPartLine(const ExtrusionPath& path) {
+    return isPlainSkin(path) || (path.feature == Feature::Roofing && !path.bridge && path.points.size() >= 2);
+}
+
 /// The skin parts of one layer: its plain skin lines grown by half their width, as islands.
 std::vector<Paths> skinParts(const std::vector<ExtrusionPath>& skin) {
     Paths bands;
     for (const ExtrusionPath& path : skin) {
-        if (!isPlainSkin(path))
+        if (!isPartLine(path))
             continue;
         Path line = path.points;
         if (path.closed)

@@ -5,7 +5,8 @@
 // (top_gap = ceil(support_top_distance / layer_height)): against that layer's roof when it has one,
 // else against its support body; a part that overlaps it prints with the fan at
 // support_supported_skin_fan_speed. A skin part here is an island of the layer's skin lines grown by
-// half their width (the lines of one part touch).
+// half their width (the lines of one part touch); its roofing lines belong to the part but keep the
+// layer's fan, as CuraEngine prints roofing without this fan.
 #include <vector>
 
 #include "settings/Settings.h"

@@ -132,7 +132,8 @@ void leadIn(const Segment& segment, const PlanStep& travel, OrderedLayer& out) {
 }  // namespace
 
 bool visibleFeature(Feature feature) {
-    return feature == Feature::WallOuter || feature == Feature::Skin || feature == Feature::Ironing;
+    return feature == Feature::WallOuter || feature == Feature::Skin || feature == Feature::Ironing ||
+           feature == Feature::Roofing;
 }
 
 OrderedLayer orderByMix(const PlannedLayer& layer, const std::vector<StepTarget>& targets, int last_mix,

@@ -48,7 +48,7 @@ struct OrderedLayer {
 OrderedLayer orderByMix(const PlannedLayer& layer, const std::vector<StepTarget>& targets, int last_mix,
                         const std::vector<MixVector>& mixes);
 
-/// Features a person sees on the finished part: the outer wall, skin and ironing.
+/// Features a person sees on the finished part: the outer wall, skin, roofing and ironing.
 bool visibleFeature(Feature feature);
 
 }  // namespace mixengine

@@ -5,6 +5,7 @@ namespace mixengine {
 Feature markedFeature(Feature feature) {
     switch (feature) {
         case Feature::Ironing:
+        case Feature::Roofing:
             return Feature::Skin;
         case Feature::RaftBase:
         case Feature::RaftSurface:

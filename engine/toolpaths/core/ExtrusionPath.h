@@ -10,10 +10,10 @@
 
 namespace mixengine {
 
-/// Feature types, named as Cura's ;TYPE: markers name them. Ironing, the three raft layers and the
-/// draft shield are features of their own (own speeds, accelerations, jerks or mix) that CuraEngine
-/// 4.13 marks with an existing type: ironing SKIN, raft base and surface SUPPORT-INTERFACE, raft
-/// interface SUPPORT, draft shield SKIRT (printed with the skirt's style).
+/// Feature types, named as Cura's ;TYPE: markers name them. Ironing, roofing, the three raft layers
+/// and the draft shield are features of their own (own speeds, accelerations, jerks or mix) that
+/// CuraEngine 4.13 marks with an existing type: ironing and roofing SKIN, raft base and surface
+/// SUPPORT-INTERFACE, raft interface SUPPORT, draft shield SKIRT (printed with the skirt's style).
 enum class Feature {
     WallOuter,
     WallInner,
@@ -29,13 +29,14 @@ enum class Feature {
     RaftSurface,
     DraftShield,
     SupportBottom,  ///< the support's floor: an interface with its own acceleration and jerk
+    Roofing,        ///< the top-most skin (roofing_layer_count): skin with its own acceleration and jerk
 };
 
 std::string_view featureMarker(Feature feature);  ///< "WALL-OUTER", "FILL", ...
 
 /// The feature CuraEngine files `feature` under (;TYPE:, time estimates, preview line types):
-/// Ironing → Skin, RaftBase/RaftSurface/SupportBottom → SupportInterface, RaftInterface → Support, else
-/// itself.
+/// Ironing and Roofing → Skin, RaftBase/RaftSurface/SupportBottom → SupportInterface, RaftInterface →
+/// Support, else itself.
 Feature markedFeature(Feature feature);
 
 /// How a wall prints where it crosses air (bridge_wall_*; toolpaths/walls/BridgeWalls.h).
@@ -86,6 +87,11 @@ struct ExtrusionPath {
     /// prints bridged; empty / none for everything else.
     std::vector<std::uint8_t> air_edges;
     std::optional<BridgeWallStyle> bridge_wall;
+    /// An overhanging wall loop (toolpaths/walls/OverhangWalls.h): empty, or one flag per point, non-zero
+    /// where the point overhangs. A line with an overhanging end prints at speed × overhang_speed_factor,
+    /// and the loop starts at its first point from the chosen start that does not overhang.
+    std::vector<std::uint8_t> overhanging;
+    double overhang_speed_factor = 1.0;
 };
 
 }  // namespace mixengine

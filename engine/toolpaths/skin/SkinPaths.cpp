@@ -61,7 +61,7 @@ InfillParams patternParams(const SkinFillParams& fill, coord_um z_um) {
     p.angle_degrees = fill.angle_degrees;
     p.z_um = z_um;
     p.line_width_um = fill.style.width_um;
-    p.feature = Feature::Skin;
+    p.feature = fill.feature;
     p.speed_mm_s = fill.style.speed_mm_s;
     p.flow = fill.style.flow;
     p.extruder = fill.style.extruder;
@@ -81,7 +81,7 @@ void appendMonotonic(std::vector<ExtrusionPath> lines, const SkinFillParams& fil
     const std::uint32_t sequence = ++out.sequences;
     const coord_um max_adjacent = fill.style.width_um * 11 / 10;
     for (const Path& line : monotonicOrder(std::move(open), fill.angle_degrees, max_adjacent)) {
-        ExtrusionPath path = styledPath(line, false, Feature::Skin, fill.style);
+        ExtrusionPath path = styledPath(line, false, fill.feature, fill.style);
         path.sequence = sequence;
         out.paths.push_back(std::move(path));
     }
@@ -95,7 +95,7 @@ void appendFill(const Paths& area, const SkinFillParams& fill, const SkinPathPar
         Paths loops = concentricLoops(area, fill, params.gap_style ? &out.gaps : nullptr);
         if (fill.connect_polygons)
             loops = connectLoops(loops, fill.style.width_um);
-        appendStyledLoops(loops, Feature::Skin, fill.style, out.paths);
+        appendStyledLoops(loops, fill.feature, fill.style, out.paths);
         return;
     }
     std::vector<ExtrusionPath> lines =

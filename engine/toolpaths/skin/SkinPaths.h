@@ -32,6 +32,7 @@ struct SkinFillParams {
     double angle_degrees = 45;
     coord_um overlap_um = 0;
     FeatureStyle style;
+    Feature feature = Feature::Skin;  ///< of the fill's lines (Feature::Roofing for the roofing)
     bool monotonic = false;
     double density = 1.0;  ///< lines width / density apart (bridge_skin_density; skin: 1)
     /// connect_skin_polygons: loops side by side joined (toolpaths/infill/PolygonConnect.h)
@@ -45,7 +46,7 @@ struct SkinPathParams {
     coord_um z_um = 0;
     bool first_layer = false;
     SkinFillParams skin;     ///< the pattern of this layer (top_bottom_pattern_0 on layer 0)
-    SkinFillParams roofing;  ///< overlap 0
+    SkinFillParams roofing;  ///< overlap 0, feature Feature::Roofing
     /// The style of the lines filling a concentric fill's gaps; none without fill_perimeter_gaps.
     std::optional<FeatureStyle> gap_style;
     double gap_angle_degrees = 45;

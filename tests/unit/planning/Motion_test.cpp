@@ -73,6 +73,26 @@ TEST(Motion, RaftAndIroningTakeTheirOwnKeys) {
     EXPECT_DOUBLE_EQ(second.steps[6].jerk_mm_s, 6);
 }
 
+TEST(Motion, RoofingTakesItsOwnKeysNotTheSkins) {
+    const std::vector<Settings> extruders{Settings("extruder 0", {{"acceleration_topbottom", "1000"},
+                                                                  {"acceleration_roofing", "750"},
+                                                                  {"jerk_topbottom", "20"},
+                                                                  {"jerk_roofing", "12"},
+                                                                  {"acceleration_print_layer_0", "100"},
+                                                                  {"jerk_print_layer_0", "5"},
+                                                                  {"speed_slowdown_layers", "2"}})};
+    const Settings global("global", {{"acceleration_enabled", "True"}, {"jerk_enabled", "True"}});
+    PlannedLayer l;
+    l.index = 5;
+    l.steps = {feature(Feature::Skin), move(PlanStep::Kind::Extrude), feature(Feature::Roofing),
+               move(PlanStep::Kind::Extrude)};
+    assignMotion(l, motionSources(global, {}, extruders), 0);
+    EXPECT_DOUBLE_EQ(l.steps[1].acceleration_mm_s2, 1000);
+    EXPECT_DOUBLE_EQ(l.steps[1].jerk_mm_s, 20);
+    EXPECT_DOUBLE_EQ(l.steps[3].acceleration_mm_s2, 750);
+    EXPECT_DOUBLE_EQ(l.steps[3].jerk_mm_s, 12);
+}
+
 TEST(Motion, NothingWhenSwitchedOff) {
     const std::vector<Settings> extruders{train()};
     const Settings global("global", {{"acceleration_enabled", "False"}, {"jerk_enabled", "False"}});

@@ -68,6 +68,17 @@ TEST(SkinPaths, RoofingIsFilledInsideTheSkinLoopsWithoutOverlap) {
     EXPECT_EQ(paths.back().speed_mm_s, 20.0);
 }
 
+TEST(SkinPaths, RoofingLinesAreTheRoofingFeatureTheRestSkin) {
+    SkinPathParams p = params();
+    p.roofing.feature = Feature::Roofing;  // as the mesh's toolpaths set it (own acceleration and jerk)
+    const std::vector<ExtrusionPath> paths =
+        generateSkinPaths({square(0, 0, 20'000)}, {rect(-1'000, -1'000, 10'000, 21'000)}, p);
+    ASSERT_FALSE(paths.empty());
+    for (const ExtrusionPath& path : paths)
+        EXPECT_EQ(path.feature, path.speed_mm_s == 25 ? Feature::Roofing : Feature::Skin);
+    EXPECT_EQ(featureMarker(Feature::Roofing), "SKIN");
+}
+
 TEST(SkinPaths, MonotonicLinesAreOneSequencePerFill) {
     SkinPathParams p = params();
     p.skin.monotonic = true;
