@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "common/Error.h"
+#include "geometry/Clip.h"
 
 namespace mixengine {
 namespace {
@@ -141,6 +143,37 @@ std::size_t searchSeam(const Path& loop, const SeamSearch& search) {
 /// is not at a user-specified point (the square root keeps squared distances within 64 bits).
 const Point2 kFarBackUm{0, 3'037'000'499};
 
+/// An outer wall's seam, and whether the wall runs counter-clockwise (a part's outline, else a hole's).
+struct OuterSeam {
+    Point2 at;
+    bool counter_clockwise = true;
+};
+
+/// The seam of the outer wall an inner wall belongs to: of the outer walls running the same way (a
+/// part's or a hole's), the one whose seam is nearest to a vertex of the inner wall; none without one.
+std::optional<Point2> ownOuterSeam(const Path& inner, const std::vector<OuterSeam>& outer_seams) {
+    const bool ccw = counterClockwise(inner);
+    std::optional<Point2> own;
+    std::int64_t nearest = std::numeric_limits<std::int64_t>::max();
+    for (const OuterSeam& seam : outer_seams) {
+        if (seam.counter_clockwise != ccw)
+            continue;
+        for (const Point2& p : inner) {
+            const std::int64_t d2 = squaredUm2(p, seam.at);
+            if (d2 < nearest)
+                nearest = d2, own = seam.at;
+        }
+    }
+    return own;
+}
+
+/// Rotates a loop so that vertex `start` comes first, and fixes its start there.
+void startAt(ExtrusionPath& path, std::size_t start) {
+    std::rotate(path.points.begin(), path.points.begin() + static_cast<std::ptrdiff_t>(start),
+                path.points.end());
+    path.fixed_start = true;
+}
+
 }  // namespace
 
 SeamParams seamParamsFrom(const Settings& s, const Point2& mesh_centre_um) {
@@ -177,15 +210,24 @@ void placeSeams(std::vector<ExtrusionPath>& paths, const SeamParams& params, int
     if (params.type == SeamType::Shortest ||
         (params.type == SeamType::SharpestCorner && params.corner == SeamCorner::None))
         return;  // CuraEngine 4.13 starts these where the head is
+    std::vector<OuterSeam> outer_seams;
     for (std::size_t i = 0; i < paths.size(); ++i) {
         ExtrusionPath& path = paths[i];
-        if (!path.closed || path.points.empty())
+        if (!path.closed || path.points.empty() || path.feature == Feature::WallInner)
             continue;
         const std::uint64_t seed = mix(static_cast<std::uint64_t>(layer)) ^ mix(i + 0x51ed27ULL);
-        const std::size_t start = seamVertex(path.points, params, seed);
-        std::rotate(path.points.begin(), path.points.begin() + static_cast<std::ptrdiff_t>(start),
-                    path.points.end());
-        path.fixed_start = true;
+        startAt(path, seamVertex(path.points, params, seed));
+        if (path.feature == Feature::WallOuter)
+            outer_seams.push_back({path.points.front(), counterClockwise(path.points)});
+    }
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        ExtrusionPath& path = paths[i];
+        if (!path.closed || path.points.empty() || path.feature != Feature::WallInner)
+            continue;
+        const std::optional<Point2> outer = ownOuterSeam(path.points, outer_seams);
+        const std::uint64_t seed = mix(static_cast<std::uint64_t>(layer)) ^ mix(i + 0x51ed27ULL);
+        startAt(path, outer ? searchSeam(path.points, {kFarBackUm, *outer, false, false, SeamCorner::None})
+                            : seamVertex(path.points, params, seed));
     }
 }
 

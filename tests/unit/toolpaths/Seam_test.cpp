@@ -105,6 +105,22 @@ TEST(Seam, PlaceSeamsRotatesTheLoopAndFixesItsStart) {
     EXPECT_FALSE(paths[1].fixed_start);
 }
 
+TEST(Seam, InnerWallsStartNearestToTheirOuterWallsSeam) {
+    // As CuraEngine 4.13 starts a part's inner walls: at the vertex nearest to the outer wall's seam,
+    // corners aside: the inner L's concave corner, nearest to the seam point, is not taken.
+    SeamParams p;
+    p.type = SeamType::Back;
+    p.corner = SeamCorner::Inner;
+    p.position_um = {12'000, 9'000};
+    std::vector<ExtrusionPath> paths{loop(square(-400, -400, 20'800)), loop(lShape())};
+    paths[0].feature = Feature::WallOuter;
+    paths[1].feature = Feature::WallInner;
+    placeSeams(paths, p, 0);
+    EXPECT_EQ(paths[0].points.front(), (Point2{20'400, -400}));
+    EXPECT_EQ(paths[1].points.front(), (Point2{20'000, 0}));
+    EXPECT_TRUE(paths[1].fixed_start);
+}
+
 TEST(Seam, ShortestLeavesTheStartToThePlanner) {
     SeamParams p;
     p.type = SeamType::Shortest;
