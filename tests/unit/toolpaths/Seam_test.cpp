@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -21,11 +22,11 @@ Path lShape() {
     return {{0, 0}, {20'000, 0}, {20'000, 10'000}, {10'000, 10'000}, {10'000, 20'000}, {0, 20'000}};
 }
 
-Path circle(int segments, coord_um r) {
+Path circle(int segments, coord_um r, const Point2& centre = {0, 0}) {
     Path c;
     for (int i = 0; i < segments; ++i) {
         const double a = 2 * std::numbers::pi * i / segments;
-        c.push_back({std::llround(r * std::cos(a)), std::llround(r * std::sin(a))});
+        c.push_back({centre.X + std::llround(r * std::cos(a)), centre.Y + std::llround(r * std::sin(a))});
     }
     return c;
 }
@@ -65,13 +66,31 @@ TEST(Seam, BackIsDrawnToCornersOfThePreferredKindAsInCuraEngine) {
     EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{10'000, 10'000}));
 }
 
-TEST(Seam, BackTiesGoToTheBackMostVertex) {
+TEST(Seam, BackTiesFarFromTheSeamPointGoToTheFirstVertexMet) {
+    // The two back corners are equally far from a point straight behind the middle; at ~90 mm the
+    // single-precision scores cannot hold CuraEngine's 25 µm² margin, so the first vertex met (the
+    // first of the nearest in the loop's order) stays.
     SeamParams p;
     p.type = SeamType::Back;
     p.corner = SeamCorner::Weighted;
-    p.position_um = {5'000, 100'000};  // straight behind the middle: the two back corners tie
+    p.position_um = {5'000, 100'000};
     const Path sq = square(0, 0, 10'000);
+    ASSERT_EQ(sq[2], (Point2{10'000, 10'000}));
     EXPECT_EQ(sq[seamVertex(sq, p, 0)], (Point2{10'000, 10'000}));
+    Path rotated = sq;
+    std::rotate(rotated.begin(), rotated.begin() + 3, rotated.end());  // (0, 10) mm first
+    EXPECT_EQ(rotated[seamVertex(rotated, p, 0)], (Point2{0, 10'000}));
+}
+
+TEST(Seam, BackTiesNearTheSeamPointGoToTheLastVertexMet) {
+    // 0.1 mm behind the middle of the back edge both back corners score 25 mm² + 0.01 mm²: the
+    // search starts at the first of them and the other, met next, is within 25 µm² and wins.
+    SeamParams p;
+    p.type = SeamType::Back;
+    p.corner = SeamCorner::Weighted;
+    p.position_um = {5'000, 10'100};
+    const Path sq = square(0, 0, 10'000);
+    EXPECT_EQ(sq[seamVertex(sq, p, 0)], (Point2{0, 10'000}));
 }
 
 TEST(Seam, PlaceSeamsRotatesTheLoopAndFixesItsStart) {
@@ -84,6 +103,22 @@ TEST(Seam, PlaceSeamsRotatesTheLoopAndFixesItsStart) {
     EXPECT_TRUE(paths[0].fixed_start);
     EXPECT_EQ(paths[0].points, (Path{{0, 0}, {10'000, 0}, {10'000, 10'000}, {0, 10'000}}));
     EXPECT_FALSE(paths[1].fixed_start);
+}
+
+TEST(Seam, InnerWallsStartNearestToTheirOuterWallsSeam) {
+    // As CuraEngine 4.13 starts a part's inner walls: at the vertex nearest to the outer wall's seam,
+    // corners aside: the inner L's concave corner, nearest to the seam point, is not taken.
+    SeamParams p;
+    p.type = SeamType::Back;
+    p.corner = SeamCorner::Inner;
+    p.position_um = {12'000, 9'000};
+    std::vector<ExtrusionPath> paths{loop(square(-400, -400, 20'800)), loop(lShape())};
+    paths[0].feature = Feature::WallOuter;
+    paths[1].feature = Feature::WallInner;
+    placeSeams(paths, p, 0);
+    EXPECT_EQ(paths[0].points.front(), (Point2{20'400, -400}));
+    EXPECT_EQ(paths[1].points.front(), (Point2{20'000, 0}));
+    EXPECT_TRUE(paths[1].fixed_start);
 }
 
 TEST(Seam, ShortestLeavesTheStartToThePlanner) {
@@ -106,11 +141,25 @@ TEST(Seam, SharpestCornerPrefersTheConcaveCornerWhenHidingInside) {
     EXPECT_EQ(l[seamVertex(l, p, 0)], (Point2{10'000, 20'000}));
 }
 
-TEST(Seam, NoCornersMeansTheBackMostVertex) {
+TEST(Seam, SharpestCornerTiesGoToTheLastVertexMetFromTheBack) {
+    // A circle has no concave corner: every vertex scores alike, the search starts at the back-most
+    // vertex and the last one met — the one before it in the loop's order — wins, as CuraEngine
+    // puts it on a cylinder (on the plate: far below it the squared distances to the point far
+    // behind overflow as CuraEngine's do).
     SeamParams p;
     p.type = SeamType::SharpestCorner;
-    const Path c = circle(100, 10'000);
-    EXPECT_EQ(c[seamVertex(c, p, 0)], (Point2{0, 10'000}));  // as CuraEngine puts it on a cylinder
+    const Path c = circle(100, 10'000, {100'000, 100'000});
+    ASSERT_EQ(c[25], (Point2{100'000, 110'000}));
+    EXPECT_EQ(seamVertex(c, p, 0), 24U);
+}
+
+TEST(Seam, SharpestCornerWithoutPreferenceLeavesTheStartToThePlanner) {
+    SeamParams p;
+    p.type = SeamType::SharpestCorner;
+    p.corner = SeamCorner::None;
+    std::vector<ExtrusionPath> paths{loop(lShape())};
+    placeSeams(paths, p, 0);
+    EXPECT_FALSE(paths[0].fixed_start);
 }
 
 TEST(Seam, RandomIsReproducibleAndVaries) {
