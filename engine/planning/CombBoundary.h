@@ -39,6 +39,12 @@ class CombBoundary {
     /// `p` when it is inside; else the boundary point nearest to it, if within `max_distance_um`,
     /// moved `nudge_um` on past it (away from `p`) so that it lies inside; else nothing.
     std::optional<Point2> moveInside(const Point2& p, coord_um max_distance_um, coord_um nudge_um = 20) const;
+    /// Where a travel from `from` towards `close_to` may leave the area, as CuraEngine 4.13's comb
+    /// chooses it: on every boundary edge that comes within `reach_um` of the segment from–close_to,
+    /// the edge's point nearest to close_to, moved `nudge_um` off the edge to its inside (edges
+    /// where neither side is inside are left out); best first by |x − close_to|² + |x − from|²/10.
+    std::vector<Point2> exitsToward(const Point2& from, const Point2& close_to, coord_um reach_um,
+                                    coord_um nudge_um) const;
 
   private:
     struct Edge {

@@ -53,6 +53,7 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
         p.comb = comb;
     if (s.boolean(key::travel_avoid_other_parts))
         p.free = free;
+    p.avoid_distance_um = s.lengthMicrons(key::travel_avoid_distance);
     p.limit_support_retractions = s.boolean(key::limit_support_retractions);
     p.combing_max_distance_um = s.lengthMicrons(key::retraction_combing_max_distance);
     p.comb_move_inside_um = combMoveInside(s, layer);
