@@ -158,6 +158,18 @@ bool CombBoundary::straightInside(const Point2& a, const Point2& b) const {
     return inside(a) && inside(b) && straightBetweenInside(a, b);
 }
 
+bool CombBoundary::crossesBoundary(const Point2& a, const Point2& b) const {
+    if (edges_.empty())
+        return false;
+    return !forCellsAlong(a, b, [&](const std::vector<std::uint32_t>& cell) {
+        for (std::uint32_t e : cell) {
+            if (properlyCross(a, b, edges_[e].a, edges_[e].b))
+                return false;
+        }
+        return true;
+    });
+}
+
 bool CombBoundary::straightBetweenInside(const Point2& a, const Point2& b) const {
     // The midpoint catches chords between two boundary points that run outside without a
     // proper crossing (e.g. corner to edge across a hole).

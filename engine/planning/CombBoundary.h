@@ -27,6 +27,8 @@ class CombBoundary {
     /// Both end points and the midpoint (rounded towards a) inside, and the segment crosses no
     /// boundary edge.
     bool straightInside(const Point2& a, const Point2& b) const;
+    /// Whether the segment a–b properly crosses a boundary edge (touching does not count).
+    bool crossesBoundary(const Point2& a, const Point2& b) const;
     /// A travel from a to b that stays inside: the straight line where it can, else around each
     /// boundary loop it would cross, along the loop's shorter side, then shortened where a
     /// straight shortcut stays inside. The points after `a`, ending with b; nothing when a and b

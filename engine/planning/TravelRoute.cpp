@@ -102,6 +102,18 @@ std::optional<Path> throughAir(const Point2& in_start, const Point2& in_end, con
     return points;
 }
 
+/// limit_support_retractions, as CuraEngine applies it to every combed travel: a travel between
+/// two points outside the comb area (`moved_inside` false) that goes straight across (`air` is just
+/// its end) does not retract unless, its ends lying close together, it crosses the grown outlines.
+bool unretractedCrossing(const Point2& from, const Point2& to, bool moved_inside, const Path& air,
+                         const TravelParams& params) {
+    if (!params.limit_support_retractions || moved_inside || air.size() != 1 || !params.free)
+        return false;
+    const coord_um offset_um = params.comb_move_inside_um / 2 + params.avoid_distance_um;
+    const bool close = distanceUm(from, to) < 2.0 * double(offset_um);
+    return !close || !params.free->crossesBoundary(from, to);
+}
+
 /// A mesh travel that cannot comb (ends in different islands of the comb area, or outside it):
 /// CuraEngine's Comb between parts (see the header).
 std::optional<TravelRoute> betweenParts(const Point2& from, const Point2& to, const TravelParams& params) {
@@ -134,8 +146,9 @@ std::optional<TravelRoute> betweenParts(const Point2& from, const Point2& to, co
         points.erase(points.begin());
     if (points.empty() || points.back() != to)
         points.push_back(to);
-    TravelRoute travel{thinTravel(from, points, params.max_travel_resolution_um, start && *start != from),
-                       params.retraction_enable};
+    TravelRoute travel{
+        thinTravel(from, points, params.max_travel_resolution_um, start && *start != from),
+        params.retraction_enable && !unretractedCrossing(from, to, start || end, *air, params)};
     travel.prime_before_last = travel.retract && end && *end != to;
     return travel;
 }
