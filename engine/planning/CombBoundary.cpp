@@ -321,10 +321,15 @@ std::optional<Point2> CombBoundary::moveInside(const Point2& p, coord_um max_dis
     }
     if (!nearest || best <= 0)
         return std::nullopt;
-    const double k = double(nudge_um) / best;
-    const Point2 moved{nearest->X + static_cast<coord_um>(std::llround(double(nearest->X - p.X) * k)),
-                       nearest->Y + static_cast<coord_um>(std::llround(double(nearest->Y - p.Y) * k))};
-    return inside(moved) ? std::optional<Point2>(moved) : std::nullopt;
+    // Where the area is thinner than the nudge (a narrow tip), a smaller nudge, down to none.
+    for (coord_um nudge = nudge_um; nudge >= 0; nudge = nudge > 1 ? nudge / 2 : nudge - 1) {
+        const double k = double(nudge) / best;
+        const Point2 moved{nearest->X + static_cast<coord_um>(std::llround(double(nearest->X - p.X) * k)),
+                           nearest->Y + static_cast<coord_um>(std::llround(double(nearest->Y - p.Y) * k))};
+        if (inside(moved))
+            return moved;
+    }
+    return std::nullopt;
 }
 
 std::vector<Point2> CombBoundary::exitsToward(const Point2& from, const Point2& close_to, coord_um reach_um,

@@ -39,7 +39,8 @@ class CombBoundary {
     /// nudged point is not inside.
     std::optional<Point2> entryToward(const Point2& from, const Point2& toward, coord_um nudge_um = 20) const;
     /// `p` when it is inside; else the boundary point nearest to it, if within `max_distance_um`,
-    /// moved `nudge_um` on past it (away from `p`) so that it lies inside; else nothing.
+    /// moved `nudge_um` on past it (away from `p`) so that it lies inside — less (halved down to
+    /// none) where the area is thinner than that; else nothing.
     std::optional<Point2> moveInside(const Point2& p, coord_um max_distance_um, coord_um nudge_um = 20) const;
     /// Where a travel from `from` towards `close_to` may leave the area, as CuraEngine 4.13's comb
     /// chooses it: on every boundary edge that comes within `reach_um` of the segment from–close_to,
