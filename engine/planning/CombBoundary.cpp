@@ -37,6 +37,19 @@ int crossingXComparedTo(const Point2& a, const Point2& b, coord_um y, coord_um x
     return dy > 0 ? sign : -sign;
 }
 
+double squaredUm(const Point2& a, const Point2& b) {
+    const double dx = double(a.X - b.X), dy = double(a.Y - b.Y);
+    return dx * dx + dy * dy;
+}
+
+/// The distance between segments p–q and a–b (0 when they cross).
+double segmentsDistanceUm(const Point2& p, const Point2& q, const Point2& a, const Point2& b) {
+    if (properlyCross(p, q, a, b))
+        return 0;
+    return std::min({distanceUm(nearestOnSegment(a, b, p), p), distanceUm(nearestOnSegment(a, b, q), q),
+                     distanceUm(nearestOnSegment(p, q, a), a), distanceUm(nearestOnSegment(p, q, b), b)});
+}
+
 }  // namespace
 
 CombBoundary::CombBoundary(const Paths& area) : loops_(area) {
@@ -143,6 +156,18 @@ bool CombBoundary::inside(const Point2& p) const {
 
 bool CombBoundary::straightInside(const Point2& a, const Point2& b) const {
     return inside(a) && inside(b) && straightBetweenInside(a, b);
+}
+
+bool CombBoundary::crossesBoundary(const Point2& a, const Point2& b) const {
+    if (edges_.empty())
+        return false;
+    return !forCellsAlong(a, b, [&](const std::vector<std::uint32_t>& cell) {
+        for (std::uint32_t e : cell) {
+            if (properlyCross(a, b, edges_[e].a, edges_[e].b))
+                return false;
+        }
+        return true;
+    });
 }
 
 bool CombBoundary::straightBetweenInside(const Point2& a, const Point2& b) const {
@@ -296,10 +321,49 @@ std::optional<Point2> CombBoundary::moveInside(const Point2& p, coord_um max_dis
     }
     if (!nearest || best <= 0)
         return std::nullopt;
-    const double k = double(nudge_um) / best;
-    const Point2 moved{nearest->X + static_cast<coord_um>(std::llround(double(nearest->X - p.X) * k)),
-                       nearest->Y + static_cast<coord_um>(std::llround(double(nearest->Y - p.Y) * k))};
-    return inside(moved) ? std::optional<Point2>(moved) : std::nullopt;
+    // Where the area is thinner than the nudge (a narrow tip), a smaller nudge, down to none.
+    for (coord_um nudge = nudge_um; nudge >= 0; nudge = nudge > 1 ? nudge / 2 : nudge - 1) {
+        const double k = double(nudge) / best;
+        const Point2 moved{nearest->X + static_cast<coord_um>(std::llround(double(nearest->X - p.X) * k)),
+                           nearest->Y + static_cast<coord_um>(std::llround(double(nearest->Y - p.Y) * k))};
+        if (inside(moved))
+            return moved;
+    }
+    return std::nullopt;
+}
+
+std::vector<Point2> CombBoundary::exitsToward(const Point2& from, const Point2& close_to, coord_um reach_um,
+                                              coord_um nudge_um) const {
+    std::vector<std::pair<double, Point2>> scored;
+    std::vector<std::uint32_t> seen;
+    forCellsAlong(from, close_to, [&](const std::vector<std::uint32_t>& cell) {
+        for (std::uint32_t e : cell) {
+            const Edge& edge = edges_[e];
+            if (std::find(seen.begin(), seen.end(), e) != seen.end())
+                continue;
+            seen.push_back(e);
+            if (segmentsDistanceUm(from, close_to, edge.a, edge.b) > double(reach_um))
+                continue;
+            const Point2 on = nearestOnSegment(edge.a, edge.b, close_to);
+            const double length = distanceUm(edge.a, edge.b);
+            const coord_um nx =
+                static_cast<coord_um>(std::llround(-double(edge.b.Y - edge.a.Y) / length * nudge_um));
+            const coord_um ny =
+                static_cast<coord_um>(std::llround(double(edge.b.X - edge.a.X) / length * nudge_um));
+            const Point2 left{on.X + nx, on.Y + ny}, right{on.X - nx, on.Y - ny};
+            const std::optional<Point2> inner =
+                inside(left) ? std::optional<Point2>(left)
+                             : (inside(right) ? std::optional<Point2>(right) : std::nullopt);
+            if (inner)
+                scored.emplace_back(squaredUm(on, close_to) + squaredUm(on, from) / 10, *inner);
+        }
+        return true;
+    });
+    std::sort(scored.begin(), scored.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::vector<Point2> points;
+    for (const auto& [score, point] : scored)
+        points.push_back(point);
+    return points;
 }
 
 }  // namespace mixengine

@@ -27,6 +27,8 @@ class CombBoundary {
     /// Both end points and the midpoint (rounded towards a) inside, and the segment crosses no
     /// boundary edge.
     bool straightInside(const Point2& a, const Point2& b) const;
+    /// Whether the segment a–b properly crosses a boundary edge (touching does not count).
+    bool crossesBoundary(const Point2& a, const Point2& b) const;
     /// A travel from a to b that stays inside: the straight line where it can, else around each
     /// boundary loop it would cross, along the loop's shorter side, then shortened where a
     /// straight shortcut stays inside. The points after `a`, ending with b; nothing when a and b
@@ -37,8 +39,15 @@ class CombBoundary {
     /// nudged point is not inside.
     std::optional<Point2> entryToward(const Point2& from, const Point2& toward, coord_um nudge_um = 20) const;
     /// `p` when it is inside; else the boundary point nearest to it, if within `max_distance_um`,
-    /// moved `nudge_um` on past it (away from `p`) so that it lies inside; else nothing.
+    /// moved `nudge_um` on past it (away from `p`) so that it lies inside — less (halved down to
+    /// none) where the area is thinner than that; else nothing.
     std::optional<Point2> moveInside(const Point2& p, coord_um max_distance_um, coord_um nudge_um = 20) const;
+    /// Where a travel from `from` towards `close_to` may leave the area, as CuraEngine 4.13's comb
+    /// chooses it: on every boundary edge that comes within `reach_um` of the segment from–close_to,
+    /// the edge's point nearest to close_to, moved `nudge_um` off the edge to its inside (edges
+    /// where neither side is inside are left out); best first by |x − close_to|² + |x − from|²/10.
+    std::vector<Point2> exitsToward(const Point2& from, const Point2& close_to, coord_um reach_um,
+                                    coord_um nudge_um) const;
 
   private:
     struct Edge {

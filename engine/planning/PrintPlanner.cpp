@@ -53,6 +53,7 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
         p.comb = comb;
     if (s.boolean(key::travel_avoid_other_parts))
         p.free = free;
+    p.avoid_distance_um = s.lengthMicrons(key::travel_avoid_distance);
     p.limit_support_retractions = s.boolean(key::limit_support_retractions);
     p.combing_max_distance_um = s.lengthMicrons(key::retraction_combing_max_distance);
     p.comb_move_inside_um = combMoveInside(s, layer);
@@ -203,7 +204,25 @@ std::size_t trainOf(int extruder, const std::vector<Settings>& extruders) {
     return std::min<std::size_t>(static_cast<std::size_t>(std::max(extruder, 0)), extruders.size() - 1);
 }
 
-/// retract_at_layer_change: the first travel of a layer retracts (not in spiralize mode).
+/// After the layer-change travel starting at step `first` (its travel steps in a row): when it
+/// primed before its last move (onto an outer wall), a retraction in place, as CuraEngine writes
+/// one at the start of the layer when the head is not retracted; its index, or −1.
+int retractAfterPrimedArrival(PlannedLayer& layer, std::size_t first) {
+    std::size_t end = first;
+    bool primed = false;
+    for (; end < layer.steps.size() && layer.steps[end].kind == PlanStep::Kind::Travel; ++end)
+        primed = primed || layer.steps[end].prime_first;
+    if (!primed)
+        return -1;
+    PlanStep in_place = layer.steps[end - 1];
+    in_place.retract = true;
+    in_place.prime_first = false;
+    layer.steps.insert(layer.steps.begin() + static_cast<std::ptrdiff_t>(end), in_place);
+    return static_cast<int>(end);
+}
+
+/// retract_at_layer_change: the first travel of a layer retracts (not in spiralize mode), and the
+/// head is retracted again where that travel arrives primed (retractAfterPrimedArrival).
 void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
     if (!extruder.boolean(key::retract_at_layer_change) || !extruder.boolean(key::retraction_enable) ||
         extruder.boolean(key::magic_spiralize))
@@ -216,6 +235,9 @@ void retractAtLayerStart(PlannedLayer& layer, const Settings& extruder) {
             if (!step.retract)
                 layer.layer_change_retract_step = static_cast<int>(i);
             step.retract = true;
+            const int in_place = retractAfterPrimedArrival(layer, i);
+            if (in_place >= 0)
+                layer.layer_change_retract_step = in_place;
             return;
         }
     }

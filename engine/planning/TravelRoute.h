@@ -5,11 +5,18 @@
 //     mode's area, planning/PrintPlanner.h; ends up to comb_move_inside_um outside it are first
 //     moved in) combs along it without retracting — unless the combed way is longer than
 //     retraction_combing_max_distance;
-//   - otherwise it goes through the air: with travel_avoid_other_parts around the parts (their
-//     outlines grown by travel_avoid_distance, `free` below), leaving the part it starts on and
-//     entering the one it ends on straight; and it retracts when longer than retraction_min_travel
-//     — except, with limit_support_retractions, a travel that neither starts nor ends in a part and
-//     crosses none (support to support);
+//   - a mesh travel between two islands of the comb area (or from or to a point outside it) goes as
+//     CuraEngine's Comb between parts: combed inside the part it starts in to where it leaves it —
+//     the point of that part's boundary near the straight way that is nearest to the other end —
+//     then with travel_avoid_other_parts out of the grown outlines (travel_avoid_distance, `free`
+//     below) there, around the parts through `free` and in again (straight across when that is
+//     shorter than the two crossings, or when the leaving and entering points lie closer than
+//     twice the comb offset plus the avoid distance), then combed inside the part it ends in; it
+//     retracts;
+//   - otherwise it goes through the air: with travel_avoid_other_parts around the parts, leaving
+//     the part it starts on and entering the one it ends on straight; and it retracts when longer
+//     than retraction_min_travel — except, with limit_support_retractions, a travel that neither
+//     starts nor ends in a part and crosses none (support to support);
 //   - a retracting travel to a mesh path whose end lies outside the comb area (an outer wall's
 //     start) goes to that end moved into the comb area first and primes there, before its last move
 //     (CuraEngine's unretract_before_last_travel_move; through the air: after entering the part);
@@ -35,6 +42,7 @@ struct TravelParams {
     /// travel_avoid_other_parts: the space outside every part grown by travel_avoid_distance
     /// (nullptr: through-air travel goes straight).
     const CombBoundary* free = nullptr;
+    coord_um avoid_distance_um = 0;  ///< travel_avoid_distance
     bool limit_support_retractions = false;
     coord_um combing_max_distance_um = 0;  ///< 0 = a combed travel never retracts
     coord_um wall_0_wipe_um = 0;           ///< wall_0_wipe_dist: travel on along an outer wall loop's start

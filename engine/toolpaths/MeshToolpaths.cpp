@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "common/ParallelFor.h"
+#include "geometry/PointQueries.h"
 #include "geometry/PolygonOps.h"
 #include "toolpaths/core/FeatureStyle.h"
 #include "toolpaths/infill/InfillLayers.h"
@@ -224,13 +225,111 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
     return unionOf(between_walls, gaps);
 }
 
-/// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "all" and "off").
-std::optional<Paths> combAreaFor(const Paths& outlines, const SkinAreas& areas, const Settings& s) {
+/// Whether any of `paths` starts inside `part`.
+bool anyStartsIn(const std::vector<ExtrusionPath>& paths, const Paths& part) {
+    return std::any_of(paths.begin(), paths.end(), [&](const ExtrusionPath& path) {
+        return !path.points.empty() && insideArea(part, path.points.front(), true);
+    });
+}
+
+/// The centre lines of the closed outer walls that start inside `part`.
+Paths outerWallLoops(const Paths& part, const MeshLayerGroups& walls) {
+    Paths loops;
+    for (const ExtrusionPath& path : walls.outer_walls) {
+        if (path.closed && path.points.size() >= 3 && insideArea(part, path.points.front(), true))
+            loops.push_back(path.points);
+    }
+    return loops;
+}
+
+/// `area` with the narrow pieces of `outline` that it leaves out (those of `outline` that an
+/// opening by `distance_um` removes), as CuraEngine 4.13 fills in where a wall is missing.
+Paths withNarrowPieces(const Paths& area, const Paths& outline, coord_um distance_um, coord_um grow_um) {
+    const Paths missing =
+        differenceOf(outline, offsetMiter(offsetMiter(outline, -(distance_um + 5)), distance_um + 10));
+    return offsetMiter(unionOf(offsetMiter(area, grow_um), offsetMiter(missing, grow_um)), -grow_um);
+}
+
+/// The outer boundary of one part's wall combing region, as CuraEngine 4.13's noskin comb
+/// boundary: the outer wall's inner edge (a quarter of its width inside its centre line when the
+/// part has no inner wall), the part's outline where that leaves out a narrow piece; the outline
+/// when the part has no wall.
+Paths wallCombOuter(const Paths& part, const MeshLayerGroups& walls, coord_um width_0_um) {
+    const Paths loops = outerWallLoops(part, walls);
+    if (loops.empty())
+        return part;
+    const bool inner = anyStartsIn(walls.inner_walls, part);
+    const coord_um to_outline = inner ? width_0_um : width_0_um * 3 / 4;
+    const Paths outer = offsetMiter(unionOf(loops), -(inner ? width_0_um / 2 : width_0_um / 4));
+    if (outer.size() == part.size())
+        return outer;
+    return withNarrowPieces(outer, part, to_outline, to_outline / 2 + 10);
+}
+
+/// One part's area inside its second wall, as CuraEngine 4.13's innermost walls with two insets
+/// (its comb boundary for "all" and no_outer_surfaces): the outer wall's centre line (the outline
+/// where that wall is missing), moved in to the second wall's centre line where the part has an
+/// inner wall, keeping the outer wall's area where the second wall does not fit.
+Paths innermostWallsArea(const Paths& part, const MeshLayerGroups& walls, coord_um width_0_um,
+                         coord_um width_x_um) {
+    const Paths loops = outerWallLoops(part, walls);
+    if (loops.empty())
+        return part;
+    const coord_um half_0 = width_0_um / 2, half_x = width_x_um / 2;
+    Paths outer = unionOf(loops);
+    if (outer.size() != part.size())
+        outer = withNarrowPieces(outer, part, half_0, half_0);
+    if (!anyStartsIn(walls.inner_walls, part))
+        return outer;
+    const coord_um spacing = half_0 + half_x;
+    const Paths second = offsetMiter(outer, -spacing);
+    const Paths missing = differenceOf(outer, offsetMiter(offsetMiter(outer, -(spacing + 5)), spacing + 10));
+    if (missing.empty())
+        return second;
+    const Paths merged = unionOf(offsetMiter(second, 2 * half_x), offsetMiter(missing, half_0));
+    return intersectAll(offsetMiter(merged, -std::min(half_0, half_x)), outer);
+}
+
+/// Every part's innermostWallsArea.
+Paths innermostWalls(const MeshLayerGroups& walls, const Settings& s) {
+    Paths area;
+    const coord_um width_0_um = s.lengthMicrons(key::wall_line_width_0);
+    const coord_um width_x_um = s.lengthMicrons(key::wall_line_width_x);
+    for (const Paths& part : walls.parts) {
+        const Paths piece = innermostWallsArea(part, walls, width_0_um, width_x_um);
+        area.insert(area.end(), piece.begin(), piece.end());
+    }
+    return area;
+}
+
+/// CuraEngine 4.13's noskin comb boundary: per part the wall region (wallCombOuter less the area
+/// 10 µm inside the innermost wall), and the sparse infill area.
+Paths noSkinCombArea(const MeshLayerGroups& walls, const Paths& inner_area, const SkinAreas& areas,
+                     const Settings& s) {
+    Paths outer;
+    const coord_um width_0_um = s.lengthMicrons(key::wall_line_width_0);
+    for (const Paths& part : walls.parts) {
+        const Paths piece = wallCombOuter(part, walls, width_0_um);
+        outer.insert(outer.end(), piece.begin(), piece.end());
+    }
+    return unionOf(areas.infill, differenceOf(outer, offsetMiter(inner_area, -10)));
+}
+
+/// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "off"; the sliced
+/// outlines less the skin for noskin, and none for "all", in magic_mesh_surface_mode "surface",
+/// which has no parts). As CuraEngine 4.13: noskin is noSkinCombArea, "all" innermostWalls,
+/// no_outer_surfaces innermostWalls less the skin with air directly above or below, infill the
+/// sparse infill area.
+std::optional<Paths> combAreaFor(const Paths& outlines, const MeshLayerGroups& walls, const Paths& inner_area,
+                                 const SkinAreas& areas, const Settings& s) {
     const std::string mode = s.text(key::retraction_combing);
     if (mode == "noskin")
-        return differenceOf(outlines, areas.skin);
+        return walls.parts.empty() ? differenceOf(outlines, areas.skin)
+                                   : noSkinCombArea(walls, inner_area, areas, s);
     if (mode == "no_outer_surfaces")
-        return differenceOf(outlines, areas.outer_surfaces);
+        return differenceOf(walls.parts.empty() ? outlines : innermostWalls(walls, s), areas.outer_surfaces);
+    if (mode == "all" && !walls.parts.empty())
+        return innermostWalls(walls, s);
     if (mode == "infill")
         return areas.infill;
     return std::nullopt;
@@ -430,7 +529,8 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
                      skin_params))
                 result[i].skin.push_back(std::move(line));
         }
-        result[i].comb_area = combAreaFor(layers[i].outlines, skin, settings);
+        result[i].comb_area =
+            combAreaFor(layers[i].outlines, result[i], areas.inner_areas[i], skin, settings);
         InfillParams fill = meshInfillParams(settings, layer, z, styles.infill, middle);
         const Paths subdiv_lines = cubes ? cubes->linesAt(z) : Paths{};
         fill.subdiv_lines = cubes ? &subdiv_lines : nullptr;

@@ -39,9 +39,12 @@ struct MeshLayerGroups {
     std::vector<ExtrusionPath> outer_walls;
     std::vector<ExtrusionPath> skin;
     std::vector<ExtrusionPath> infill;
-    /// Where travel may comb on this layer for the mesh's retraction_combing mode; none = its
-    /// sliced outlines ("all", "off"). noskin: the outlines less the skin; no_outer_surfaces: less
-    /// the skin with air directly above or below; infill: the infill area.
+    /// Where travel may comb on this layer for the mesh's retraction_combing mode, as CuraEngine
+    /// 4.13's comb boundary; none = its sliced outlines ("off", and "all" without parts). "all":
+    /// per part inside the second wall's centre line (the outer wall's where there is no second
+    /// wall); no_outer_surfaces: that less the skin with air directly above or below; noskin: per
+    /// part the ring from the outer wall's inner edge to just inside the innermost wall, and the
+    /// infill area; infill: the infill area.
     std::optional<Paths> comb_area;
     std::vector<ExtrusionPath> ironing;
     /// infill_randomize_start_location: planning starts the infill nearest this point.

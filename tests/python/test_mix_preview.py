@@ -534,17 +534,17 @@ def test_matching_skips_moves_the_layer_view_does_not_show():
 def test_not_honoured_entries_from_the_shared_list():
     entries = NotHonoured.load(str(helpers.REPO / "settings"))
     # the engine's list, read as it is (a key listed whole, and one listed for some values)
-    assert "wireframe_enabled" in entries and entries["retraction_combing"]["values"] == ["off", "infill"]
-    found = [("retraction_combing", "off", "noskin", "global"),
+    assert "wireframe_enabled" in entries and entries["wireframe_strategy"]["values"] == ["retract", "knot"]
+    found = [("wireframe_strategy", "retract", "compensate", "global"),
              ("wireframe_enabled", True, False, "global"),
              ("wireframe_enabled", "True", "False", "cube.stl"), ("magic_spiralize", False, False, "global"),
-             ("retraction_combing", "all", "noskin", "global"), ("not_listed", 1, 2, "global")]
+             ("wireframe_strategy", "compensate", "compensate", "global"), ("not_listed", 1, 2, "global")]
     rows = NotHonoured.offending(entries, found)
-    assert [(r[0], r[1]) for r in rows] == [("retraction_combing", "off"), ("wireframe_enabled", True)]
-    assert rows[1][3] == ["global", "cube.stl"]  # one row per key and value, every place named
-    text = NotHonoured.messageText(rows, label={"retraction_combing": "Combing Mode",
+    assert [(r[0], r[1]) for r in rows] == [("wireframe_enabled", True), ("wireframe_strategy", "retract")]
+    assert rows[0][3] == ["global", "cube.stl"]  # one row per key and value, every place named
+    text = NotHonoured.messageText(rows, label={"wireframe_strategy": "Strategy",
                                                 "wireframe_enabled": "Wire Printing"}.get)
-    assert "Combing Mode = off: combing routes differ from CuraEngine's Comb" in text
+    assert "Strategy = retract: wire printing is not built" in text
     assert "Wire Printing = True (global, cube.stl): wire printing is not built" in text
     assert NotHonoured.offending(entries, [("wireframe_enabled", False, False, "global")]) == []
     # a listed value that is the machine's own default is not the user's request (the engine's rule too)

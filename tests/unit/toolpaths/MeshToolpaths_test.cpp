@@ -104,25 +104,30 @@ TEST(MeshToolpaths, NoInfillAtZeroDensity) {
 }
 
 TEST(MeshToolpaths, CombAreaFollowsTheCombingMode) {
-    // Layer 29 is top skin all over, layer 15 is infill inside the walls.
+    // As CuraEngine 4.13's comb boundary. A 20 mm square with two 0.4 mm walls; layer 29 is top
+    // skin all over, layer 15 is infill inside the walls.
     const auto area = [](const std::string& mode, int layer) {
         return toolpaths({{"retraction_combing", mode}})[static_cast<std::size_t>(layer)].comb_area;
     };
-    EXPECT_FALSE(area("all", 15).has_value());  // the sliced outlines
     EXPECT_FALSE(area("off", 15).has_value());
-    const double outline = 400e6;
-    // noskin: the outline less the skin — all of it on a top layer but the walls' 0.8 mm ring.
-    const double ring = outline - 18'400.0 * 18'400.0;
+    // all: inside the second wall's centre line, 0.6 mm inside the outline.
+    const double second_wall = 18'800.0 * 18'800.0;
+    ASSERT_TRUE(area("all", 15).has_value());
+    EXPECT_NEAR(areaUm2(*area("all", 15)), second_wall, 1e6);
+    // noskin: from the outer wall's inner edge (0.4 mm in) to 10 µm inside the innermost wall
+    // (0.8 mm in), and the infill: the whole inside of the outer wall on an infill layer.
+    const double outer_edge = 19'200.0 * 19'200.0;
     ASSERT_TRUE(area("noskin", 29).has_value());
-    EXPECT_NEAR(areaUm2(*area("noskin", 29)), ring, 1e6);
-    EXPECT_DOUBLE_EQ(areaUm2(*area("noskin", 15)), outline);
+    EXPECT_NEAR(areaUm2(*area("noskin", 29)), outer_edge - 18'380.0 * 18'380.0, 1e6);
+    EXPECT_NEAR(areaUm2(*area("noskin", 15)), outer_edge, 1e6);
     // infill: the infill area only (none on a top layer).
+    const double outline = 400e6;
     EXPECT_TRUE(area("infill", 29)->empty());
     EXPECT_GT(areaUm2(*area("infill", 15)), 0.8 * outline);
     EXPECT_LT(areaUm2(*area("infill", 15)), outline);
-    // no_outer_surfaces: the skin with air above (layer 29) is out, the skin under it (27) stays in.
-    EXPECT_NEAR(areaUm2(*area("no_outer_surfaces", 29)), ring, 1e6);
-    EXPECT_DOUBLE_EQ(areaUm2(*area("no_outer_surfaces", 27)), outline);
+    // no_outer_surfaces: as "all" less the skin with air above (layer 29), not the skin under it (27).
+    EXPECT_NEAR(areaUm2(*area("no_outer_surfaces", 29)), second_wall - 18'400.0 * 18'400.0, 1e6);
+    EXPECT_NEAR(areaUm2(*area("no_outer_surfaces", 27)), second_wall, 1e6);
 }
 
 TEST(MeshToolpaths, SurfaceModePrintsTheOutlineOnceAsOuterWall) {
