@@ -10,7 +10,6 @@
 #include "planning/Coasting.h"
 #include "planning/Cooling.h"
 #include "planning/LayerWipes.h"
-#include "planning/MergeGapLines.h"
 #include "planning/Motion.h"
 #include "planning/PathOrder.h"
 #include "planning/SwitchTemperatures.h"

@@ -83,7 +83,7 @@ struct ExtrusionPath {
     bool bridge = false;
     double fan_ratio = -1;
     /// A line filling a gap between a part's walls or between its walls and its skin or infill,
-    /// which the planner may merge with its neighbours (planning/MergeGapLines.h).
+    /// which the planner may merge with its neighbours (mergeGapLines, planning/Cooling.h).
     bool mergeable = false;
     /// A wall loop crossing air: per edge points[k] → points[k+1] its AirEdge bits, and how it
     /// prints bridged; empty / none for everything else.
