@@ -55,6 +55,7 @@ struct PlanStep {
     coord_um width_um = 0;   ///< Extrude: the line width of the path it belongs to
     bool bridge = false;     ///< SetFeature: printed with bridge settings (;BRIDGE)
     bool fan_fixed = false;  ///< SetFan: a bridge's own fan_ratio, kept by cooling
+    bool mergeable = false;  ///< Extrude: of a gap line (ExtrusionPath::mergeable)
 };
 
 struct PlannedLayer {

@@ -133,6 +133,7 @@ void emitPath(const ExtrusionPath& path, std::size_t start, const TravelParams& 
         extrude.speed_mm_s = path.speed_mm_s * overhangSpeedFactor(path, from, index);
         const double flow = path.flows.size() == n ? path.flows[index] : path.flow;
         extrude.width_um = path.width_um;
+        extrude.mergeable = path.mergeable;
         extrude.volume_mm3 = extrusionVolumeMm3(head, to, path.width_um, params.layer_thickness_um, flow);
         extrude.rise_um = rises.empty() ? 0 : rises[index];
         steps.push_back(extrude);

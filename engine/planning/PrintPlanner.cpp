@@ -416,6 +416,11 @@ void finishLayer(PlannedLayer& planned, bool after_first, int layer_extruder, Po
     if (after_first)
         retractAtLayerStart(planned, run.extruders[trainOf(layer_extruder, run.extruders)]);
     cooling.retract_seconds = retractSeconds(run.extruders[trainOf(run.state.extruder, run.extruders)]);
+    mergeGapLines(planned, layer_extruder, [&run](int extruder) {
+        const Settings& s = run.extruders[trainOf(extruder, run.extruders)];
+        return GapMergeParams{s.lengthMicrons(key::machine_nozzle_size),
+                              s.lengthMicrons(key::meshfix_maximum_deviation)};
+    });
     applyCooling(planned, layer_start, cooling);
     assignMotion(planned, run.motion, layer_extruder);
 }

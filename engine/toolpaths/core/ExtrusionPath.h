@@ -83,6 +83,9 @@ struct ExtrusionPath {
     /// fan at `fan_ratio` (0..1; −1: the layer's fan) while it prints.
     bool bridge = false;
     double fan_ratio = -1;
+    /// A line filling a gap between a part's walls or between its walls and its skin or infill,
+    /// which the planner may merge with its neighbours (mergeGapLines, planning/Cooling.h).
+    bool mergeable = false;
     /// A wall loop crossing air: per edge points[k] → points[k+1] its AirEdge bits, and how it
     /// prints bridged; empty / none for everything else.
     std::vector<std::uint8_t> air_edges;

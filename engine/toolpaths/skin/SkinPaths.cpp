@@ -160,6 +160,8 @@ std::vector<ExtrusionPath> generateSkinPaths(const Paths& skin_area, const Paths
 std::vector<ExtrusionPath> perimeterGapLines(const Paths& gaps, const SkinPathParams& params) {
     std::vector<ExtrusionPath> lines;
     appendGapLines(gaps, params, lines);
+    for (ExtrusionPath& line : lines)
+        line.mergeable = true;
     return lines;
 }
 

@@ -172,5 +172,70 @@ TEST(Cooling, RaftLayersTakeTheirOwnFanWithoutTheRamp) {
     EXPECT_DOUBLE_EQ(unfanned.steps[0].fan_ratio, 0.3);
 }
 
+// Gap lines merged as CuraEngine 4.13's MergeInfillLines merges them (mergeGapLines).
+PlanStep stepAt(PlanStep::Kind kind, coord_um x, coord_um y, bool gap) {
+    PlanStep step;
+    step.kind = kind;
+    step.to = {x, y};
+    step.speed_mm_s = kind == PlanStep::Kind::Travel ? 150 : 25;
+    if (kind == PlanStep::Kind::Extrude) {
+        step.width_um = 200;
+        step.mergeable = gap;
+        step.volume_mm3 = 0.3 * 0.2 * 0.2;  // a 0.3 mm line, 0.2 mm wide and high
+    }
+    return step;
+}
+
+/// A wall, then three 0.3 mm gap lines side by side 0.2 mm apart (travel between), then travel away.
+PlannedLayer threeGapLines(bool gap, Point2 second_from = {200, 300}, Point2 second_to = {200, 0}) {
+    using K = PlanStep::Kind;
+    PlannedLayer layer;
+    layer.steps = {stepAt(K::SetFan, 0, 0, false),
+                   stepAt(K::Travel, -5000, 0, false),
+                   stepAt(K::Extrude, -4000, 0, false),
+                   stepAt(K::Travel, 0, 0, false),
+                   stepAt(K::Extrude, 0, 300, gap),
+                   stepAt(K::Travel, second_from.X, second_from.Y, false),
+                   stepAt(K::Extrude, second_to.X, second_to.Y, gap),
+                   stepAt(K::Travel, 400, 0, false),
+                   stepAt(K::Extrude, 400, 300, gap),
+                   stepAt(K::Travel, 9000, 0, false)};
+    return layer;
+}
+
+GapMergeParams gapParams(int) {
+    return {400, 25};
+}
+
+TEST(Cooling, GapLinesSideBySideBecomeOneLineThroughTheirMiddles) {
+    PlannedLayer layer = threeGapLines(true);
+    mergeGapLines(layer, 0, gapParams);
+    // travel to the first line's middle, then its flow times the lengths CuraEngine predicts:
+    // 600 µm of line over 200 µm (flow 3), then 250 µm × 3 + 300 µm over 450 µm
+    ASSERT_EQ(layer.steps.size(), 7u);
+    EXPECT_EQ(layer.steps[3].kind, PlanStep::Kind::Travel);
+    EXPECT_EQ(layer.steps[3].to, (Point2{0, 150}));
+    EXPECT_EQ(layer.steps[4].to, (Point2{200, 150}));
+    EXPECT_EQ(layer.steps[5].to, (Point2{400, 150}));
+    const double per_mm = 0.2 * 0.2;
+    EXPECT_NEAR(layer.steps[4].volume_mm3, 0.2 * per_mm * 1050.0 / 450.0, 1e-12);
+    EXPECT_NEAR(layer.steps[5].volume_mm3, 0.2 * per_mm * 1050.0 / 450.0, 1e-12);
+    EXPECT_EQ(layer.steps[6].to, (Point2{9000, 0}));
+}
+
+TEST(Cooling, OtherLinesAndLinesEndToEndStayApart) {
+    PlannedLayer skin = threeGapLines(false);
+    const std::size_t steps = skin.steps.size();
+    mergeGapLines(skin, 0, gapParams);
+    EXPECT_EQ(skin.steps.size(), steps);
+    // the second line continues the first (its start 50 µm past the first's end): the first stays
+    // whole, and the second (merged with the third) starts after a travel
+    PlannedLayer in_line = threeGapLines(true, {0, 350}, {0, 650});
+    mergeGapLines(in_line, 0, gapParams);
+    EXPECT_EQ(in_line.steps[4].to, (Point2{0, 300}));
+    EXPECT_EQ(in_line.steps[5].kind, PlanStep::Kind::Travel);
+    EXPECT_EQ(in_line.steps[5].to, (Point2{0, 500}));
+}
+
 }  // namespace
 }  // namespace mixengine
