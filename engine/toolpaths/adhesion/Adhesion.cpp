@@ -140,6 +140,19 @@ Path convexHull(const Paths& polygons) {
     return hull;
 }
 
+void simplifyAdhesion(const Settings& global, const std::vector<Settings>* extruders,
+                      std::vector<ExtrusionPath>& paths) {
+    const int nr = global.extruderIndex(key::adhesion_extruder_nr);
+    const Settings& s = trainSettings(global, extruders, nr < 0 ? 0 : nr);
+    const coord_um resolution = s.lengthMicrons(key::meshfix_maximum_resolution);
+    const coord_um deviation = s.lengthMicrons(key::meshfix_maximum_deviation);
+    for (ExtrusionPath& path : paths) {
+        if (path.closed && path.flows.empty())
+            path.points = simplifyLoop(path.points, resolution, deviation);
+    }
+    std::erase_if(paths, [](const ExtrusionPath& path) { return path.closed && path.points.size() < 3; });
+}
+
 AdhesionResult generateAdhesion(const AdhesionInput& in) {
     AdhesionResult result;
     const Settings& g = *in.global;

@@ -42,6 +42,13 @@ struct AdhesionResult {
 
 AdhesionResult generateAdhesion(const AdhesionInput& input);
 
+/// As CuraEngine 4.13 finishes its skirt and brim lines (every extruder's skirt or brim, the support's
+/// and the prime tower's brim): each loop simplified with the adhesion extruder's
+/// meshfix_maximum_resolution / _deviation (slicing/OutlineCleanup.h simplifyLoop); a loop left with
+/// fewer than three vertices goes. Open paths are kept as they are.
+void simplifyAdhesion(const Settings& global, const std::vector<Settings>* extruders,
+                      std::vector<ExtrusionPath>& paths);
+
 /// Convex hull of all points of `polygons`, counter-clockwise (empty for no points).
 Path convexHull(const Paths& polygons);
 
