@@ -62,6 +62,23 @@ Paths brimBase(const Paths& models, coord_um gap_um, bool outside_only) {
     return outside_only ? withoutEmptyHoles(base) : base;
 }
 
+/// What the skirt goes around, as CuraEngine 4.13 takes it: the approximate convex hull
+/// (DraftShield.h) of the models' outlines and of the other things on the layer (their points' convex
+/// hull here), closed by 20 µm and simplified (200 µm segments, 50 µm deviation) — the vertices that
+/// leaves along the hull's sides are what meshfix_maximum_resolution later removes or keeps.
+Paths skirtBase(const Paths& models, const Paths& extras) {
+    constexpr coord_um kJoinUm = 20;
+    Paths around = models;
+    if (!extras.empty())
+        around.push_back(convexHull(extras));
+    Paths base = approxConvexHull(around, 0);
+    base = offsetMiter(offsetMiter(base, kJoinUm, Loops::United), -kJoinUm, Loops::United);
+    for (Path& loop : base)
+        loop = simplifyLoop(loop, 200, 50);
+    std::erase_if(base, [](const Path& loop) { return loop.size() < 3; });
+    return base;
+}
+
 /// Loops around `base`: the first `first_um` outside it, then one width further out each; at
 /// least `count` and more until `min_length_um` is reached. Outermost first. As CuraEngine, a loop's
 /// holes smaller than 100 line widths squared are left out.
@@ -184,9 +201,7 @@ AdhesionResult generateAdhesion(const AdhesionInput& in) {
     }
     if (type != "skirt")
         result.warnings.push_back("adhesion_type '" + type + "' is not supported; printing a skirt instead");
-    Paths everything = in.models;
-    everything.insert(everything.end(), in.extras.begin(), in.extras.end());
-    Paths hull{convexHull(everything)};
+    Paths hull = skirtBase(in.models, in.extras);
     coord_um first = s.lengthMicrons(key::skirt_gap) + style.width_um / 2;
     if (!in.shields.empty()) {  // around the shields too, as CuraEngine
         hull = approxConvexHull(unionOf(offsetPolygons(hull, first - style.width_um), in.shields), 0);
