@@ -33,9 +33,10 @@ Paths withoutEmptyHoles(const Paths& area) {
 }
 
 /// The islands of `models` that get a wall: as CuraEngine 4.13 drops a layer part too thin for its outer
-/// wall (wall_line_width_0 × initial_layer_line_width_factor on layer 0) before the brim is made.
+/// wall (wall_line_width_0 × initial_layer_line_width_factor on layer 0) before the brim is made — unless
+/// it fills outline gaps (fill_outline_gaps keeps such parts, the whole part a gap).
 Paths partsWithWalls(const Paths& models, const Settings& s) {
-    if (s.integer(key::wall_line_count) <= 0)
+    if (s.integer(key::wall_line_count) <= 0 || s.boolean(key::fill_outline_gaps))
         return models;
     const coord_um half_wall =
         static_cast<coord_um>(std::llround(double(s.lengthMicrons(key::wall_line_width_0)) *
