@@ -189,6 +189,8 @@ std::vector<ExtrusionPath> outlineGapPaths(const Paths& gaps, const Settings& s,
 SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const MeshStyles& styles) {
     SkinPathParams p;
     p.outline_count = countOf(s, key::skin_outline_count);
+    p.simplify_resolution_um = s.lengthMicrons(key::meshfix_maximum_resolution);
+    p.simplify_deviation_um = s.lengthMicrons(key::meshfix_maximum_deviation);
     p.z_um = z;
     p.first_layer = layer == 0;
     const Key<SettingUnit::Text> pattern_key =
