@@ -197,6 +197,7 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
         result.adhesion.insert(result.adhesion.end(), prime_tower.brim.begin(), prime_tower.brim.end());
         result.warnings = std::move(skirt.warnings);
         addOtherExtruderSkirts(input, used, prime_tower.brim, result.adhesion);
+        simplifyAdhesion(*input.global, input.extruders, result.adhesion);
     }
     dropEmptyBottomLayers(input, result);
     if (raft.enabled && !result.heights.empty())

@@ -18,6 +18,7 @@
 #include "toolpaths/surface/Ironing.h"
 #include "toolpaths/surface/Spiralize.h"
 #include "toolpaths/walls/BridgeWalls.h"
+#include "toolpaths/walls/OutlineGaps.h"
 #include "toolpaths/walls/OutlineOffsets.h"
 #include "toolpaths/walls/Seam.h"
 #include "toolpaths/walls/SmallFeatures.h"
@@ -113,6 +114,7 @@ WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinRef
     p.inner_extruder = styles.wall_x.extruder;
     p.group_by_outline = s.boolean(key::optimize_wall_printing_order);
     p.perimeter_gaps = fillsPerimeterGaps(s);
+    p.outline_gaps = s.boolean(key::fill_outline_gaps);
     p.filter_tiny_gaps = s.boolean(key::filter_out_tiny_gaps);
     p.outer_first = outerWallFirst(s, layer);
     p.simplify_resolution_um = s.lengthMicrons(key::meshfix_maximum_resolution);
@@ -151,17 +153,14 @@ SkinParams skinParams(const Settings& s, const SkinReferences& refs) {
     return p;
 }
 
-/// The lines half a wall line wide that fill the gaps of concentric skin (fill_perimeter_gaps), in
-/// CuraEngine's perimeter-gap style: skin speed, inner-wall flow. With speed_equalize_flow_enabled the
-/// speed is multiplied, as CuraEngine 4.13 does, by skin_line_width over the gap width in whole
-/// microns divided as integers (2 for equal wall and skin widths), before the first layers' ramp.
-std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
-    if (!fillsPerimeterGaps(s))
-        return std::nullopt;
-    FeatureStyle style = featureStyle(s,
-                                      {key::wall_line_width_0, key::speed_topbottom,
-                                       key::wall_x_material_flow, key::top_bottom_extruder_nr},
-                                      layer);
+/// The style of the lines half a wall line wide that fill gaps (perimeter and outline gaps), by the
+/// `extruder` key's train, CuraEngine's perimeter-gap style: skin speed, inner-wall flow. With
+/// speed_equalize_flow_enabled the speed is multiplied, as CuraEngine 4.13 does, by skin_line_width over the
+/// gap width in whole microns divided as integers (2 for equal wall and skin widths), before the first
+/// layers' ramp.
+FeatureStyle perimeterGapStyle(const Settings& s, int layer, Key<SettingUnit::Extruder> extruder) {
+    FeatureStyle style = featureStyle(
+        s, {key::wall_line_width_0, key::speed_topbottom, key::wall_x_material_flow, extruder}, layer);
     style.width_um = s.lengthMicrons(key::wall_line_width_0) / 2;
     if (s.boolean(key::speed_equalize_flow_enabled) && style.width_um > 0) {
         const coord_um factor = s.lengthMicrons(key::skin_line_width) / style.width_um;
@@ -171,9 +170,28 @@ std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
     return style;
 }
 
+/// The perimeter gaps' style (fill_perimeter_gaps; none without it).
+std::optional<FeatureStyle> gapStyle(const Settings& s, int layer) {
+    if (!fillsPerimeterGaps(s))
+        return std::nullopt;
+    return perimeterGapStyle(s, layer, key::top_bottom_extruder_nr);
+}
+
+/// fill_outline_gaps: the lines filling layer `layer`'s outline gaps, as CuraEngine 4.13 prints them
+/// (processOutlineGaps): at the skin angle, in the perimeter gaps' style, by the outer wall's extruder.
+std::vector<ExtrusionPath> outlineGapPaths(const Paths& gaps, const Settings& s, const SkinPathParams& skin,
+                                           int layer) {
+    if (gaps.empty())
+        return {};
+    return outlineGapLines(gaps, skin.skin.angle_degrees,
+                           perimeterGapStyle(s, layer, key::wall_0_extruder_nr));
+}
+
 SkinPathParams skinPathParams(const Settings& s, int layer, coord_um z, const MeshStyles& styles) {
     SkinPathParams p;
     p.outline_count = countOf(s, key::skin_outline_count);
+    p.simplify_resolution_um = s.lengthMicrons(key::meshfix_maximum_resolution);
+    p.simplify_deviation_um = s.lengthMicrons(key::meshfix_maximum_deviation);
     p.z_um = z;
     p.first_layer = layer == 0;
     const Key<SettingUnit::Text> pattern_key =
@@ -424,6 +442,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
     out.walls.resize(layers.size());
     out.inner_areas.resize(layers.size());
     out.wall_gaps.resize(layers.size());
+    out.outline_gaps.resize(layers.size());
     std::vector<Paths> top_reference(layers.size()), bottom_reference(layers.size()),
         roofing_reference(layers.size());
     const SkinReferences refs = skinReferences(settings);
@@ -462,6 +481,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
         bottom_reference[i] = std::move(walls.bottom_reference);
         roofing_reference[i] = std::move(walls.roofing_reference);
         out.wall_gaps[i] = std::move(walls.perimeter_gaps);
+        out.outline_gaps[i] = std::move(walls.outline_gaps);
         progress.itemDone();
     });
     out.skin = computeSkinAreas(
@@ -522,7 +542,9 @@ std::vector<MeshLayerGroups> generateMeshPaths(MeshAreas areas, const std::vecto
                 return bridgeSkinFill(part, skin_params.skin, bridge, below);
             };
         }
-        result[i].skin = generateSkinPaths(skin.skin, skin.roofing, skin_params);
+        result[i].skin = outlineGapPaths(areas.outline_gaps[i], settings, skin_params, layer);
+        for (ExtrusionPath& path : generateSkinPaths(skin.skin, skin.roofing, skin_params))
+            result[i].skin.push_back(std::move(path));
         if (fillsPerimeterGaps(settings)) {
             for (ExtrusionPath& line : perimeterGapLines(
                      perimeterGaps(areas.wall_gaps[i], areas.inner_areas[i], skin, settings, layer),

@@ -15,6 +15,9 @@
 //             infill, combined layers) and printed by toolpaths/infill/MeshInfill.h (infill_pattern at
 //             infill_line_distance, its origin at the mesh's middle moved by infill_offset_x/_y);
 //             none when infill_line_distance is 0;
+//   outline gaps — with fill_outline_gaps, the gaps between the outline and the outer wall
+//             (toolpaths/walls/OutlineGaps.h), first in the skin group, in the perimeter gaps' style
+//             with the outer wall's extruder;
 //   ironing — with ironing_enabled, the layer's top surface (toolpaths/surface/Ironing.h), last.
 // With magic_mesh_surface_mode "surface" the outlines (and open pieces) are printed once along
 // themselves as outer wall, and nothing else.
@@ -71,6 +74,7 @@ struct MeshAreas {
     std::vector<MeshLayerGroups> walls;  ///< [layer] inner and outer walls only
     std::vector<Paths> inner_areas;      ///< [layer] inside the innermost wall
     std::vector<Paths> wall_gaps;        ///< [layer] the gaps between the walls
+    std::vector<Paths> outline_gaps;     ///< [layer] fill_outline_gaps: between outline and outer wall
     std::vector<SkinAreas> skin;         ///< [layer]
     std::vector<Paths> own_infill;       ///< [layer]
     std::vector<Paths> spiral_loops;     ///< [layer] magic_spiralize: the spiral's wall loops (else empty)

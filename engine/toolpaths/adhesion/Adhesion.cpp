@@ -33,9 +33,10 @@ Paths withoutEmptyHoles(const Paths& area) {
 }
 
 /// The islands of `models` that get a wall: as CuraEngine 4.13 drops a layer part too thin for its outer
-/// wall (wall_line_width_0 × initial_layer_line_width_factor on layer 0) before the brim is made.
+/// wall (wall_line_width_0 × initial_layer_line_width_factor on layer 0) before the brim is made — unless
+/// it fills outline gaps (fill_outline_gaps keeps such parts, the whole part a gap).
 Paths partsWithWalls(const Paths& models, const Settings& s) {
-    if (s.integer(key::wall_line_count) <= 0)
+    if (s.integer(key::wall_line_count) <= 0 || s.boolean(key::fill_outline_gaps))
         return models;
     const coord_um half_wall =
         static_cast<coord_um>(std::llround(double(s.lengthMicrons(key::wall_line_width_0)) *
@@ -60,6 +61,23 @@ Paths brimBase(const Paths& models, coord_um gap_um, bool outside_only) {
         loop = simplifyLoop(loop, 200, 50);
     std::erase_if(base, [](const Path& loop) { return loop.size() < 3; });
     return outside_only ? withoutEmptyHoles(base) : base;
+}
+
+/// What the skirt goes around, as CuraEngine 4.13 takes it: the approximate convex hull
+/// (DraftShield.h) of the models' outlines and of the other things on the layer (their points' convex
+/// hull here), closed by 20 µm and simplified (200 µm segments, 50 µm deviation) — the vertices that
+/// leaves along the hull's sides are what meshfix_maximum_resolution later removes or keeps.
+Paths skirtBase(const Paths& models, const Paths& extras) {
+    constexpr coord_um kJoinUm = 20;
+    Paths around = models;
+    if (!extras.empty())
+        around.push_back(convexHull(extras));
+    Paths base = approxConvexHull(around, 0);
+    base = offsetMiter(offsetMiter(base, kJoinUm, Loops::United), -kJoinUm, Loops::United);
+    for (Path& loop : base)
+        loop = simplifyLoop(loop, 200, 50);
+    std::erase_if(base, [](const Path& loop) { return loop.size() < 3; });
+    return base;
 }
 
 /// Loops around `base`: the first `first_um` outside it, then one width further out each; at
@@ -140,6 +158,19 @@ Path convexHull(const Paths& polygons) {
     return hull;
 }
 
+void simplifyAdhesion(const Settings& global, const std::vector<Settings>* extruders,
+                      std::vector<ExtrusionPath>& paths) {
+    const int nr = global.extruderIndex(key::adhesion_extruder_nr);
+    const Settings& s = trainSettings(global, extruders, nr < 0 ? 0 : nr);
+    const coord_um resolution = s.lengthMicrons(key::meshfix_maximum_resolution);
+    const coord_um deviation = s.lengthMicrons(key::meshfix_maximum_deviation);
+    for (ExtrusionPath& path : paths) {
+        if (path.closed && path.flows.empty())
+            path.points = simplifyLoop(path.points, resolution, deviation);
+    }
+    std::erase_if(paths, [](const ExtrusionPath& path) { return path.closed && path.points.size() < 3; });
+}
+
 AdhesionResult generateAdhesion(const AdhesionInput& in) {
     AdhesionResult result;
     const Settings& g = *in.global;
@@ -171,9 +202,7 @@ AdhesionResult generateAdhesion(const AdhesionInput& in) {
     }
     if (type != "skirt")
         result.warnings.push_back("adhesion_type '" + type + "' is not supported; printing a skirt instead");
-    Paths everything = in.models;
-    everything.insert(everything.end(), in.extras.begin(), in.extras.end());
-    Paths hull{convexHull(everything)};
+    Paths hull = skirtBase(in.models, in.extras);
     coord_um first = s.lengthMicrons(key::skirt_gap) + style.width_um / 2;
     if (!in.shields.empty()) {  // around the shields too, as CuraEngine
         hull = approxConvexHull(unionOf(offsetPolygons(hull, first - style.width_um), in.shields), 0);

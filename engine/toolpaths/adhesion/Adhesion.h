@@ -1,8 +1,9 @@
 #pragma once
 // Skirt and brim on the first layer (Cura's adhesion_type and its keys):
-//   skirt — loops around the convex hull of everything on layer 0 (models, support, prime tower):
-//           the first skirt_gap + w/2 outside it, then one line width further out each, at least
-//           skirt_line_count loops and more until they total skirt_brim_minimal_length;
+//   skirt — loops around the approximate convex hull (DraftShield.h) of everything on layer 0
+//           (models, support, prime tower), closed by 20 µm and simplified as CuraEngine 4.13 does: the first
+//           skirt_gap + w/2 outside it, then one line width further out each, at least skirt_line_count loops
+//           and more until they total skirt_brim_minimal_length;
 //   brim  — loops around the models' (and the support's) layer-0 outlines — without the islands too thin
 //           for an outer wall, which CuraEngine drops — grown by brim_gap (mitred),
 //           united, closed by 20 µm and simplified as CuraEngine 4.13 does (with brim_outside_only
@@ -17,7 +18,8 @@
 //           prints a skirt and the caller is warned.
 // w = skirt_brim_line_width × initial_layer_line_width_factor; speed skirt_brim_speed; flow
 // skirt_brim_material_flow × material_flow_layer_0; extruder adhesion_extruder_nr
-// (skirt_brim_extruder_nr when the machine has it); Feature Skirt. Outermost loop first.
+// (skirt_brim_extruder_nr when the machine has it); Feature Skirt. Outermost loop first. Every loop is
+// simplified afterwards with meshfix_maximum_resolution / _deviation (simplifyAdhesion).
 #include <string>
 #include <vector>
 
@@ -41,6 +43,13 @@ struct AdhesionResult {
 };
 
 AdhesionResult generateAdhesion(const AdhesionInput& input);
+
+/// As CuraEngine 4.13 finishes its skirt and brim lines (every extruder's skirt or brim, the support's
+/// and the prime tower's brim): each loop simplified with the adhesion extruder's
+/// meshfix_maximum_resolution / _deviation (slicing/OutlineCleanup.h simplifyLoop); a loop left with
+/// fewer than three vertices goes. Open paths are kept as they are.
+void simplifyAdhesion(const Settings& global, const std::vector<Settings>* extruders,
+                      std::vector<ExtrusionPath>& paths);
 
 /// Convex hull of all points of `polygons`, counter-clockwise (empty for no points).
 Path convexHull(const Paths& polygons);

@@ -1,9 +1,11 @@
 #include "toolpaths/adhesion/DraftShield.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "geometry/Clip.h"
 #include "geometry/PolygonOps.h"
+#include "slicing/OutlineCleanup.h"
 #include "toolpaths/adhesion/Adhesion.h"
 #include "toolpaths/core/FeatureStyle.h"
 #include "toolpaths/support/Support.h"
@@ -12,7 +14,6 @@ namespace mixengine {
 namespace {
 
 constexpr coord_um kHullOvershootUm = 100'000;  // as CuraEngine
-constexpr coord_um kSimplifyUm = 25;
 
 /// The number of layers the shield covers (from the first printed one), and whether it is limited.
 std::size_t shieldLayers(const Settings& g, std::size_t printed) {
@@ -42,6 +43,25 @@ Paths sampledOutlines(const DraftShieldInput& in, std::size_t layers) {
     if (!support.empty())
         all.push_back(convexHull(support));
     return all;
+}
+
+/// The shield simplified as CuraEngine 4.13 simplifies it (every extruder prints it): with the largest
+/// meshfix_maximum_resolution and the smallest meshfix_maximum_deviation of the extruders.
+Paths simplifiedForEveryExtruder(Paths shield, const Settings& g, const std::vector<Settings>* extruders) {
+    coord_um resolution = g.lengthMicrons(key::meshfix_maximum_resolution);
+    coord_um deviation = g.lengthMicrons(key::meshfix_maximum_deviation);
+    if (extruders != nullptr && !extruders->empty()) {
+        resolution = 0;
+        deviation = std::numeric_limits<coord_um>::max();
+        for (const Settings& e : *extruders) {
+            resolution = std::max(resolution, e.lengthMicrons(key::meshfix_maximum_resolution));
+            deviation = std::min(deviation, e.lengthMicrons(key::meshfix_maximum_deviation));
+        }
+    }
+    for (Path& loop : shield)
+        loop = simplifyLoop(loop, resolution, deviation);
+    std::erase_if(shield, [](const Path& loop) { return loop.size() < 3; });
+    return shield;
 }
 
 FeatureStyle shieldStyle(const DraftShieldInput& in, int layer) {
@@ -76,9 +96,9 @@ DraftShieldResult generateDraftShield(const DraftShieldInput& in) {
     const std::size_t layers = shieldLayers(g, printed);
     if (layers == 0)
         return out;
-    out.outline = cleanPolygons(approxConvexHull(sampledOutlines(in, std::min(layers, printed)),
-                                                 g.lengthMicrons(key::draft_shield_dist)),
-                                kSimplifyUm);
+    out.outline = simplifiedForEveryExtruder(approxConvexHull(sampledOutlines(in, std::min(layers, printed)),
+                                                              g.lengthMicrons(key::draft_shield_dist)),
+                                             g, in.extruders);
     const bool limited = g.text(key::draft_shield_height_limitation) == "limited";
     const std::size_t last =
         limited ? std::min(printed - 1, layers) : printed - 1;  // as CuraEngine: one more

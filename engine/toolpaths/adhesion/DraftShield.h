@@ -2,7 +2,8 @@
 // Draft shield (draft_shield_enabled), as CuraEngine 4.13 prints it: one wall around the whole
 // print, draft_shield_dist outside the approximate convex hull (toolpaths/adhesion/DraftShield.h
 // approxConvexHull) of the models and the support on every (500 µm / layer_height + 1)-th layer
-// of the shield's height; the same outline on every layer from the first up to
+// of the shield's height, simplified with the extruders' largest meshfix_maximum_resolution and smallest
+// meshfix_maximum_deviation; the same outline on every layer from the first up to
 // (draft_shield_height − layer_height_0) / layer_height + 1 with draft_shield_height_limitation
 // limited, else on every layer. Printed first on its layer (before the ooze shield's turn ends,
 // after the skirt or brim), by the first extruder printing on the layer, in the style of extruder

@@ -105,6 +105,17 @@ Paths separateLines(const Paths& area, const std::vector<LineSet>& sets, coord_u
     return out;
 }
 
+/// `loops` simplified as CuraEngine 4.13 simplifies an infill pattern's polygons (simplify_resolution_um /
+/// _deviation_um; both 0: kept); loops left with fewer than three vertices go.
+Paths simplifiedLoops(Paths loops, const InfillParams& p) {
+    if (p.simplify_resolution_um <= 0 && p.simplify_deviation_um <= 0)
+        return loops;
+    for (Path& loop : loops)
+        loop = simplifyLoop(loop, p.simplify_resolution_um, p.simplify_deviation_um);
+    std::erase_if(loops, [](const Path& loop) { return loop.size() < 3; });
+    return loops;
+}
+
 /// The cross fractal's curve cut to the area: the loops it encloses when connected, else its
 /// pieces inside, each segment a line of its own (as CuraEngine).
 Drawn crossPattern(const Paths& area, const InfillParams& p, bool connected) {
@@ -113,13 +124,7 @@ Drawn crossPattern(const Paths& area, const InfillParams& p, bool connected) {
         return {};
     Drawn drawn;
     if (connected) {
-        for (const Path& loop : intersectAll(area, {curve})) {
-            Path simple = p.simplify_resolution_um > 0 || p.simplify_deviation_um > 0
-                              ? simplifyLoop(loop, p.simplify_resolution_um, p.simplify_deviation_um)
-                              : loop;
-            if (simple.size() >= 3)
-                drawn.loops.push_back(std::move(simple));
-        }
+        drawn.loops = simplifiedLoops(intersectAll(area, {curve}), p);
         return drawn;
     }
     curve.push_back(curve.front());
@@ -160,7 +165,7 @@ Drawn drawPattern(const Paths& area, const InfillParams& p, bool connected) {
                 gyroidCurves(area, static_cast<coord_um>(kGyroidPeriodPerLineDistance * double(d)), p.z_um),
                 {}};
         case InfillPattern::Concentric:
-            return {{}, concentricLoops(area, p)};
+            return {{}, simplifiedLoops(concentricLoops(area, p), p)};
         case InfillPattern::Cross:
         case InfillPattern::Cross3d:
             if (p.cross != nullptr)

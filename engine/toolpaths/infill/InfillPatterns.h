@@ -11,7 +11,8 @@
 //   cubic             — angle, +120°, +240°, each d apart, shifted by z/√2 so cubes build up;
 //   tetrahedral, quarter_cubic — two directions of line pairs 2d apart, shifted with z;
 //   concentric        — loops d apart, the first d − w/2 inside the area (its centre line one line
-//                       distance from the edge of a line along the area's edge);
+//                       distance from the edge of a line along the area's edge), each inset from the
+//                       one before, then all simplified by simplify_resolution_um / _deviation_um;
 //   gyroid            — toolpaths/infill/GyroidInfill.h with period 2.41·d.
 //   cubicsubdiv       — the lines of an octree of cubes at this height (toolpaths/infill/SubdivCubes.h, the
 //                       caller's subdiv_lines) cut to
@@ -99,8 +100,9 @@ struct InfillParams {
     const Paths* subdiv_lines = nullptr;  ///< cubicsubdiv: the octree's lines at z_um (the caller's)
     const CrossFill* cross = nullptr;     ///< cross, cross_3d: the fractal (the caller's)
     coord_um pocket_um = 0;               ///< cross_3d: cross_infill_pocket_size (≤ 10: none)
-    coord_um simplify_resolution_um = 0;  ///< cross: the loops' meshfix_maximum_resolution (0: kept)
-    coord_um simplify_deviation_um = 0;   ///< cross: the loops' meshfix_maximum_deviation
+    coord_um simplify_resolution_um =
+        0;  ///< cross, concentric: the loops' meshfix_maximum_resolution (0: kept)
+    coord_um simplify_deviation_um = 0;  ///< cross, concentric: the loops' meshfix_maximum_deviation
     const std::vector<LightningTreeLines>* lightning_trees =
         nullptr;  ///< lightning: this layer's (the caller's)
 };

@@ -1,6 +1,7 @@
 #include "toolpaths/skin/SkinPaths.h"
 
 #include "geometry/PolygonOps.h"
+#include "slicing/OutlineCleanup.h"
 #include "toolpaths/infill/LineInfill.h"
 #include "toolpaths/infill/PolygonConnect.h"
 #include "toolpaths/skin/MonotonicOrder.h"
@@ -18,14 +19,27 @@ struct SkinOutput {
     std::uint32_t sequences = 0;
 };
 
-/// `count` loops inside `part`; `inner` becomes the area inside the innermost one (the whole part
-/// when none fits).
-Paths skinLoops(const Paths& part, int count, coord_um width_um, Paths& inner) {
+/// `loops` simplified with the params' resolution and deviation (both 0: kept); loops left with fewer
+/// than three vertices go.
+Paths simplified(Paths loops, const SkinPathParams& p) {
+    if (p.simplify_resolution_um <= 0 && p.simplify_deviation_um <= 0)
+        return loops;
+    for (Path& loop : loops)
+        loop = simplifyLoop(loop, p.simplify_resolution_um, p.simplify_deviation_um);
+    std::erase_if(loops, [](const Path& loop) { return loop.size() < 3; });
+    return loops;
+}
+
+/// `count` loops inside `part`, each simplified before the next is taken; `inner` becomes the area
+/// inside the innermost one (the whole part when none fits).
+Paths skinLoops(const Paths& part, const SkinPathParams& p, Paths& inner) {
+    const coord_um width_um = p.skin.style.width_um;
     Paths loops, last;
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < p.outline_count; ++i) {
         // `part` is an island of splitIslands' union: united.
-        Paths ring = i == 0 ? offsetMiter(part, -width_um / 2 + kInsetSlackUm, Loops::United)
-                            : offsetMiter(last, -width_um, Loops::United);
+        Paths ring = simplified(i == 0 ? offsetMiter(part, -width_um / 2 + kInsetSlackUm, Loops::United)
+                                       : offsetMiter(last, -width_um, Loops::United),
+                                p);
         if (ring.empty())
             break;
         loops.insert(loops.end(), ring.begin(), ring.end());
@@ -92,7 +106,7 @@ void appendFill(const Paths& area, const SkinFillParams& fill, const SkinPathPar
     if (area.empty())
         return;
     if (fill.pattern == InfillPattern::Concentric) {
-        Paths loops = concentricLoops(area, fill, params.gap_style ? &out.gaps : nullptr);
+        Paths loops = simplified(concentricLoops(area, fill, params.gap_style ? &out.gaps : nullptr), params);
         if (fill.connect_polygons)
             loops = connectLoops(loops, fill.style.width_um);
         appendStyledLoops(loops, fill.feature, fill.style, out.paths);
@@ -124,7 +138,7 @@ void appendSkinPart(const Paths& part, const Paths& roofing_area, const SkinPath
     // As CuraEngine: no loops around a concentric skin, unless its roofing is of another pattern.
     const bool loops_wanted = !skin_concentric || (roofed && !p.first_layer && !roof_concentric);
     Paths inner = part;
-    Paths loops = loops_wanted ? skinLoops(part, p.outline_count, p.skin.style.width_um, inner) : Paths{};
+    Paths loops = loops_wanted ? skinLoops(part, p, inner) : Paths{};
     Paths roof_fill = roofed ? intersectAll(inner, roofing_area) : Paths{};
     Paths skin_fill = roofed ? differenceOf(inner, roofing_area) : inner;
     if (!loops.empty() && skin_fill.empty() && !roof_fill.empty() && roof_concentric && !p.first_layer) {

@@ -2,7 +2,8 @@
 // The lines that fill one layer's skin, as CuraEngine 4.13 prints each skin part (island of the
 // skin area), in this order:
 //   1. `outline_count` loops (skin_outline_count) in the skin style, the first half a line width
-//      less 10 µm inside the part, each further one a line width further in; none when the skin
+//      less 10 µm inside the part, each further one a line width further in (each simplified before
+//      the next is taken, meshfix_maximum_resolution / _deviation); none when the skin
 //      pattern is concentric (unless the part has roofing of another pattern above layer 0). The
 //      fill area is the innermost loop less half a line width (the whole part when not even the
 //      first loop fits);
@@ -43,6 +44,10 @@ struct SkinFillParams {
 
 struct SkinPathParams {
     int outline_count = 1;
+    /// meshfix_maximum_resolution / _deviation: each skin loop simplified before the next is taken, and
+    /// a concentric fill's loops once all are taken (0 and 0: kept), as CuraEngine 4.13.
+    coord_um simplify_resolution_um = 0;
+    coord_um simplify_deviation_um = 0;
     coord_um z_um = 0;
     bool first_layer = false;
     SkinFillParams skin;     ///< the pattern of this layer (top_bottom_pattern_0 on layer 0)

@@ -6,6 +6,7 @@
 #include "geometry/PolygonOps.h"
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/core/FeatureStyle.h"
+#include "toolpaths/walls/OutlineGaps.h"
 #include "toolpaths/walls/WallOrder.h"
 
 namespace mixengine {
@@ -183,6 +184,9 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     result.walls = wallPaths(regions, depths, params);
     if (params.perimeter_gaps)
         result.perimeter_gaps = gapsBetweenWalls(regions, params);
+    if (params.outline_gaps)
+        result.outline_gaps = outlineGaps(outlines, regions.empty() ? Paths{} : regions[0],
+                                          params.outer_width_um, params.outer_inset_um);
     result.inner_area = region.empty() ? Paths{} : offsetMiter(region, -last_half, kRegionLoops);
     result.top_reference = referenceRegion(parts, regions, depths, params.top_reference);
     result.bottom_reference = params.bottom_reference == params.top_reference

@@ -44,6 +44,9 @@ struct WallParams {
     /// less the pieces under 2 outer wall widths squared with `filter_tiny_gaps`.
     bool perimeter_gaps = false;
     bool filter_tiny_gaps = true;
+    /// fill_outline_gaps: find the gaps between the outline and the outer wall (WallResult::outline_gaps,
+    /// toolpaths/walls/OutlineGaps.h).
+    bool outline_gaps = false;
     /// meshfix_maximum_resolution / _deviation: each wall's centre region is simplified as the
     /// outlines are (slicing/OutlineCleanup.h) before the next wall is inset from it; 0 and 0 = not.
     coord_um simplify_resolution_um = 0;
@@ -64,6 +67,8 @@ struct WallResult {
     /// wall k+1's centre region grown by half its width — where a part lacks wall k+1, all of its
     /// inside (WallParams::perimeter_gaps).
     Paths perimeter_gaps;
+    /// The gaps between the outline and the outer wall (WallParams::outline_gaps; OutlineGaps.h).
+    Paths outline_gaps;
 };
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params);

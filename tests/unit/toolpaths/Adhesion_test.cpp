@@ -110,6 +110,29 @@ TEST(Adhesion, SkirtGoesAroundTheHullOfEverything) {
     EXPECT_EQ(box.bottom, 22'200);
 }
 
+TEST(Adhesion, LoopsAreSimplifiedWithTheMaximumResolution) {
+    // A skirt around a square has round corners of 10 µm arcs' segments: 0.5 mm segments keep fewer
+    // of their vertices than 0.01 mm ones (CuraEngine 4.13 simplifies skirt and brim so).
+    const ResolvedMachine fine = test::fdmMachine({{"adhesion_type", "skirt"},
+                                                   {"skirt_gap", "3"},
+                                                   {"skirt_brim_minimal_length", "0"},
+                                                   {"meshfix_maximum_resolution", "0.01"}});
+    const ResolvedMachine coarse = test::fdmMachine({{"adhesion_type", "skirt"},
+                                                     {"skirt_gap", "3"},
+                                                     {"skirt_brim_minimal_length", "0"},
+                                                     {"meshfix_maximum_resolution", "2"},
+                                                     {"meshfix_maximum_deviation", "0.1"}});
+    std::vector<ExtrusionPath> a =
+        generateAdhesion({&fine.global, &fine.extruders, {square(0, 0, 20'000)}, {}, {}}).paths;
+    std::vector<ExtrusionPath> b = a;
+    simplifyAdhesion(fine.global, &fine.extruders, a);
+    simplifyAdhesion(coarse.global, &coarse.extruders, b);
+    ASSERT_EQ(a.size(), 1U);
+    ASSERT_EQ(b.size(), 1U);
+    EXPECT_LT(b[0].points.size(), a[0].points.size());
+    EXPECT_GE(b[0].points.size(), 4U);
+}
+
 TEST(Adhesion, NoneAndRaft) {
     EXPECT_TRUE(adhesion({{"adhesion_type", "none"}}, {square(0, 0, 10'000)}).paths.empty());
     // A raft is no skirt: toolpaths/adhesion/Raft.h builds it, nothing here and no warning.

