@@ -56,8 +56,13 @@ Paths PlaneCutter::cut(const Mesh& mesh, std::span<const std::uint32_t> facets, 
         const Face& face = mesh.faces[f];
         const auto segment = cutFacet(mesh.vertices[face.v[0]], mesh.vertices[face.v[1]],
                                       mesh.vertices[face.v[2]], plane_z, rule);
-        if (segment)
-            segments_.push_back(*segment);
+        if (!segment)
+            continue;
+        segments_.push_back(*segment);
+        if (!options.curaengine_crossings) {
+            segments_.back().printed_from = segment->from;
+            segments_.back().printed_to = segment->to;
+        }
     }
     segment_count_ += segments_.size();
     StitchResult stitched = stitcher_.stitch(segments_, options.max_gap_um);
