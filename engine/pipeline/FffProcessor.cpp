@@ -282,7 +282,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
     options.min_circumference_um = cleanup.minimum_circumference_um;
     options.simplify_resolution_um = cleanup.maximum_resolution_um;
     options.simplify_deviation_um = cleanup.maximum_deviation_um;
-    options.curaengine_crossings = true;
+    options.curaengine_crossings = simplify;  // prints follow CuraEngine; `layers` shows the exact cuts
     for (const SceneMesh& m : group.meshes) {
         SliceOptions own = options;
         own.union_all = m.settings.boolean(key::meshfix_union_all);
