@@ -278,6 +278,11 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
                          : computeLayerHeights(max_z, s.lengthMicrons(key::layer_height_0),
                                                s.lengthMicrons(key::layer_height));
     options.threads = threads;
+    const OutlineCleanupParams cleanup = outlineCleanupParams(s, simplify);
+    options.min_circumference_um = cleanup.minimum_circumference_um;
+    options.simplify_resolution_um = cleanup.maximum_resolution_um;
+    options.simplify_deviation_um = cleanup.maximum_deviation_um;
+    options.curaengine_crossings = simplify;  // prints follow CuraEngine; `layers` shows the exact cuts
     for (const SceneMesh& m : group.meshes) {
         SliceOptions own = options;
         own.union_all = m.settings.boolean(key::meshfix_union_all);
@@ -285,9 +290,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
         own.max_gap_um = stitchDistanceUm(m.settings);
         sliced.meshes.push_back(sliceMesh(m.mesh, sliced.heights, own, log));
     }
-    const OutlineCleanupParams cleanup = outlineCleanupParams(s, simplify);
-    for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {
-        cleanOutlines(sliced.meshes[m], cleanup, threads);
+    for (std::size_t m = 0; m < sliced.meshes.size(); ++m) {  // outlines cleaned while slicing (options)
         const Settings& own = group.meshes[m].settings;
         if (own.boolean(key::meshfix_union_all_remove_holes))
             removeHoles(sliced.meshes[m], threads);

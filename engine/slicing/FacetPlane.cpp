@@ -61,7 +61,27 @@ Point2 crossing(const Point3& a, const Point3& b, bool a_above, coord_um plane_z
     return a_above ? interpolateEdge(b, a, plane_z) : interpolateEdge(a, b, plane_z);
 }
 
+/// CuraEngine's interpolation of one coordinate at height `z` between (z0, c0) and (z1, c1).
+coord_um loneInterpolate(coord_um z, coord_um z0, coord_um z1, coord_um c0, coord_um c1) {
+    const coord_um dz = z1 - z0;
+    coord_um numerator = (c1 - c0) * (z - z0);
+    numerator += numerator > 0 ? dz / 4 : -dz / 4;
+    return c0 + numerator / dz;
+}
+
+/// A vertex on the plane counts as above it (CountAsAbove); CuraEngine lifts it by 1 µm to get there.
+Point3 lifted(const Point3& p, coord_um plane_z, OnPlaneRule rule) {
+    if (rule == OnPlaneRule::CountAsAbove && p.z == plane_z)
+        return {p.x, p.y, p.z + 1};
+    return p;
+}
+
 }  // namespace
+
+Point2 loneVertexCrossing(const Point3& lone, const Point3& other, coord_um plane_z) {
+    return {loneInterpolate(plane_z, lone.z, other.z, lone.x, other.x),
+            loneInterpolate(plane_z, lone.z, other.z, lone.y, other.y)};
+}
 
 FacetPlaneCase classifyFacetPlane(int sign_v1, int sign_v2, int sign_v3) {
     const std::array<int, 3> signs{sign_v1, sign_v2, sign_v3};
@@ -114,9 +134,12 @@ std::optional<FacetSegment> cutFacet(const Point3& v1, const Point3& v2, const P
     const Point2 on_prev_edge = crossing(*v[prev], *v[odd], !odd_is_above, plane_z);  // edge (prev, odd)
     if (on_next_edge == on_prev_edge)
         return std::nullopt;  // single-vertex touch (Rule ①)
+    const Point3 lone = lifted(*v[odd], plane_z, rule);
+    const Point2 printed_next = loneVertexCrossing(lone, lifted(*v[next], plane_z, rule), plane_z);
+    const Point2 printed_prev = loneVertexCrossing(lone, lifted(*v[prev], plane_z, rule), plane_z);
     if (odd_is_above)
-        return FacetSegment{on_next_edge, on_prev_edge};
-    return FacetSegment{on_prev_edge, on_next_edge};
+        return FacetSegment{on_next_edge, on_prev_edge, printed_next, printed_prev};
+    return FacetSegment{on_prev_edge, on_next_edge, printed_prev, printed_next};
 }
 
 }  // namespace mixengine

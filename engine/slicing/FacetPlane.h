@@ -70,10 +70,16 @@ enum class OnPlaneRule : std::uint8_t {
     CountAsBelow,  ///< cut at z0 + ε: a bottom face in the plane counts, a top face does not
 };
 
-/// A directed cut segment in microns (solid on the left for outward-facing facets).
+/// A directed cut segment in microns (solid on the left for outward-facing facets). `from` / `to`
+/// are the exact crossings both facets at an edge agree on (for chaining); `printed_from` /
+/// `printed_to` are the same crossings as CuraEngine 4.13's slicer computes them (interpolated from
+/// the facet's lone vertex with its rounding, a vertex on the plane lifted by 1 µm), which become
+/// the outline's vertices. They differ by at most a few microns.
 struct FacetSegment {
     Point2 from;
     Point2 to;
+    Point2 printed_from = from;
+    Point2 printed_to = to;
 };
 
 /// The crossing of the edge (a, b) with the plane, where `lower` is strictly below and `upper` on
@@ -81,6 +87,11 @@ struct FacetSegment {
 /// interpolation with rounding to the nearest micron (halves away from zero); an end point on the
 /// plane is returned as is. Coordinates must lie within ±kMaxSliceCoordinateUm.
 Point2 interpolateEdge(const Point3& lower, const Point3& upper, coord_um plane_z);
+
+/// CuraEngine 4.13's crossing of the edge from `lone` (the vertex alone on its side) to `other`:
+/// interpolated from `lone`, with the quotient rounded by adding a quarter of the height
+/// difference and truncating, as its slicer does. The heights must differ.
+Point2 loneVertexCrossing(const Point3& lone, const Point3& other, coord_um plane_z);
 
 /// The segment the facet (v1, v2, v3) contributes to the cut at plane_z, if any (see above).
 std::optional<FacetSegment> cutFacet(const Point3& v1, const Point3& v2, const Point3& v3, coord_um plane_z,

@@ -73,17 +73,20 @@ std::int32_t SegmentStitcher::takeEndAt(const Point2& came_from, const Point2& p
 }
 
 bool SegmentStitcher::extendForward(StitchedPath& path, const std::vector<FacetSegment>& segments) {
-    while (!(path.points.back() == path.points.front())) {
-        const std::int32_t id =
-            takeEndAt(path.points[path.points.size() - 2], path.points.back(), true, segments);
+    while (!(exact_.back() == exact_.front())) {
+        const std::int32_t id = takeEndAt(exact_[exact_.size() - 2], exact_.back(), true, segments);
         if (id == PointMultimap::kNone)
             return false;
         const FacetSegment& segment = segments[segmentOf(id)];
         const bool along = isStartEnd(id);
         (along ? path.along_facets_um : path.against_facets_um) += segmentLength(segment);
-        path.points.push_back(along ? segment.to : segment.from);
+        exact_.push_back(along ? segment.to : segment.from);
+        path.points.push_back(along ? segment.printed_to : segment.printed_from);
     }
-    path.points.pop_back();  // the closing point repeats the first
+    // CuraEngine keeps the closing point (the first segment's start as computed from its facet, the
+    // last one's end as computed from its own); only an exact repeat goes.
+    if (path.points.back() == path.points.front())
+        path.points.pop_back();
     return true;
 }
 
@@ -122,10 +125,13 @@ StitchResult SegmentStitcher::stitch(const std::vector<FacetSegment>& segments, 
         if (used_[i])
             continue;
         used_[i] = 1;
-        StitchedPath path{{segments[i].from, segments[i].to}, segmentLength(segments[i]), 0.0};
+        StitchedPath path{
+            {segments[i].printed_from, segments[i].printed_to}, segmentLength(segments[i]), 0.0};
+        exact_.assign({segments[i].from, segments[i].to});
         if (extendForward(path, segments)) {
             result.loops.push_back(std::move(path));
         } else {
+            path.points = exact_;  // open pieces are joined on the exact points
             extendBackward(path, segments);
             open_pieces.push_back(std::move(path));
         }

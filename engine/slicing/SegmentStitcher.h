@@ -11,6 +11,10 @@
 //     come out as separate loops.
 //   - open chains whose ends lie within max_gap_um of each other are then joined, nearest ends
 //     first (slicing/GapCloser.h); what stays open is returned in `open_polylines`.
+//   - a closed loop's vertices are the segments' printed points (CuraEngine's rounding, see
+//     FacetSegment), in CuraEngine's order: the first segment's start, then every segment's end
+//     (the closing vertex stays unless it repeats the first exactly); open pieces keep the exact
+//     points.
 //   - every loop records how much of its length follows the facets' direction and how much runs
 //     against it; the outline builder uses this to tell a solid nested in a solid from a cavity.
 #include <vector>
@@ -23,7 +27,7 @@ namespace mixengine {
 
 /// A chain of cut segments in microns.
 struct StitchedPath {
-    Path points;                   ///< for a loop: closed, first point not repeated
+    Path points;                   ///< for a loop: closed (see above for the closing vertex)
     double along_facets_um = 0;    ///< length of segments traversed in their facet direction
     double against_facets_um = 0;  ///< length of segments traversed against it
 };
@@ -56,6 +60,7 @@ class SegmentStitcher {
 
     PointMultimap ends_;
     std::vector<char> used_;
+    Path exact_;  ///< the exact points of the chain being extended forward
     Path prefix_;
 };
 

@@ -44,6 +44,15 @@ struct SliceOptions {
     bool union_all = true;
     /// meshfix_keep_open_polygons: open pieces closed by their chord and kept in the outlines too.
     bool keep_open_polygons = false;
+    /// What CuraEngine 4.13's slicer does to each loop before the loops are combined: loops shorter
+    /// than this go (lengths summed in whole microns, as CuraEngine), then every loop is simplified
+    /// (slicing/OutlineCleanup.h simplifyLoop) with this resolution and deviation. All 0: raw cuts.
+    coord_um min_circumference_um = 0;
+    /// Outline vertices where CuraEngine 4.13's slicer puts them (FacetSegment's printed points:
+    /// its rounding, a vertex on the plane lifted by 1 µm); off: the exact crossings.
+    bool curaengine_crossings = false;
+    coord_um simplify_resolution_um = 0;
+    coord_um simplify_deviation_um = 0;
 };
 
 struct SlicedLayer {

@@ -193,3 +193,27 @@ TEST(FacetPlaneInterpolation, BothFacetsOfAnEdgeComputeTheSamePoint) {
 
 }  // namespace
 }  // namespace mixengine
+
+namespace mixengine {
+namespace {
+
+TEST(FacetPlanePrinted, LoneVertexCrossingRoundsTowardsTheLoneVertexAsCuraEngine) {
+    // Exact crossings at x = 333.3 and 666.7: CuraEngine's quarter offset and truncation give 333 and 666.
+    EXPECT_EQ(loneVertexCrossing({0, 0, 0}, {1000, 0, 3000}, 1000), (Point2{333, 0}));
+    EXPECT_EQ(loneVertexCrossing({0, 0, 3000}, {1000, 0, 0}, 1000), (Point2{666, 0}));
+    EXPECT_EQ(interpolateEdge({1000, 0, 0}, {0, 0, 3000}, 1000), (Point2{667, 0}));
+}
+
+TEST(FacetPlanePrinted, AVertexOnThePlaneIsLiftedByOneMicron) {
+    // V1 on the plane counts as above (lifted to z 1001); V2 is alone below at z 0, V3 above.
+    const auto segment =
+        cutFacet({0, 0, 1000}, {1000, 0, 0}, {0, 1000, 2000}, 1000, OnPlaneRule::CountAsAbove);
+    ASSERT_TRUE(segment.has_value());
+    EXPECT_EQ(segment->from, (Point2{0, 0}));  // exact: the vertex itself
+    // From (1000, 0, 0) to (0, 0, 1001): 1000 − (1000·1000 + 250) / 1001 = 1000 − 999 = 1 (the segment starts
+    // there).
+    EXPECT_EQ(segment->printed_from, (Point2{1, 0}));
+}
+
+}  // namespace
+}  // namespace mixengine
