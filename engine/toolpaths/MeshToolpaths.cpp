@@ -260,12 +260,18 @@ Paths outerWallLoops(const Paths& part, const MeshLayerGroups& walls) {
     return loops;
 }
 
+/// (The comb areas below are built from Clipper results only — parts, wall loops united first, offsets,
+/// differences — so their offsets take them as united: Loops::United, no union pass before each.)
+
 /// `area` with the narrow pieces of `outline` that it leaves out (those of `outline` that an
 /// opening by `distance_um` removes), as CuraEngine 4.13 fills in where a wall is missing.
 Paths withNarrowPieces(const Paths& area, const Paths& outline, coord_um distance_um, coord_um grow_um) {
     const Paths missing =
-        differenceOf(outline, offsetMiter(offsetMiter(outline, -(distance_um + 5)), distance_um + 10));
-    return offsetMiter(unionOf(offsetMiter(area, grow_um), offsetMiter(missing, grow_um)), -grow_um);
+        differenceOf(outline, offsetMiter(offsetMiter(outline, -(distance_um + 5), Loops::United),
+                                          distance_um + 10, Loops::United));
+    return offsetMiter(
+        unionOf(offsetMiter(area, grow_um, Loops::United), offsetMiter(missing, grow_um, Loops::United)),
+        -grow_um, Loops::United);
 }
 
 /// The outer boundary of one part's wall combing region, as CuraEngine 4.13's noskin comb
@@ -278,7 +284,8 @@ Paths wallCombOuter(const Paths& part, const MeshLayerGroups& walls, coord_um wi
         return part;
     const bool inner = anyStartsIn(walls.inner_walls, part);
     const coord_um to_outline = inner ? width_0_um : width_0_um * 3 / 4;
-    const Paths outer = offsetMiter(unionOf(loops), -(inner ? width_0_um / 2 : width_0_um / 4));
+    const Paths outer =
+        offsetMiter(unionOf(loops), -(inner ? width_0_um / 2 : width_0_um / 4), Loops::United);
     if (outer.size() == part.size())
         return outer;
     return withNarrowPieces(outer, part, to_outline, to_outline / 2 + 10);
@@ -300,12 +307,14 @@ Paths innermostWallsArea(const Paths& part, const MeshLayerGroups& walls, coord_
     if (!anyStartsIn(walls.inner_walls, part))
         return outer;
     const coord_um spacing = half_0 + half_x;
-    const Paths second = offsetMiter(outer, -spacing);
-    const Paths missing = differenceOf(outer, offsetMiter(offsetMiter(outer, -(spacing + 5)), spacing + 10));
+    const Paths second = offsetMiter(outer, -spacing, Loops::United);
+    const Paths missing = differenceOf(
+        outer, offsetMiter(offsetMiter(outer, -(spacing + 5), Loops::United), spacing + 10, Loops::United));
     if (missing.empty())
         return second;
-    const Paths merged = unionOf(offsetMiter(second, 2 * half_x), offsetMiter(missing, half_0));
-    return intersectAll(offsetMiter(merged, -std::min(half_0, half_x)), outer);
+    const Paths merged =
+        unionOf(offsetMiter(second, 2 * half_x, Loops::United), offsetMiter(missing, half_0, Loops::United));
+    return intersectAll(offsetMiter(merged, -std::min(half_0, half_x), Loops::United), outer);
 }
 
 /// Every part's innermostWallsArea.
@@ -330,7 +339,7 @@ Paths noSkinCombArea(const MeshLayerGroups& walls, const Paths& inner_area, cons
         const Paths piece = wallCombOuter(part, walls, width_0_um);
         outer.insert(outer.end(), piece.begin(), piece.end());
     }
-    return unionOf(areas.infill, differenceOf(outer, offsetMiter(inner_area, -10)));
+    return unionOf(areas.infill, differenceOf(outer, offsetMiter(inner_area, -10, Loops::United)));
 }
 
 /// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "off"; the sliced
