@@ -202,4 +202,13 @@ void removeHoles(std::vector<SlicedLayer>& layers, int threads) {
     });
 }
 
+Paths simplifyLoops(Paths loops, coord_um maximum_resolution_um, coord_um maximum_deviation_um) {
+    if (maximum_resolution_um <= 0 && maximum_deviation_um <= 0)
+        return loops;
+    for (Path& loop : loops)
+        loop = simplifyLoop(loop, maximum_resolution_um, maximum_deviation_um);
+    std::erase_if(loops, [](const Path& loop) { return loop.size() < 3; });
+    return loops;
+}
+
 }  // namespace mixengine

@@ -33,6 +33,10 @@ struct OutlineCleanupParams {
 /// One closed loop, simplified as described above (fewer than three vertices: none left).
 Path simplifyLoop(const Path& loop, coord_um maximum_resolution_um, coord_um maximum_deviation_um);
 
+/// Every loop of `loops` simplified (simplifyLoop); loops left with fewer than three vertices go.
+/// Both limits 0 or less: `loops` as given.
+Paths simplifyLoops(Paths loops, coord_um maximum_resolution_um, coord_um maximum_deviation_um);
+
 /// Whether the closed loop is shorter than `length_um`, its sides' lengths rounded down to whole
 /// microns before they are summed (CuraEngine 4.13's test for minimum_polygon_circumference).
 bool loopShorterThan(const Path& loop, coord_um length_um);

@@ -108,12 +108,7 @@ Paths separateLines(const Paths& area, const std::vector<LineSet>& sets, coord_u
 /// `loops` simplified as CuraEngine 4.13 simplifies an infill pattern's polygons (simplify_resolution_um /
 /// _deviation_um; both 0: kept); loops left with fewer than three vertices go.
 Paths simplifiedLoops(Paths loops, const InfillParams& p) {
-    if (p.simplify_resolution_um <= 0 && p.simplify_deviation_um <= 0)
-        return loops;
-    for (Path& loop : loops)
-        loop = simplifyLoop(loop, p.simplify_resolution_um, p.simplify_deviation_um);
-    std::erase_if(loops, [](const Path& loop) { return loop.size() < 3; });
-    return loops;
+    return simplifyLoops(std::move(loops), p.simplify_resolution_um, p.simplify_deviation_um);
 }
 
 /// The cross fractal's curve cut to the area: the loops it encloses when connected, else its

@@ -22,12 +22,7 @@ struct SkinOutput {
 /// `loops` simplified with the params' resolution and deviation (both 0: kept); loops left with fewer
 /// than three vertices go.
 Paths simplified(Paths loops, const SkinPathParams& p) {
-    if (p.simplify_resolution_um <= 0 && p.simplify_deviation_um <= 0)
-        return loops;
-    for (Path& loop : loops)
-        loop = simplifyLoop(loop, p.simplify_resolution_um, p.simplify_deviation_um);
-    std::erase_if(loops, [](const Path& loop) { return loop.size() < 3; });
-    return loops;
+    return simplifyLoops(std::move(loops), p.simplify_resolution_um, p.simplify_deviation_um);
 }
 
 /// `count` loops inside `part`, each simplified before the next is taken; `inner` becomes the area

@@ -24,12 +24,7 @@ coord_um insetStepUm(const WallParams& p, int i) {
 /// Every loop simplified as the outlines are (meshfix_maximum_resolution / _deviation); loops
 /// left with fewer than three vertices go.
 Paths simplifiedRegion(Paths region, const WallParams& p) {
-    if (p.simplify_resolution_um <= 0 && p.simplify_deviation_um <= 0)
-        return region;
-    for (Path& loop : region)
-        loop = simplifyLoop(loop, p.simplify_resolution_um, p.simplify_deviation_um);
-    std::erase_if(region, [](const Path& loop) { return loop.size() < 3; });
-    return region;
+    return simplifyLoops(std::move(region), p.simplify_resolution_um, p.simplify_deviation_um);
 }
 
 /// The wall centre regions are offsets, then simplified (meshfix_maximum_resolution / _deviation),

@@ -50,6 +50,17 @@ TEST(OutlineCleanup, CollinearPointsGoLongEdgesStay) {
     EXPECT_EQ(simplifyLoop(notch, 500, 25).size(), notch.size());
 }
 
+// simplifyLoops: each loop as simplifyLoop makes it; a loop left with under three vertices goes; limits 0: as
+// given.
+TEST(OutlineCleanup, SimplifyLoopsSimplifiesEachAndDropsDegenerateOnes) {
+    const Path square{{0, 0}, {5'000, 0}, {10'000, 0}, {10'000, 10'000}, {0, 10'000}};
+    const Path sliver{{0, 0}, {10'000, 0}};  // under three vertices
+    const Paths simplified = simplifyLoops({square, sliver}, 500, 25);
+    ASSERT_EQ(simplified.size(), 1U);
+    EXPECT_EQ(simplified[0], simplifyLoop(square, 500, 25));
+    EXPECT_EQ(simplifyLoops({square, sliver}, 0, 0), (Paths{square, sliver}));
+}
+
 TEST(OutlineCleanup, SmallLoopsAreDropped) {
     std::vector<SlicedLayer> layers(1);
     layers[0].outlines = {circle(10'000, 64), circle(100, 16)};  // circumference 0.63 mm < 1 mm
