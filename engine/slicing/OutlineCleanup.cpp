@@ -180,20 +180,6 @@ Path simplifyLoop(const Path& loop, coord_um maximum_resolution_um, coord_um max
     return walk.kept;
 }
 
-void cleanOutlines(std::vector<SlicedLayer>& layers, const OutlineCleanupParams& params, int threads) {
-    parallelFor(layers.size(), threads, [&](std::size_t i) {
-        Paths& outlines = layers[i].outlines;
-        std::erase_if(outlines, [&](const Path& p) {
-            return loopLengthUm(p) < double(params.minimum_circumference_um);
-        });
-        if (params.maximum_resolution_um <= 0 && params.maximum_deviation_um <= 0)
-            return;
-        for (Path& loop : outlines)
-            loop = simplifyLoop(loop, params.maximum_resolution_um, params.maximum_deviation_um);
-        std::erase_if(outlines, [](const Path& loop) { return loop.size() < 3; });
-    });
-}
-
 void removeHoles(std::vector<SlicedLayer>& layers, int threads) {
     parallelFor(layers.size(), threads, [&](std::size_t i) {
         Paths& outlines = layers[i].outlines;

@@ -1,7 +1,6 @@
 #pragma once
 // What CuraEngine 4.13's slicer does to a layer's loops (prints run it on every stitched loop before
-// the loops are combined, slicing/PlaneCutter.h with SliceOptions; cleanOutlines does it on finished
-// outlines):
+// the loops are combined, slicing/PlaneCutter.h with SliceOptions):
 //   - loops shorter than minimum_polygon_circumference are dropped (loopShorterThan);
 //   - every loop is simplified with a fixed 10 µm resolution and 5 µm deviation
 //     (slicing/SlicingParams.h); meshfix_maximum_resolution / _deviation act on each wall
@@ -40,9 +39,6 @@ Paths simplifyLoops(Paths loops, coord_um maximum_resolution_um, coord_um maximu
 /// Whether the closed loop is shorter than `length_um`, its sides' lengths rounded down to whole
 /// microns before they are summed (CuraEngine 4.13's test for minimum_polygon_circumference).
 bool loopShorterThan(const Path& loop, coord_um length_um);
-
-/// Every outline of every layer (in parallel over layers).
-void cleanOutlines(std::vector<SlicedLayer>& layers, const OutlineCleanupParams& params, int threads);
 
 double loopLengthUm(const Path& loop);
 

@@ -61,12 +61,13 @@ TEST(OutlineCleanup, SimplifyLoopsSimplifiesEachAndDropsDegenerateOnes) {
     EXPECT_EQ(simplifyLoops({square, sliver}, 0, 0), (Paths{square, sliver}));
 }
 
-TEST(OutlineCleanup, SmallLoopsAreDropped) {
-    std::vector<SlicedLayer> layers(1);
-    layers[0].outlines = {circle(10'000, 64), circle(100, 16)};  // circumference 0.63 mm < 1 mm
-    cleanOutlines(layers, OutlineCleanupParams{}, 2);
-    ASSERT_EQ(layers[0].outlines.size(), 1U);
-    EXPECT_NEAR(loopLengthUm(layers[0].outlines[0]), 2 * std::numbers::pi * 10'000, 100);
+TEST(OutlineCleanup, SmallLoopsAreShorterThanTheMinimumCircumference) {
+    EXPECT_TRUE(loopShorterThan(circle(100, 16), 1'000));  // circumference 0.63 mm < 1 mm
+    EXPECT_FALSE(loopShorterThan(circle(10'000, 64), 1'000));
+    // A 250 µm square is 1000 µm round: not shorter than 1000, shorter than 1001.
+    const Path square{{0, 0}, {250, 0}, {250, 250}, {0, 250}};
+    EXPECT_FALSE(loopShorterThan(square, 1'000));
+    EXPECT_TRUE(loopShorterThan(square, 1'001));
 }
 
 TEST(OutlineCleanup, RemoveHolesFillsThemAndMergesWhatWasInside) {
