@@ -278,11 +278,7 @@ SlicedGroup sliceGroup(const SceneGroup& group, int threads, Log& log, bool simp
                          : computeLayerHeights(max_z, s.lengthMicrons(key::layer_height_0),
                                                s.lengthMicrons(key::layer_height));
     options.threads = threads;
-    const OutlineCleanupParams cleanup = outlineCleanupParams(s, simplify);
-    options.min_circumference_um = cleanup.minimum_circumference_um;
-    options.simplify_resolution_um = cleanup.maximum_resolution_um;
-    options.simplify_deviation_um = cleanup.maximum_deviation_um;
-    options.curaengine_crossings = simplify;  // prints follow CuraEngine; `layers` shows the exact cuts
+    setOutlineCleanup(options, s, simplify);  // prints follow CuraEngine; `layers` shows the exact cuts
     for (const SceneMesh& m : group.meshes) {
         SliceOptions own = options;
         own.union_all = m.settings.boolean(key::meshfix_union_all);

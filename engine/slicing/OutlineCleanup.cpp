@@ -14,10 +14,6 @@
 namespace mixengine {
 namespace {
 
-double lengthUm(const Point2& a, const Point2& b) {
-    return distanceUm(b, a);
-}
-
 // The simplification works in 64-bit integers as CuraEngine 4.13's does (its truncating divisions
 // decide which vertices go, so doubles would keep or drop others).
 
@@ -134,13 +130,6 @@ struct SimplifyWalk {
 };
 
 }  // namespace
-
-double loopLengthUm(const Path& loop) {
-    double sum = 0;
-    for (std::size_t i = 0; i < loop.size(); ++i)
-        sum += lengthUm(loop[i], loop[(i + 1) % loop.size()]);
-    return sum;
-}
 
 bool loopShorterThan(const Path& loop, coord_um length_um) {
     std::int64_t sum = 0;

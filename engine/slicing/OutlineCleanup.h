@@ -23,12 +23,6 @@
 
 namespace mixengine {
 
-struct OutlineCleanupParams {
-    coord_um minimum_circumference_um = 1000;
-    coord_um maximum_resolution_um = 250;
-    coord_um maximum_deviation_um = 25;
-};
-
 /// One closed loop, simplified as described above (fewer than three vertices: none left).
 Path simplifyLoop(const Path& loop, coord_um maximum_resolution_um, coord_um maximum_deviation_um);
 
@@ -39,8 +33,6 @@ Paths simplifyLoops(Paths loops, coord_um maximum_resolution_um, coord_um maximu
 /// Whether the closed loop is shorter than `length_um`, its sides' lengths rounded down to whole
 /// microns before they are summed (CuraEngine 4.13's test for minimum_polygon_circumference).
 bool loopShorterThan(const Path& loop, coord_um length_um);
-
-double loopLengthUm(const Path& loop);
 
 /// meshfix_union_all_remove_holes: every layer's holes filled (the outer contours united), as
 /// CuraEngine 4.13 unites all loops turned the same way round.

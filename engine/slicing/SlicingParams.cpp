@@ -31,15 +31,14 @@ coord_um stitchDistanceUm(const Settings& mesh) {
     return normal ? kStitchUm : kSurfaceModeGapUm;
 }
 
-OutlineCleanupParams outlineCleanupParams(const Settings& group, bool simplify) {
-    OutlineCleanupParams cleanup;
-    cleanup.minimum_circumference_um = group.lengthMicrons(key::minimum_polygon_circumference);
+void setOutlineCleanup(SliceOptions& options, const Settings& group, bool simplify) {
+    options.min_circumference_um = group.lengthMicrons(key::minimum_polygon_circumference);
     // CuraEngine 4.13's slicer simplifies with its fixed 10 µm / 5 µm; meshfix_maximum_resolution and
     // _deviation act on the walls (and skin, infill, support) only.
     constexpr coord_um kSlicerResolutionUm = 10, kSlicerDeviationUm = 5;
-    cleanup.maximum_resolution_um = simplify ? kSlicerResolutionUm : 0;
-    cleanup.maximum_deviation_um = simplify ? kSlicerDeviationUm : 0;
-    return cleanup;
+    options.simplify_resolution_um = simplify ? kSlicerResolutionUm : 0;
+    options.simplify_deviation_um = simplify ? kSlicerDeviationUm : 0;
+    options.curaengine_crossings = simplify;
 }
 
 VolumeRole volumeRoleOf(const Settings& s, const Mesh& mesh) {

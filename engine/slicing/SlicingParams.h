@@ -8,7 +8,7 @@
 #include "slicing/AdaptiveLayers.h"
 #include "slicing/LayerHeights.h"
 #include "slicing/MultiVolumes.h"
-#include "slicing/OutlineCleanup.h"
+#include "slicing/Slicer.h"
 
 namespace mixengine {
 
@@ -23,9 +23,11 @@ AdaptiveLayerParams adaptiveLayerParams(const Settings& group, SlicingTolerance 
 /// closed outlines; in a mesh surface mode only the slicer's own 0.1 mm (open pieces stay open).
 coord_um stitchDistanceUm(const Settings& mesh);
 
-/// minimum_polygon_circumference, and when `simplify` CuraEngine 4.13's slicer simplification (10 µm /
-/// 5 µm; meshfix_maximum_resolution / _deviation act on the walls, not here).
-OutlineCleanupParams outlineCleanupParams(const Settings& group, bool simplify);
+/// What the slicer does to each stitched loop (SliceOptions): minimum_polygon_circumference, and for a
+/// print (`simplify`) CuraEngine 4.13's crossings and its slicer simplification (10 µm / 5 µm;
+/// meshfix_maximum_resolution / _deviation act on the walls, not here); `mixengine layers` shows the
+/// exact cuts unsimplified.
+void setOutlineCleanup(SliceOptions& options, const Settings& group, bool simplify);
 
 /// The mesh's part in its group from its resolved settings (infill_mesh, cutting_mesh, support_mesh,
 /// anti_overhang_mesh, infill_mesh_order, multiple_mesh_overlap, meshfix_union_all, …).
