@@ -237,5 +237,14 @@ TEST(Cooling, OtherLinesAndLinesEndToEndStayApart) {
     EXPECT_EQ(in_line.steps[5].to, (Point2{0, 500}));
 }
 
+// No merge makes a line wider than 3 nozzles: with a 0.1 mm nozzle the 0.2 mm lines may reach flow 1.5,
+// and the first pair would need 3 (600 µm of line over 200 µm), so nothing merges.
+TEST(Cooling, GapLinesStayApartWhereTheMergedLineWouldBeWiderThanThreeNozzles) {
+    PlannedLayer layer = threeGapLines(true);
+    const std::size_t steps = layer.steps.size();
+    mergeGapLines(layer, 0, [](int) { return GapMergeParams{100, 25}; });
+    EXPECT_EQ(layer.steps.size(), steps);
+}
+
 }  // namespace
 }  // namespace mixengine
