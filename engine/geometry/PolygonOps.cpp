@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "geometry/Clip.h"
 #include "geometry/Point.h"
 #include "geometry/SideBySide.h"
 
@@ -234,6 +235,37 @@ Paths removeSmallIslands(const Paths& polygons, double min_area_um2) {
     if (min_area_um2 <= 0)
         return polygons;
     return withoutSmallIslands(splitIslands(polygons), min_area_um2);
+}
+
+Paths removeSmallOutlines(const Paths& polygons, double min_area_um2) {
+    std::vector<bool> dropped(polygons.size(), false);
+    std::vector<std::size_t> small_holes;
+    bool any = false;
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+        const double area = signedAreaUm2(polygons[k]);
+        if (std::abs(area) >= min_area_um2)
+            continue;
+        if (area >= 0)
+            dropped[k] = any = true;
+        else
+            small_holes.push_back(k);
+    }
+    if (!any)
+        return polygons;
+    for (std::size_t hole : small_holes) {
+        for (std::size_t k = 0; k < polygons.size() && !polygons[hole].empty(); ++k) {
+            if (dropped[k] && k != hole && pointInLoop(polygons[hole][0], polygons[k]) != 0) {
+                dropped[hole] = true;
+                break;
+            }
+        }
+    }
+    Paths kept;
+    for (std::size_t k = 0; k < polygons.size(); ++k) {
+        if (!dropped[k])
+            kept.push_back(polygons[k]);
+    }
+    return kept;
 }
 
 Paths differenceWithoutSmallIslands(const Paths& a, const Paths& b, double min_area_um2) {

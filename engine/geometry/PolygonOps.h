@@ -52,6 +52,11 @@ std::vector<Paths> splitIslands(const Paths& polygons);
 
 /// Drops islands whose area (holes subtracted) is below `min_area_um2`.
 Paths removeSmallIslands(const Paths& polygons, double min_area_um2);
+/// CuraEngine 4.13's small-area removal (Polygons::removeSmallAreas keeping holes): the outer contours
+/// whose own area (holes not taken off) is under `min_area_um2` go, with the small holes whose first
+/// vertex lies in (or on) one of them; every other loop stays, in its order. A thin ring (a large
+/// contour round a large hole) stays.
+Paths removeSmallOutlines(const Paths& polygons, double min_area_um2);
 /// removeSmallIslands(differenceOf(a, b), min_area_um2) in one Clipper pass.
 Paths differenceWithoutSmallIslands(const Paths& a, const Paths& b, double min_area_um2);
 

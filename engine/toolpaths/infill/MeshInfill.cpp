@@ -82,20 +82,75 @@ Paths withoutSmallLoops(Paths area, double min_area_um2) {
 struct SkinEdgeSplit {
     Paths below_skin;   ///< under the skin above
     Paths elsewhere;    ///< the rest of the sparsest area of those parts
-    Paths split_parts;  ///< the parts split
+    Paths filled;       ///< what of `elsewhere` gets infill (PartSplit::filled)
+    Paths split_parts;  ///< the sparsest area of the parts split
 };
+
+/// One part's sparsest area split along the skin above.
+struct PartSplit {
+    Paths below;  ///< under the skin above
+    Paths rest;   ///< the rest
+    Paths filled;  ///< what of `rest` gets infill: without outer contours under 4 µm² per µm of its perimeter
+};
+
+/// The filter of an infill area before its infill is generated: without the islands (holes taken off)
+/// under 4 µm² per µm of the area's perimeter. (CuraEngine 4.13 weighs each part's outer contours
+/// without their holes against its own perimeter; this layer-wide filter is kept where no part is
+/// split, the parts split get CuraEngine's: PartSplit::filled.)
+Paths withoutSmallInfillIslands(const Paths& area) {
+    return removeSmallIslands(area, 4.0 * perimeterUm(area));
+}
 
 /// One part's sparsest area `own` split as CuraEngine 4.13 partitions it for skin_edge_support_layers:
 /// its part under `skin_above` (opened by a line width, without loops under 25 line widths squared) and
-/// the rest (without islands under that); nothing when either is empty.
-std::optional<std::pair<Paths, Paths>> splitPart(const Paths& own, const Paths& skin_above, coord_um w) {
+/// the rest (without outer contours under that, weighed without their holes: a thin ring round the
+/// first stays); nothing when either is empty. As CuraEngine filters each part's rest before its
+/// infill, outer contours are weighed without their holes there too (`filled`).
+std::optional<PartSplit> splitPart(const Paths& own, const Paths& skin_above, coord_um w) {
     const double min_area_um2 = 25.0 * double(w) * double(w);
     Paths below = withoutSmallLoops(openPolygons(intersectAll(skin_above, own), w), min_area_um2);
-    Paths rest = removeSmallIslands(differenceOf(own, below), min_area_um2);
+    Paths rest = removeSmallOutlines(differenceOf(own, below), min_area_um2);
     constexpr coord_um kTinyUm = 20;  // CuraEngine: the skin/infill overlap is not enough
     if (rest.empty() || offsetMiter(below, -kTinyUm, Loops::United).empty())
         return std::nullopt;
-    return std::make_pair(std::move(below), std::move(rest));
+    Paths filled = removeSmallOutlines(rest, 4.0 * perimeterUm(rest));
+    return PartSplit{std::move(below), std::move(rest), std::move(filled)};
+}
+
+/// Whether `part` holds `island` (one of the islands of the layer's infill, which lie in the parts,
+/// at most a few micrometres beyond them where the infill's opening rounded outwards). `boxes` are the
+/// bounds of `parts`; index `k` names `part`.
+bool partHolds(const std::vector<Box2>& boxes, std::size_t k, const Box2& island_box, const Paths& part,
+               const Paths& island) {
+    constexpr coord_um kReachUm = 10;
+    auto near = [&](const Box2& a) {
+        return a.left - kReachUm <= island_box.right && island_box.left - kReachUm <= a.right &&
+               a.top - kReachUm <= island_box.bottom && island_box.top - kReachUm <= a.bottom;
+    };
+    if (!near(boxes[k]))
+        return false;
+    const auto candidates = std::count_if(boxes.begin(), boxes.end(), near);
+    return candidates == 1 || !intersectAll(island, part).empty();
+}
+
+/// The layer's sparsest area `sparsest` part by part: the islands in each of `parts`, whole (as
+/// CuraEngine 4.13 keeps each part's infill area as the opening of its inner area left it, not clipped
+/// to that area).
+std::vector<Paths> sparsestByPart(const Paths& sparsest, const std::vector<Paths>& parts) {
+    std::vector<Box2> boxes;
+    for (const Paths& part : parts)
+        boxes.push_back(boundsOf(part));
+    std::vector<Paths> own(parts.size());
+    for (Paths& island : splitIslands(sparsest)) {
+        const Box2 box = boundsOf(island);
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            if (partHolds(boxes, k, box, parts[k], island)) {
+                own[k].insert(own[k].end(), island.begin(), island.end());
+                break;
+            }
+        }
+    }
+    return own;
 }
 
 /// skin_edge_support_layers: `sparsest` split part by part (`parts`: the layer's parts; none: one
@@ -105,14 +160,16 @@ std::optional<SkinEdgeSplit> splitBySkinAbove(const Paths& sparsest, const Paths
     if (skin_above.empty() || sparsest.empty())
         return std::nullopt;
     SkinEdgeSplit split;
-    for (const Paths& part : parts.empty() ? std::vector<Paths>{sparsest} : splitIslands(parts)) {
-        const std::optional<std::pair<Paths, Paths>> two =
-            splitPart(parts.empty() ? sparsest : intersectAll(sparsest, part), skin_above, w);
+    const std::vector<Paths> owns =
+        parts.empty() ? std::vector<Paths>{sparsest} : sparsestByPart(sparsest, splitIslands(parts));
+    for (const Paths& own : owns) {
+        const std::optional<PartSplit> two = own.empty() ? std::nullopt : splitPart(own, skin_above, w);
         if (!two)
             continue;
-        split.below_skin = unionOf(split.below_skin, two->first);
-        split.elsewhere = unionOf(split.elsewhere, two->second);
-        split.split_parts = unionOf(split.split_parts, part);
+        split.below_skin = unionOf(split.below_skin, two->below);
+        split.elsewhere = unionOf(split.elsewhere, two->rest);
+        split.filled = unionOf(split.filled, two->filled);
+        split.split_parts = unionOf(split.split_parts, own);
     }
     if (split.below_skin.empty())
         return std::nullopt;
@@ -145,25 +202,27 @@ void singleLayer(const LayerInfill& layer, const InfillParams& base, const SkinE
     const std::size_t last = layer.by_density.size() - 1;
     const std::optional<SkinEdgeSplit> split =
         splitBySkinAbove(layer.by_density[last][0], edge.skin_above, edge.parts, base.line_width_um);
-    // As CuraEngine: in a part split, every density fills the whole rest.
-    auto areaOf = [&](std::size_t k) {
+    // As CuraEngine: in a part split, every density fills the whole rest. `filled`: the area that gets
+    // infill (small islands gone), else the whole area.
+    auto areaOf = [&](std::size_t k, bool filled) {
+        const Paths& whole = layer.by_density[k][0];
         if (!split)
-            return layer.by_density[k][0];
-        return unionOf(differenceOf(layer.by_density[k][0], split->split_parts), split->elsewhere);
+            return filled ? withoutSmallInfillIslands(whole) : whole;
+        const Paths unsplit = differenceOf(whole, split->split_parts);
+        return filled ? unionOf(withoutSmallInfillIslands(unsplit), split->filled)
+                      : unionOf(unsplit, split->elsewhere);
     };
-    const Paths sparsest = areaOf(last);
+    const Paths sparsest = areaOf(last, false);
     for (std::size_t k = last + 1; k-- > 0;) {
         if (layer.by_density[k][0].empty())
             continue;
         if (split)
             belowSkinInfill(split->below_skin, base, k, last, out);
-        const Paths area = k == last ? sparsest : areaOf(k);
         InfillParams p = densityParams(base, k, last);
         p.multiplier = base.connect_lines && last != 0 ? 1 : base.multiplier;
         p.wall_count = k < last ? 0 : base.wall_count;
         p.area_loops = Loops::United;  // the islands of a union
-        std::vector<ExtrusionPath> paths =
-            generateInfill(removeSmallIslands(area, 4.0 * perimeterUm(area)), p);
+        std::vector<ExtrusionPath> paths = generateInfill(areaOf(k, true), p);
         append(k < last
                    ? keepInside(std::move(paths), offsetMiter(sparsest, -cutInset(base, base.wall_count)))
                    : std::move(paths),

@@ -70,12 +70,13 @@ struct SkinEdgeSupport {
 };
 
 /// The layer's infill paths: thicker areas first, then the single-layer ones from sparse to dense.
-/// With `edge.skin_above`, as CuraEngine 4.13, the sparsest single-layer area of each part is split
-/// along it — its piece under that skin (opened by a line width, without loops under 25 line widths
-/// squared) gets at least one infill wall and every density's lines of its own, printed twice as
-/// CuraEngine 4.13 prints them (its list of them is not emptied before the rest is added), the rest (without
-/// islands under that size) every density's lines; a part where either piece would be empty is not
-/// split.
+/// With `edge.skin_above`, as CuraEngine 4.13, the sparsest single-layer area of each part (its islands
+/// of that area whole, not clipped to the part) is split along it — its piece under that skin (opened
+/// by a line width, without loops under 25 line widths squared) gets at least one infill wall and
+/// every density's lines of its own, printed twice as CuraEngine 4.13 prints them (its list of them is
+/// not emptied before the rest is added), the rest (without outer contours under that size, each
+/// weighed without its holes, so a thin ring round the piece stays) every density's lines; a part
+/// where either piece would be empty is not split.
 std::vector<ExtrusionPath> meshInfillPaths(const LayerInfill& layer, const InfillParams& base,
                                            const SkinEdgeSupport& edge = {});
 

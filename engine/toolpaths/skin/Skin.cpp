@@ -39,39 +39,6 @@ std::vector<Paths> grownReferences(const std::vector<Paths>& reference, coord_um
     return grown;
 }
 
-/// CuraEngine 4.13's small-area removal: the outlines whose own area (holes not taken off) is under
-/// min_area_um2 go, with the small holes that lie in them; every other hole stays.
-Paths removeSmallOutlines(const Paths& polygons, double min_area_um2) {
-    std::vector<bool> dropped(polygons.size(), false);
-    std::vector<std::size_t> small_holes;
-    bool any = false;
-    for (std::size_t k = 0; k < polygons.size(); ++k) {
-        const double area = signedAreaUm2(polygons[k]);
-        if (std::abs(area) >= min_area_um2)
-            continue;
-        if (area >= 0)
-            dropped[k] = any = true;
-        else
-            small_holes.push_back(k);
-    }
-    if (!any)
-        return polygons;
-    for (std::size_t hole : small_holes) {
-        for (std::size_t k = 0; k < polygons.size() && !polygons[hole].empty(); ++k) {
-            if (dropped[k] && k != hole && pointInLoop(polygons[hole][0], polygons[k]) != 0) {
-                dropped[hole] = true;
-                break;
-            }
-        }
-    }
-    Paths kept;
-    for (std::size_t k = 0; k < polygons.size(); ++k) {
-        if (!dropped[k])
-            kept.push_back(polygons[k]);
-    }
-    return kept;
-}
-
 /// inner less what covers it; with min_infill_area, the covering pieces under it do not count.
 Paths uncovered(const Paths& inner, const Paths& covered, double min_area_um2) {
     if (min_area_um2 > 0)

@@ -43,6 +43,45 @@ TEST(MeshInfill, SkinEdgeSupportWallsTheInfillUnderTheSkinAbove) {
     EXPECT_EQ(loops(meshInfillPaths(layer, params, {{square(0, 0, 20'000)}, {square(0, 0, 20'000)}})), 0);
 }
 
+TEST(MeshInfill, SkinEdgeSupportKeepsTheThinRingAnOpeningLeaves) {
+    // The 4 mm pin of the parity scene ender3_slivers on layer 35 (CuraEngine 4.13,
+    // skin_edge_support_layers=1): its infill area (the inner area opened by half a line width, so a
+    // micrometre beyond the inner area at places), the whole inner area under skin on the layer above. The
+    // piece under the skin (opened by a line width) ends inside the infill area all round; the thin ring left
+    // is kept, so the piece gets the infill wall CuraEngine prints there (its G-code's loop, vertex for
+    // vertex).
+    const Path inner{{119011, 107847}, {119293, 107963}, {119544, 108156}, {119737, 108407}, {119853, 108689},
+                     {119894, 109000}, {119853, 109311}, {119737, 109593}, {119544, 109844}, {119293, 110037},
+                     {119011, 110153}, {118700, 110194}, {118389, 110153}, {118107, 110037}, {117856, 109844},
+                     {117663, 109593}, {117547, 109311}, {117506, 109000}, {117547, 108689}, {117663, 108407},
+                     {117856, 108156}, {118107, 107963}, {118389, 107847}, {118700, 107806}};
+    const Path infill{{119010, 107846}, {119292, 107962}, {119544, 108156}, {119738, 108408},
+                      {119854, 108690}, {119895, 109000}, {119854, 109310}, {119738, 109592},
+                      {119544, 109844}, {119292, 110038}, {119010, 110154}, {118700, 110195},
+                      {118390, 110154}, {118108, 110038}, {117856, 109844}, {117662, 109592},
+                      {117546, 109310}, {117505, 109000}, {117546, 108690}, {117662, 108408},
+                      {117856, 108156}, {118108, 107962}, {118390, 107846}, {118700, 107805}};
+    const std::set<std::pair<coord_um, coord_um>> cura_wall{
+        {118700, 109992}, {118443, 109959}, {118209, 109862}, {117999, 109701}, {117838, 109491},
+        {117741, 109257}, {117708, 109000}, {117741, 108743}, {117838, 108509}, {117999, 108299},
+        {118209, 108138}, {118443, 108041}, {118700, 108008}, {118957, 108041}, {119191, 108138},
+        {119401, 108299}, {119562, 108509}, {119659, 108743}, {119692, 109000}, {119659, 109257},
+        {119562, 109491}, {119401, 109701}, {119191, 109862}, {118957, 109959}};
+    LayerInfill layer;
+    layer.by_density = {{{infill}}};
+    const std::vector<ExtrusionPath> paths = meshInfillPaths(layer, linesAt(4'000), {{inner}, {inner}});
+    std::vector<const ExtrusionPath*> loops;
+    for (const ExtrusionPath& path : paths) {
+        if (path.closed)
+            loops.push_back(&path);
+    }
+    ASSERT_EQ(loops.size(), 1U);
+    std::set<std::pair<coord_um, coord_um>> wall;
+    for (const Point2& p : loops[0]->points)
+        wall.emplace(p.X, p.Y);
+    EXPECT_EQ(wall, cura_wall);
+}
+
 TEST(MeshInfill, DensitiesTogetherMakeTheBaseSpacing) {
     // Two densities: the sparsest (all of the area) at 2d, the dense part at 2d shifted by d.
     LayerInfill layer;

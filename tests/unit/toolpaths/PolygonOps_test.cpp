@@ -63,6 +63,29 @@ TEST(PolygonOps, IslandsKeepTheirHoles) {
     EXPECT_EQ(areaUm2(removeSmallIslands(shapes, 5e6)), 64e6);
 }
 
+TEST(PolygonOps, SmallOutlinesAreWeighedWithoutTheirHoles) {
+    // As CuraEngine 4.13's removeSmallAreas (keeping holes): a 10 mm square round a hole 1 µm smaller all
+    // round is a ring of under 0.04 mm², yet its outline (100 mm²) is not small, so the ring stays.
+    Path ring_hole = rect(1, 1, 9'999, 9'999);
+    std::reverse(ring_hole.begin(), ring_hole.end());
+    // A 0.5 mm square with a 0.1 mm hole goes with its hole; a 0.1 mm hole in a 5 mm square stays.
+    Path small_hole = square(20'200, 200, 100);
+    std::reverse(small_hole.begin(), small_hole.end());
+    Path kept_hole = square(30'200, 200, 100);
+    std::reverse(kept_hole.begin(), kept_hole.end());
+    const Paths shapes{square(0, 0, 10'000),     ring_hole, square(20'000, 0, 500), small_hole,
+                       square(30'000, 0, 5'000), kept_hole};
+    const Paths kept = removeSmallOutlines(shapes, 1e6);
+    ASSERT_EQ(kept.size(), 4U);
+    EXPECT_EQ(kept[0], shapes[0]);
+    EXPECT_EQ(kept[1], shapes[1]);
+    EXPECT_EQ(kept[2], shapes[4]);
+    EXPECT_EQ(kept[3], shapes[5]);
+    EXPECT_EQ(areaUm2(kept), 100e6 - 9'998.0 * 9'998.0 + 25e6 - 1e4);
+    // Weighed as islands (holes taken off), the ring goes.
+    EXPECT_EQ(areaUm2(removeSmallIslands(shapes, 1e6)), 25e6 - 1e4);
+}
+
 TEST(PolygonOps, ClipLinesKeepsTheInsidePieces) {
     const Paths pieces = clipLines({{{-5'000, 5'000}, {15'000, 5'000}}}, {square(0, 0, 10'000)});
     ASSERT_EQ(pieces.size(), 1U);
