@@ -16,16 +16,26 @@ int orientation(const Point2& a, const Point2& b, const Point2& c) {
     return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
 }
 
+/// Whether the bounding boxes of segments p–q and a–b overlap (touching counts).
+bool boxesMeet(const Point2& p, const Point2& q, const Point2& a, const Point2& b) {
+    return std::max(p.X, q.X) >= std::min(a.X, b.X) && std::max(a.X, b.X) >= std::min(p.X, q.X) &&
+           std::max(p.Y, q.Y) >= std::min(a.Y, b.Y) && std::max(a.Y, b.Y) >= std::min(p.Y, q.Y);
+}
+
 /// Proper crossing: the segments cross at a point interior to both (touching does not count).
+/// Segments whose bounding boxes do not meet are rejected before the orientation tests.
 bool properlyCross(const Point2& p, const Point2& q, const Point2& a, const Point2& b) {
+    if (!boxesMeet(p, q, a, b))
+        return false;
     const int o1 = orientation(p, q, a), o2 = orientation(p, q, b);
     const int o3 = orientation(a, b, p), o4 = orientation(a, b, q);
     return o1 * o2 < 0 && o3 * o4 < 0;
 }
 
+/// p lies on the segment a–b (the cheap bounding-box test first).
 bool onSegment(const Point2& p, const Point2& a, const Point2& b) {
-    return orientation(a, b, p) == 0 && std::min(a.X, b.X) <= p.X && p.X <= std::max(a.X, b.X) &&
-           std::min(a.Y, b.Y) <= p.Y && p.Y <= std::max(a.Y, b.Y);
+    return std::min(a.X, b.X) <= p.X && p.X <= std::max(a.X, b.X) && std::min(a.Y, b.Y) <= p.Y &&
+           p.Y <= std::max(a.Y, b.Y) && orientation(a, b, p) == 0;
 }
 
 /// The sign of (X − x), X being where the line through a and b (a.Y ≠ b.Y) meets the height y:
@@ -84,6 +94,45 @@ CombBoundary::CombBoundary(const Paths& area) : loops_(area) {
             for (coord_um c = c0; c <= c1; ++c)
                 cells_[cellIndex(c, r)].push_back(e);
     }
+    anchors_.assign(cells_.size(), kAnchorOnBoundary);
+    for (coord_um r = 0; r < rows_; ++r)
+        classifyAnchors(r);
+}
+
+Point2 CombBoundary::anchor(coord_um c, coord_um r) const {
+    return {origin_.X + c * cell_um_ + cell_um_ / 2, origin_.Y + r * cell_um_ + cell_um_ / 2};
+}
+
+void CombBoundary::classifyAnchors(coord_um r) {
+    // The ray method for every anchor of the row at once: each crossing of the row's centre line is
+    // counted in the cell that holds it (as in insideByRay), against that cell's anchor; a prefix of
+    // flips then gives each anchor's parity from the grid's left side.
+    const coord_um y = anchor(0, r).Y;
+    std::vector<std::uint8_t> flips(static_cast<std::size_t>(columns_) + 1, 0);
+    for (coord_um c = 0; c < columns_; ++c) {
+        const Point2 at = anchor(c, r);
+        const coord_um cell_left = origin_.X + c * cell_um_, cell_right = cell_left + cell_um_;
+        bool on_boundary = false;
+        for (std::uint32_t e : cells_[cellIndex(c, r)]) {
+            const Edge& edge = edges_[e];
+            on_boundary = on_boundary || onSegment(at, edge.a, edge.b);
+            if ((edge.a.Y > y) == (edge.b.Y > y))
+                continue;
+            const bool from_left = c == 0 || crossingXComparedTo(edge.a, edge.b, y, cell_left) >= 0;
+            const bool to_right = c == columns_ - 1 || crossingXComparedTo(edge.a, edge.b, y, cell_right) < 0;
+            if (from_left && to_right)
+                flips[static_cast<std::size_t>(
+                    crossingXComparedTo(edge.a, edge.b, y, at.X) < 0 ? c : c + 1)] ^= 1;
+        }
+        anchors_[cellIndex(c, r)] = on_boundary ? kAnchorOnBoundary : 0;
+    }
+    std::uint8_t odd = 0;
+    for (coord_um c = 0; c < columns_; ++c) {
+        odd ^= flips[static_cast<std::size_t>(c)];
+        std::uint8_t& state = anchors_[cellIndex(c, r)];
+        if (state != kAnchorOnBoundary)
+            state = odd;
+    }
 }
 
 coord_um CombBoundary::column(coord_um x) const {
@@ -123,7 +172,30 @@ bool CombBoundary::inside(const Point2& p) const {
     if (edges_.empty() || p.Y < origin_.Y || p.Y >= origin_.Y + rows_ * cell_um_ || p.X < origin_.X ||
         p.X >= origin_.X + columns_ * cell_um_)
         return false;
-    const coord_um r = row(p.Y), first = column(p.X);
+    const coord_um r = row(p.Y), c = column(p.X);
+    const std::uint8_t state = anchors_[cellIndex(c, r)];
+    if (state == kAnchorOnBoundary)
+        return insideByRay(p, r, c);
+    // From the cell's anchor to p: every edge the segment meets is in the cell; the parity of its
+    // proper crossings is the change of inside (unless it touches a vertex: then the ray decides).
+    const Point2 from = anchor(c, r);
+    bool odd = state != 0;
+    for (std::uint32_t e : cells_[cellIndex(c, r)]) {
+        const Edge& edge = edges_[e];
+        if (onSegment(p, edge.a, edge.b))
+            return true;
+        if (!boxesMeet(from, p, edge.a, edge.b))
+            continue;
+        const int o1 = orientation(from, p, edge.a), o2 = orientation(from, p, edge.b);
+        if ((o1 == 0 && onSegment(edge.a, from, p)) || (o2 == 0 && onSegment(edge.b, from, p)))
+            return insideByRay(p, r, c);
+        if (o1 * o2 < 0 && orientation(edge.a, edge.b, from) * orientation(edge.a, edge.b, p) < 0)
+            odd = !odd;
+    }
+    return odd;
+}
+
+bool CombBoundary::insideByRay(const Point2& p, coord_um r, coord_um first) const {
     // The ray runs to the nearer side of the grid, +X or −X: p is inside exactly when either one
     // crosses the boundary an odd number of times (p itself lies on no edge: that returns first).
     const bool rightwards = columns_ - first <= first + 1;
@@ -135,6 +207,8 @@ bool CombBoundary::inside(const Point2& p) const {
         const coord_um cell_right = cell_left + cell_um_;
         for (std::uint32_t e : cells_[cellIndex(c, r)]) {
             const Edge& edge = edges_[e];
+            if (p.Y < std::min(edge.a.Y, edge.b.Y) || p.Y > std::max(edge.a.Y, edge.b.Y))
+                continue;  // neither holds p nor meets the ray
             if (onSegment(p, edge.a, edge.b))
                 return true;
             // Half-open rule on Y so a vertex on the ray counts once.
@@ -174,15 +248,7 @@ bool CombBoundary::straightBetweenInside(const Point2& a, const Point2& b) const
     // The midpoint catches chords between two boundary points that run outside without a
     // proper crossing (e.g. corner to edge across a hole).
     const Point2 middle{a.X + (b.X - a.X) / 2, a.Y + (b.Y - a.Y) / 2};
-    if (!inside(middle))
-        return false;
-    return forCellsAlong(a, b, [&](const std::vector<std::uint32_t>& cell) {
-        for (std::uint32_t e : cell) {
-            if (properlyCross(a, b, edges_[e].a, edges_[e].b))
-                return false;
-        }
-        return true;
-    });
+    return inside(middle) && !crossesBoundary(a, b);
 }
 
 std::vector<CombBoundary::Crossing> CombBoundary::crossings(const Point2& a, const Point2& b) const {

@@ -1,9 +1,12 @@
 #pragma once
 // Combing: a travel that stays inside the printed part needs no retraction (Cura's
 // retraction_combing). This answers "does the straight travel a→b stay inside `area`?" quickly
-// for areas with many thousands of edges: the edges are bucketed in a uniform grid, a point is
-// inside when a ray to +X crosses the boundary an odd number of times (counted cell by cell, each
-// crossing in the cell that contains it), and the segment must cross no edge.
+// for areas with many thousands of edges: the edges are bucketed in a uniform grid, and each cell's
+// centre is classified once (a ray along its row crosses the boundary an odd number of times,
+// counted cell by cell, each crossing in the cell that contains it); a point is inside when its
+// cell's centre is and the segment between them crosses the boundary an even number of times, or
+// the other way round (where that segment touches a vertex, or the centre lies on the boundary, a
+// ray from the point to the grid's nearer side decides). A straight travel must cross no edge.
 // The tests (inside, straightInside, which edges a travel crosses) are exact: integer coordinates,
 // products in 128 bits, no division. Points on the boundary count as inside, touching is not
 // crossing. route() constructs the points where a travel crosses a loop: those are interpolated in
@@ -75,10 +78,20 @@ class CombBoundary {
     }
     coord_um column(coord_um x) const;
     coord_um row(coord_um y) const;
+    /// The centre of cell (c, r): its inside state is known (anchors_), so inside(p) only looks at
+    /// the edges of p's cell.
+    Point2 anchor(coord_um c, coord_um r) const;
+    /// anchors_ of row r, by the ray method for the whole row at once.
+    void classifyAnchors(coord_um r);
+    /// inside(p) for p in the grid's cell (first, r), by a ray to the nearer side of the grid.
+    bool insideByRay(const Point2& p, coord_um r, coord_um first) const;
 
     Paths loops_;
     std::vector<Edge> edges_;
     std::vector<std::vector<std::uint32_t>> cells_;  ///< edge indices per cell
+    /// Per cell: whether its anchor is inside (1) or not (0), kAnchorOnBoundary when it lies on an edge.
+    static constexpr std::uint8_t kAnchorOnBoundary = 2;
+    std::vector<std::uint8_t> anchors_;
     Point2 origin_{0, 0};
     coord_um cell_um_ = 1;
     coord_um columns_ = 0, rows_ = 0;

@@ -81,6 +81,38 @@ TEST(CombBoundary, InsideAgreesWithPointInPolygonOnBothSidesOfTheGrid) {
     EXPECT_LT(inside, 18'000);
 }
 
+/// A 600-vertex star on a 100 µm lattice, 10 mm across, with a lattice square hole: so many edges
+/// in so small an area that the grid's cells are 0.5 mm, their centres 50 µm off the lattice, so
+/// that edges pass through them and vertices lie on the lines from them to points of a 50 µm
+/// lattice.
+Paths latticeStar() {
+    Paths loops(1);
+    std::uint64_t state = 99;
+    auto next = [&] { return (state = state * 6364136223846793005ULL + 1442695040888963407ULL) >> 33; };
+    for (int k = 0; k < 600; ++k) {
+        const double angle = 2 * 3.14159265358979 * k / 600, radius = 1'000.0 + double(next() % 41) * 100.0;
+        loops[0].push_back({std::llround(radius * std::cos(angle) / 100) * 100,
+                            std::llround(radius * std::sin(angle) / 100) * 100});
+    }
+    loops.push_back(square(-500, -500, 1'000, false));
+    return loops;
+}
+
+TEST(CombBoundary, InsideAgreesWithPointInPolygonWhereEdgesPassThroughCellCentres) {
+    const Paths loops = latticeStar();
+    const CombBoundary comb(loops);
+    int inside = 0, points = 0;
+    for (coord_um x = -5'250; x <= 5'250; x += 50) {
+        for (coord_um y = -5'250; y <= 5'250; y += 50) {
+            ASSERT_EQ(comb.inside({x, y}), insideEvenOdd(loops, {x, y})) << x << ", " << y;
+            inside += comb.inside({x, y});
+            ++points;
+        }
+    }
+    EXPECT_GT(inside, points / 10);
+    EXPECT_LT(inside, points * 9 / 10);
+}
+
 /// The segments p–q and a–b cross at a point inside both (doubles are exact at these sizes).
 bool crossProperly(const Point2& p, const Point2& q, const Point2& a, const Point2& b) {
     auto side = [](const Point2& o, const Point2& d, const Point2& x) {
