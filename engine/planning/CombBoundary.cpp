@@ -38,6 +38,12 @@ bool onSegment(const Point2& p, const Point2& a, const Point2& b) {
            p.Y <= std::max(a.Y, b.Y) && orientation(a, b, p) == 0;
 }
 
+/// v, known to lie on the line through p and q, lies on the segment p–q and is neither end.
+bool strictlyBetween(const Point2& v, const Point2& p, const Point2& q) {
+    return v != p && v != q && std::min(p.X, q.X) <= v.X && v.X <= std::max(p.X, q.X) &&
+           std::min(p.Y, q.Y) <= v.Y && v.Y <= std::max(p.Y, q.Y);
+}
+
 /// The sign of (X − x), X being where the line through a and b (a.Y ≠ b.Y) meets the height y:
 /// X = a.X + (y − a.Y)(b.X − a.X)/(b.Y − a.Y), compared without dividing.
 int crossingXComparedTo(const Point2& a, const Point2& b, coord_um y, coord_um x) {
@@ -228,6 +234,45 @@ bool CombBoundary::insideByRay(const Point2& p, coord_um r, coord_um first) cons
     return odd;
 }
 
+bool CombBoundary::crossesEdge(const Point2& p, const Point2& q, const Edge& edge) const {
+    if (!boxesMeet(p, q, edge.a, edge.b))
+        return false;  // neither a crossing nor a vertex on the travel
+    const int side_a = orientation(p, q, edge.a);
+    if (side_a == 0)
+        return crossesAtVertex(p, q, edge);
+    // Through edge.b: that is the next edge's first vertex, counted there.
+    if (side_a * orientation(p, q, edge.b) >= 0)
+        return false;
+    return orientation(edge.a, edge.b, p) * orientation(edge.a, edge.b, q) < 0;
+}
+
+bool CombBoundary::crossesAtVertex(const Point2& p, const Point2& q, const Edge& edge) const {
+    if (!strictlyBetween(edge.a, p, q))
+        return false;
+    const Path& loop = loops_[edge.loop];
+    const std::size_t n = loop.size();
+    // The side the loop comes from: its last vertex before edge.a off the travel's line (the same
+    // point repeated skipped); on the line, edge.a is not where its run along the line starts.
+    std::size_t k = edge.index;
+    for (std::size_t guard = 0; guard < n && loop[k] == edge.a; ++guard)
+        k = (k + n - 1) % n;
+    const int before = orientation(p, q, loop[k]);
+    if (before == 0)
+        return false;
+    // The side it leaves to: its first vertex after the run along the line; a run reaching an end
+    // of the travel or beyond it only touches (the travel ends on the boundary).
+    k = edge.index;
+    for (std::size_t guard = 0; guard < n; ++guard) {
+        k = (k + 1) % n;
+        const int after = orientation(p, q, loop[k]);
+        if (after != 0)
+            return after != before;
+        if (loop[k] != edge.a && !strictlyBetween(loop[k], p, q))
+            return false;
+    }
+    return false;
+}
+
 bool CombBoundary::straightInside(const Point2& a, const Point2& b) const {
     return inside(a) && inside(b) && straightBetweenInside(a, b);
 }
@@ -237,7 +282,7 @@ bool CombBoundary::crossesBoundary(const Point2& a, const Point2& b) const {
         return false;
     return !forCellsAlong(a, b, [&](const std::vector<std::uint32_t>& cell) {
         for (std::uint32_t e : cell) {
-            if (properlyCross(a, b, edges_[e].a, edges_[e].b))
+            if (crossesEdge(a, b, edges_[e]))
                 return false;
         }
         return true;
@@ -257,10 +302,16 @@ std::vector<CombBoundary::Crossing> CombBoundary::crossings(const Point2& a, con
     forCellsAlong(a, b, [&](const std::vector<std::uint32_t>& cell) {
         for (std::uint32_t e : cell) {
             const Edge& edge = edges_[e];
-            if (!properlyCross(a, b, edge.a, edge.b) || std::find(seen.begin(), seen.end(), e) != seen.end())
+            if (!crossesEdge(a, b, edge) || std::find(seen.begin(), seen.end(), e) != seen.end())
                 continue;
             seen.push_back(e);
             const double dx = double(b.X - a.X), dy = double(b.Y - a.Y);
+            if (orientation(a, b, edge.a) == 0) {  // through the edge's first vertex: there exactly
+                const double t =
+                    (double(edge.a.X - a.X) * dx + double(edge.a.Y - a.Y) * dy) / (dx * dx + dy * dy);
+                found.push_back({t, edge.a, &edge});
+                continue;
+            }
             const double ex = double(edge.b.X - edge.a.X), ey = double(edge.b.Y - edge.a.Y);
             const double denominator = dx * ey - dy * ex;
             const double t = (double(edge.a.X - a.X) * ey - double(edge.a.Y - a.Y) * ex) / denominator;

@@ -9,9 +9,12 @@
 // ray from the point to the grid's nearer side decides). A straight travel must cross no edge.
 // The tests (inside, straightInside, which edges a travel crosses) are exact: integer coordinates,
 // products in 128 bits, no division. Points on the boundary count as inside, touching is not
-// crossing. route() constructs the points where a travel crosses a loop: those are interpolated in
-// double precision and rounded to the nearest micron, the crossings are ordered along the travel in
-// double precision and the shorter way around a loop is chosen by double-precision lengths.
+// crossing; a travel through a corner where the boundary passes from one side of it to the other
+// crosses there (as one along the axis of a round hole through its corners does). route()
+// constructs the points where a travel crosses a loop: those are interpolated in double precision
+// and rounded to the nearest micron (a corner crossed is itself), the crossings are ordered along
+// the travel in double precision and the shorter way around a loop is chosen by double-precision
+// lengths.
 #include <optional>
 #include <vector>
 
@@ -63,6 +66,14 @@ class CombBoundary {
         Point2 at{};
         const Edge* edge = nullptr;
     };
+    /// Whether the travel p–q crosses the boundary at `edge`: properly through its inside, or
+    /// through its first vertex (crossesAtVertex).
+    bool crossesEdge(const Point2& p, const Point2& q, const Edge& edge) const;
+    /// Whether the travel p–q passes through edge.a, strictly between its ends, where the loop goes
+    /// from one side of the travel's line to the other (a run of the loop along the line counted at
+    /// its first vertex, and only when the run ends before the travel does); a loop that comes back
+    /// to the side it came from touches the travel.
+    bool crossesAtVertex(const Point2& p, const Point2& q, const Edge& edge) const;
     std::vector<Crossing> crossings(const Point2& a, const Point2& b) const;
     Path aroundLoop(const Crossing& from, const Crossing& to) const;
     Path shortened(const Point2& start, const Path& points) const;

@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 namespace mixengine {
 namespace {
@@ -173,6 +176,149 @@ TEST(CombBoundary, NoRouteBetweenIslandsOrFromOutside) {
     EXPECT_FALSE(comb.route({5'000, 5'000}, {25'000, 5'000}).has_value());
     EXPECT_FALSE(comb.route({15'000, 5'000}, {5'000, 5'000}).has_value());
     EXPECT_TRUE(comb.route({1'000, 5'000}, {9'000, 5'000}).has_value());
+}
+
+/// A regular polygon of `corners` corners at radius `radius_um` around (cx, cy), one corner straight
+/// above the centre (x = cx exactly), counter-clockwise unless `hole`.
+Path regularPolygon(coord_um cx, coord_um cy, double radius_um, int corners, bool hole = false) {
+    Path loop;
+    for (int k = 0; k < corners; ++k) {
+        const double angle = 2 * 3.14159265358979 * k / corners + 3.14159265358979 / 2;
+        loop.push_back(
+            {cx + std::llround(radius_um * std::cos(angle)), cy + std::llround(radius_um * std::sin(angle))});
+    }
+    if (hole)
+        std::reverse(loop.begin(), loop.end());
+    return loop;
+}
+
+/// A tube's two wall rings, as a comb area over skin: r 4.19 … 4.6 mm and r 2.4 … 2.81 mm.
+Paths twoRings() {
+    return {regularPolygon(0, 0, 4'600, 64), regularPolygon(0, 0, 4'190, 64, true),
+            regularPolygon(0, 0, 2'810, 32), regularPolygon(0, 0, 2'400, 32, true)};
+}
+
+TEST(CombBoundary, ATravelThroughCornersCrossesTheBoundaryThere) {
+    const CombBoundary comb(twoRings());
+    // From the outer ring to the inner one along x = 0, through a corner of each ring's boundary
+    // (r 4.19 and r 2.81): two islands, no route, not straight inside.
+    const Point2 outer{0, 4'400}, inner{0, 2'600};
+    ASSERT_EQ(twoRings()[1].back(), (Point2{0, 4'190}));
+    ASSERT_TRUE(comb.inside(outer));
+    ASSERT_TRUE(comb.inside(inner));
+    EXPECT_FALSE(comb.route(outer, inner).has_value());
+    EXPECT_FALSE(comb.straightInside(outer, inner));
+    EXPECT_TRUE(comb.crossesBoundary(outer, inner));
+    // Across the tube's hole, corner to corner: around the inner ring's hole, on the ring.
+    const auto around = comb.route({0, 2'600}, {0, -2'600});
+    ASSERT_TRUE(around.has_value());
+    Point2 from{0, 2'600};
+    for (const Point2& p : *around) {  // each leg inside (along the hole's edges: on them)
+        EXPECT_TRUE(comb.inside(p)) << p.X << "," << p.Y;
+        EXPECT_FALSE(comb.crossesBoundary(from, p)) << p.X << "," << p.Y;
+        from = p;
+    }
+    EXPECT_GT(length({0, 2'600}, *around), 2 * 2'400);
+}
+
+TEST(CombBoundary, ATravelTouchingACornerOrRunningAlongAnEdgeStaysInside) {
+    // A square with a notch from the top whose tip (10, 6) is a corner the travel y = 6 touches,
+    // and a step whose edge y = 2 the travel y = 2 runs along.
+    const CombBoundary comb(Paths{{{0, 0},
+                                   {4'000, 0},
+                                   {4'000, 2'000},
+                                   {8'000, 2'000},
+                                   {8'000, 0},
+                                   {20'000, 0},
+                                   {20'000, 20'000},
+                                   {11'000, 20'000},
+                                   {10'000, 6'000},
+                                   {9'000, 20'000},
+                                   {0, 20'000}}});
+    EXPECT_TRUE(comb.straightInside({2'000, 6'000}, {18'000, 6'000}));
+    EXPECT_FALSE(comb.crossesBoundary({2'000, 6'000}, {18'000, 6'000}));
+    EXPECT_TRUE(comb.straightInside({1'000, 2'000}, {12'000, 2'000}));
+    // Through the step's corners into the gap below it: crosses.
+    EXPECT_FALSE(comb.straightInside({6'000, 1'000}, {6'000, 3'000}));
+    EXPECT_FALSE(comb.straightInside({2'000, 4'000}, {6'000, 0}));
+    const auto route = comb.route({2'000, 6'000}, {18'000, 6'000});
+    ASSERT_TRUE(route.has_value());
+    EXPECT_EQ(*route, (Path{{18'000, 6'000}}));
+}
+
+/// Whether the segment a–b stays in the closed even-odd area of `loops`: a, b and the middle of
+/// every piece between the points where it meets a loop (a corner, a crossing) are inside; nothing
+/// when a piece is shorter than 10 µm (its rounded middle may fall on either side).
+std::optional<bool> staysInside(const Paths& loops, const Point2& a, const Point2& b) {
+    const double dx = double(b.X - a.X), dy = double(b.Y - a.Y), length = std::hypot(dx, dy);
+    std::vector<double> ts{0.0, 1.0};
+    for (const Path& loop : loops) {
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            const Point2& p = loop[i];
+            const Point2& q = loop[(i + 1) % loop.size()];
+            const double ex = double(q.X - p.X), ey = double(q.Y - p.Y), den = dx * ey - dy * ex;
+            if (den != 0) {
+                const double t = (double(p.X - a.X) * ey - double(p.Y - a.Y) * ex) / den;
+                const double u = (double(p.X - a.X) * dy - double(p.Y - a.Y) * dx) / den;
+                if (t > 0 && t < 1 && u >= 0 && u <= 1)
+                    ts.push_back(t);
+            }
+            const double tp = (double(p.X - a.X) * dx + double(p.Y - a.Y) * dy) / (length * length);
+            if (tp > 0 && tp < 1)
+                ts.push_back(tp);  // a corner's projection: where the pieces may change side
+        }
+    }
+    std::sort(ts.begin(), ts.end());
+    if (!insideEvenOdd(loops, a) || !insideEvenOdd(loops, b))
+        return false;
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+        const double piece = (ts[k + 1] - ts[k]) * length;
+        if (piece < 0.01)
+            continue;  // the same point twice
+        if (piece < 10)
+            return std::nullopt;
+        const double t = (ts[k] + ts[k + 1]) / 2;
+        if (!insideEvenOdd(loops, {a.X + std::llround(t * dx), a.Y + std::llround(t * dy)}))
+            return false;
+    }
+    return true;
+}
+
+TEST(CombBoundary, StraightInsideThroughCornersAgreesWithThePiecesBetweenThem) {
+    // Segments through a corner of the rings or the star (random directions, both ends at random
+    // distances), so that most meet the boundary at a corner exactly.
+    Paths loops = twoRings();
+    for (Path& loop : loops) {
+        for (Point2& p : loop)
+            p.X += 60'000;
+    }
+    const Paths star = starWithHoles();
+    loops.insert(loops.end(), star.begin(), star.end());
+    const CombBoundary comb(loops);
+    std::uint64_t state = 4242;
+    auto next = [&] {
+        return coord_um((state = state * 6364136223846793005ULL + 1442695040888963407ULL) >> 33);
+    };
+    int straight = 0, crossing = 0;
+    for (int n = 0; n < 20'000; ++n) {
+        const Path& loop = loops[std::size_t(next()) % loops.size()];
+        const Point2 corner = loop[std::size_t(next()) % loop.size()];
+        const Point2 step{next() % 41 - 20, next() % 41 - 20};
+        if (step.X == 0 && step.Y == 0)
+            continue;
+        const coord_um before = next() % 400 + 1, after = next() % 400 + 1;
+        const Point2 a{corner.X - before * step.X, corner.Y - before * step.Y};
+        const Point2 b{corner.X + after * step.X, corner.Y + after * step.Y};
+        const std::optional<bool> stays = staysInside(loops, a, b);
+        if (!stays)
+            continue;
+        const bool expected = *stays;
+        ASSERT_EQ(comb.straightInside(a, b), expected) << a.X << "," << a.Y << " " << b.X << "," << b.Y;
+        straight += expected;
+        crossing += insideEvenOdd(loops, a) && insideEvenOdd(loops, b) && !expected;
+    }
+    EXPECT_GT(straight, 1'000);
+    EXPECT_GT(crossing, 1'000);
 }
 
 TEST(CombBoundary, InsideIsExactWhereDoublesRoundTheCrossing) {

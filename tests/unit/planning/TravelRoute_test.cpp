@@ -59,6 +59,34 @@ TEST(TravelRoute, CombsInsideAndMovesEndsInFromNearby) {
     EXPECT_TRUE(planTravel({1'000, 1'000}, {9'000, 9'000}, p).retract);
 }
 
+/// A regular 32-gon ring of radii r_in … r_out µm around the origin, a corner at (0, r).
+Paths ring(double r_in, double r_out) {
+    Paths loops(2);
+    for (int k = 0; k < 32; ++k) {
+        const double angle = 2 * 3.14159265358979 * k / 32 + 3.14159265358979 / 2;
+        loops[0].push_back({std::llround(r_out * std::cos(angle)), std::llround(r_out * std::sin(angle))});
+        loops[1].insert(loops[1].begin(),
+                        Point2{std::llround(r_in * std::cos(angle)), std::llround(r_in * std::sin(angle))});
+    }
+    return loops;
+}
+
+TEST(TravelRoute, BetweenTwoRingsThroughTheirCornersRetracts) {
+    // A tube's walls over its skin: the outline's walls (r 4.19 … 4.6 mm) and the hole's (r 2.4 …
+    // 2.81 mm) apart; the travel from one to the other along x = 0 meets both boundaries at corners.
+    Paths area = ring(4'190, 4'600);
+    const Paths hole = ring(2'400, 2'810);
+    area.insert(area.end(), hole.begin(), hole.end());
+    const CombBoundary comb(area);
+    TravelParams p = params();
+    p.comb = &comb;
+    p.comb_move_inside_um = 1'600;
+    EXPECT_TRUE(planTravel({0, 4'800}, {0, 2'600}, p).retract);  // from the outer wall's centre line
+    EXPECT_TRUE(planTravel({0, 4'400}, {0, 2'600}, p).retract);
+    p.retraction_min_travel_um = 2'250;  // shorter than that: no retraction
+    EXPECT_FALSE(planTravel({0, 4'800}, {0, 2'600}, p).retract);
+}
+
 TEST(TravelRoute, ThroughTheAirAroundTheOtherParts) {
     const CombBoundary free(freeAroundThreeParts());
     TravelParams p = params();
