@@ -24,6 +24,10 @@ Paths disallowedArea(const Paths& model, const Paths& own_overhang, const Suppor
 }
 
 constexpr coord_um kCleanUm = 5;  // the support meshes' support, every layer (must not accumulate)
+// The model's outlines, once per layer, for speed (CuraEngine does not simplify them): a vertex within
+// 25 µm of its neighbours' line goes. Straight-edged models keep every corner (their bevels included);
+// on armadillo52k with support the support takes about 1.5 times as long without it.
+constexpr coord_um kSimplifyUm = 25;
 constexpr double kCuraMiterLimit = 1.2;
 constexpr double kSmoothingAngleDegrees = 135;  // CuraEngine's: sharper notches are filled
 
@@ -229,11 +233,12 @@ Overhangs detectOverhangs(const std::vector<SlicedLayer>& layers, const std::vec
     return result;
 }
 
-std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& model,
+std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& outlines,
                                                    const Overhangs& overhangs, const SupportAreaParams& p,
                                                    int threads, const SupportMeshAreas& meshes) {
-    const std::size_t n = model.size();
-    std::vector<Paths> blocked(n);  // the model here and bottom_gap layers below (support meshes)
+    const std::size_t n = outlines.size();
+    std::vector<Paths> model(n), blocked(n);  // blocked: the model here and bottom_gap layers below
+    parallelFor(n, threads, [&](std::size_t i) { model[i] = cleanPolygons(outlines[i], kSimplifyUm); });
     const std::size_t gap = static_cast<std::size_t>(std::max(0, p.bottom_gap_layers));
     parallelFor(n, threads, [&](std::size_t i) {
         blocked[i] = gap > 0 && i >= gap ? unionOf(model[i], model[i - gap]) : model[i];
@@ -261,7 +266,7 @@ std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& mod
     if (p.buildplate_only)
         keepColumnsOnThePlate(out);
     removeFloating(out, threads);
-    splitInterfaces(out, model, p, threads);
+    splitInterfaces(out, outlines, p, threads);  // the outlines as they are, as CuraEngine
     return out;
 }
 

@@ -13,7 +13,8 @@
 //     outward (its notches sharper than 135° filled, toolpaths/support/SupportSmoothing.h);
 //     then the model itself is cut out (not on layer 0), and after that the model bottom_gap =
 //     ceil(support_bottom_distance / layer_height) layers below (the support stops that far above it),
-//     on slopes in stairs (toolpaths/support/SupportStairs.h); nothing is simplified;
+//     on slopes in stairs (toolpaths/support/SupportStairs.h); the support is not simplified (the
+//     model is, by 25 µm, for speed: not on the interfaces);
 //   - conical support (support_conical_enabled, angle ≠ 0): on the way down the support from above
 //     is first shrunk by layer_thickness · (tan(support_conical_angle) − 0.01) (a negative angle
 //     grows it by layer_thickness · (tan(−angle) − 0.01)), except its parts narrower than
