@@ -145,6 +145,12 @@ Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit) 
     return offsetWith(polygons, delta_um, ClipperLib::jtMiter, miter_limit);
 }
 
+Paths offsetSquare(const Paths& polygons, coord_um delta_um) {
+    if (polygons.empty() || delta_um == 0)
+        return polygons;
+    return offsetWith(polygons, delta_um, ClipperLib::jtSquare);
+}
+
 Paths openPolygons(const Paths& polygons, coord_um radius_um, Loops loops) {
     if (radius_um <= 0)
         return polygons;

@@ -27,6 +27,10 @@ Paths offsetMiter(const Paths& polygons, coord_um delta_um, Loops loops = Loops:
 /// about 113° are bevelled).
 Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit);
 
+/// Offset with squared joins (Clipper's jtSquare, as CuraEngine 4.13's Polygons::offset(d, jtSquare)):
+/// every convex corner is cut off square, d from the corner along its bisector.
+Paths offsetSquare(const Paths& polygons, coord_um delta_um);
+
 /// Removes the parts narrower than 2·radius (erode, then grow back with mitred joins), so the
 /// corners of what is left stay as they were. (The erosion's output is united: only the first
 /// offset unites `polygons`, and not for Loops::United.)

@@ -31,6 +31,55 @@ std::vector<Paths> unitedModel(const ToolpathInput& input, int threads) {
     return model;
 }
 
+/// Whether any layer of the mesh has a print outline of its own (MeshLayerGroups::print_outline).
+bool hasPrintOutlines(const MeshToolpaths& mesh) {
+    return std::any_of(mesh.layers.begin(), mesh.layers.end(),
+                       [](const MeshLayerGroups& layer) { return layer.print_outline.has_value(); });
+}
+
+/// The mesh's outlines on layer i as its support sees them: the print outline where the layer has
+/// one, else the sliced outlines.
+const Paths& supportOutline(const MeshToolpaths& toolpaths, const std::vector<SlicedLayer>& sliced,
+                            std::size_t i) {
+    if (i < toolpaths.layers.size() && toolpaths.layers[i].print_outline)
+        return *toolpaths.layers[i].print_outline;
+    return sliced[i].outlines;
+}
+
+/// The model as its support sees it, as CuraEngine 4.13 (its storage's layer outlines): unitedModel
+/// with each mesh's print outlines.
+std::vector<Paths> supportModel(const ToolpathInput& input, const std::vector<MeshToolpaths>& meshes,
+                                int threads) {
+    std::vector<Paths> model(input.heights.size());
+    parallelFor(model.size(), threads, [&](std::size_t i) {
+        Paths all;
+        for (std::size_t m = 0; m < input.meshes.size(); ++m) {
+            const ToolpathMeshInput& mesh = input.meshes[m];
+            if (!mesh.role.printsAlone() || i >= mesh.layers->size())
+                continue;
+            const Paths& outline = supportOutline(meshes[m], *mesh.layers, i);
+            all.insert(all.end(), outline.begin(), outline.end());
+        }
+        model[i] = input.meshes.size() > 1 ? unionOf(all) : std::move(all);
+    });
+    return model;
+}
+
+/// Per mesh its sliced layers with the print outlines as outlines (for its overhangs); empty for a
+/// mesh without print outlines.
+std::vector<std::vector<SlicedLayer>> printOutlineLayers(const ToolpathInput& input,
+                                                         const std::vector<MeshToolpaths>& meshes) {
+    std::vector<std::vector<SlicedLayer>> out(input.meshes.size());
+    for (std::size_t m = 0; m < input.meshes.size(); ++m) {
+        if (!input.meshes[m].role.printsAlone() || !hasPrintOutlines(meshes[m]))
+            continue;
+        out[m] = *input.meshes[m].layers;
+        for (std::size_t i = 0; i < out[m].size(); ++i)
+            out[m][i].outlines = supportOutline(meshes[m], *input.meshes[m].layers, i);
+    }
+    return out;
+}
+
 void collect(const std::vector<ExtrusionPath>& paths, std::set<int>& used) {
     for (const ExtrusionPath& path : paths)
         used.insert(path.extruder);
@@ -150,11 +199,16 @@ GroupToolpaths generateGroupToolpaths(const ToolpathInput& input, int threads) {
     const std::vector<Paths> model = unitedModel(input, threads);
 
     const RaftLayout raft = raftLayout(*input.global, input.extruders);
-    SupportInput support{input.global, input.extruders, &input.heights, {}, &model, raft.enabled, {}};
+    const std::vector<Paths> support_model = supportModel(input, result.meshes, threads);
+    const std::vector<std::vector<SlicedLayer>> print_outlines = printOutlineLayers(input, result.meshes);
+    SupportInput support{input.global, input.extruders, &input.heights, {}, &support_model, raft.enabled, {}};
     if (!raft.enabled && !model.empty())
         support.first_layer_exclusion = brimCoveredArea(*input.global, input.extruders, model[0]);
-    for (const ToolpathMeshInput& mesh : input.meshes)
-        support.meshes.push_back({mesh.settings, mesh.layers, mesh.role});
+    for (std::size_t m = 0; m < input.meshes.size(); ++m) {
+        const ToolpathMeshInput& mesh = input.meshes[m];
+        support.meshes.push_back({mesh.settings, mesh.layers, mesh.role,
+                                  print_outlines[m].empty() ? nullptr : &print_outlines[m]});
+    }
     SupportResult support_result = generateSupport(support, threads);
     result.support = std::move(support_result.paths);
     for (MeshToolpaths& mesh : result.meshes) {

@@ -93,6 +93,12 @@ bool fillsPerimeterGaps(const Settings& s) {
     return !(s.text(key::fill_perimeter_gaps) == "nowhere") && !s.boolean(key::magic_spiralize);
 }
 
+/// Whether the layer's print outline is its outer wall's (MeshLayerGroups::print_outline): as CuraEngine
+/// 4.13, with support_enable, no fill_outline_gaps and walls on the layer.
+bool outlinedByOuterWall(const Settings& s, const WallParams& p) {
+    return s.boolean(key::support_enable) && !s.boolean(key::fill_outline_gaps) && p.wall_count > 0;
+}
+
 WallParams wallParams(const Settings& s, const MeshStyles& styles, const SkinReferences& refs, int layer) {
     WallParams p;
     p.top_reference = refs.top.wall;
@@ -483,6 +489,8 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
                 .push_back(std::move(path));
         }
         out.walls[i].parts = splitIslands(outlines);
+        if (outlinedByOuterWall(settings, params))
+            out.walls[i].print_outline = offsetSquare(walls.outer_region, params.outer_width_um / 2);
         if (seam.type == SeamType::Back)
             out.walls[i].seam_position = seam.position_um;
         out.inner_areas[i] = std::move(walls.inner_area);

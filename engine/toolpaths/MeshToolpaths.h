@@ -57,6 +57,12 @@ struct MeshLayerGroups {
     /// lies in one of them (planning prints them part by part, planning/order/PartOrder.h). Empty in
     /// magic_mesh_surface_mode "surface".
     std::vector<Paths> parts;
+    /// CuraEngine 4.13's print outline, the model's outline as its support sees it (overhangs, the
+    /// model cut out, x/y distance, interfaces): with support_enable, no fill_outline_gaps and walls,
+    /// the outer wall's centre region (Walls.h: WallResult::outer_region) grown by half the outer
+    /// wall's width with squared corners, so a right-angled corner is cut 0.29 widths off and a part
+    /// too thin for a wall has none. Unset: the sliced outlines are that.
+    std::optional<Paths> print_outline;
     /// z_seam_type "back": the seam position (z_seam_relative applied), where CuraEngine starts
     /// looking for the first part; unset for the other seam types.
     std::optional<Point2> seam_position;

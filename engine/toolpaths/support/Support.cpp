@@ -336,9 +336,9 @@ Overhangs collectOverhangs(const SupportInput& in, int threads) {
     for (const SupportMesh& mesh : in.meshes) {
         if (!supportsOverhangs(mesh) || isTree(mesh))
             continue;
-        const Overhangs own =
-            detectOverhangs(*mesh.layers, *in.heights, mesh.settings->angleDegrees(key::support_angle),
-                            threads, blockers.empty() ? nullptr : &blockers);
+        const Overhangs own = detectOverhangs(mesh.print_outlines ? *mesh.print_outlines : *mesh.layers,
+                                              *in.heights, mesh.settings->angleDegrees(key::support_angle),
+                                              threads, blockers.empty() ? nullptr : &blockers);
         parallelFor(all.basic.size(), threads, [&](std::size_t i) {
             if (i >= own.basic.size())
                 return;
@@ -466,8 +466,9 @@ std::vector<SupportLayerAreas> treeAreas(const SupportInput& in, int threads) {
     for (const SupportMesh& mesh : in.meshes) {
         if (!supportsOverhangs(mesh) || !isTree(mesh))
             continue;
-        overhangs.push_back(detectOverhangs(*mesh.layers, *in.heights,
-                                            mesh.settings->angleDegrees(key::support_angle), threads));
+        overhangs.push_back(detectOverhangs(mesh.print_outlines ? *mesh.print_outlines : *mesh.layers,
+                                            *in.heights, mesh.settings->angleDegrees(key::support_angle),
+                                            threads));
         trees.push_back(&mesh);
     }
     if (trees.empty())

@@ -35,6 +35,9 @@ struct SupportMesh {
     /// even without support_enable; a support blocker (anti_overhang_mesh) takes its volume out of
     /// every overhang, so nothing under it is supported for it. Infill meshes take no part.
     VolumeRole role;
+    /// `layers` with the print outlines as outlines (toolpaths/MeshToolpaths.h:
+    /// MeshLayerGroups::print_outline), whose overhangs are supported, as CuraEngine 4.13; null: `layers`.
+    const std::vector<SlicedLayer>* print_outlines = nullptr;
 };
 
 struct SupportInput {
@@ -42,8 +45,9 @@ struct SupportInput {
     const std::vector<Settings>* extruders = nullptr;  ///< may be null or empty: global is used
     const std::vector<LayerZ>* heights = nullptr;
     std::vector<SupportMesh> meshes;
-    const std::vector<Paths>* model = nullptr;  ///< [layer] all meshes' outlines united
-    bool raft = false;                          ///< adhesion_type raft (see above)
+    /// [layer] all meshes' outlines united; their print outlines where they have them (as SupportMesh)
+    const std::vector<Paths>* model = nullptr;
+    bool raft = false;  ///< adhesion_type raft (see above)
     /// Where layer 0 has no support body or roof (brimCoveredArea: the brim replaces it).
     Paths first_layer_exclusion;
 };

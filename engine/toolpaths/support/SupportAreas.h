@@ -1,22 +1,26 @@
 #pragma once
-// Where support goes, per layer (Cura's support_* keys, CuraEngine 4.13's rules):
+// Where support goes, per layer (Cura's support_* keys, CuraEngine 4.13's rules and its order of
+// operations, so that its micrometres come out the same; the model's outlines are those the caller
+// gives, CuraEngine's print outlines: toolpaths/MeshToolpaths.h, MeshLayerGroups::print_outline):
 //   - overhang of layer n: the part of it farther than d = layer_thickness · (tan(support_angle) −
-//     0.01) outside layer n−1 (detectOverhangs; layer 0 rests on the plate); what gets supported is
-//     that grown by d + 0.1 mm within layer n, so the strips of consecutive layers join;
+//     0.01) µm, truncated, outside layer n−1 (detectOverhangs; layer 0 rests on the plate); what gets
+//     supported is that grown by d + 0.1 mm within layer n, so the strips of consecutive layers join
+//     (both offsets mitred, limit 1.2, their input united first);
 //   - the overhang of layer n is supported from layer n − top_gap − 1 downwards, top_gap =
 //     ceil(support_top_distance / layer_height) empty layers under the model; on the way down each
 //     layer's support is united with the one above, closed by support_join_distance (gaps
 //     narrower than twice that are filled, mitred joins, so that it does not drift) and smoothed
 //     outward (its notches sharper than 135° filled, toolpaths/support/SupportSmoothing.h);
-//     the model itself is cut out on the way down, and so is the model bottom_gap =
+//     then the model itself is cut out (not on layer 0), and after that the model bottom_gap =
 //     ceil(support_bottom_distance / layer_height) layers below (the support stops that far above it),
-//     on slopes in stairs (toolpaths/support/SupportStairs.h);
+//     on slopes in stairs (toolpaths/support/SupportStairs.h); the support is not simplified (the
+//     model is, by 25 µm, for speed: not on the interfaces);
 //   - conical support (support_conical_enabled, angle ≠ 0): on the way down the support from above
 //     is first shrunk by layer_thickness · (tan(support_conical_angle) − 0.01) (a negative angle
 //     grows it by layer_thickness · (tan(−angle) − 0.01)), except its parts narrower than
 //     support_conical_min_width, which go down as they are;
 //   - then (not propagated, as CuraEngine, so that support next to slopes survives) each layer is
-//     grown by support_offset, loses the model grown by support_xy_distance (with z_overrides_xy:
+//     grown by support_offset, loses the model grown by support_xy_distance (mitred; with z_overrides_xy:
 //     only support_xy_distance_overhang next to the layer's own overhang) and the model top_gap
 //     layers up, and islands under minimum_support_area; support_type buildplate keeps only
 //     columns that reach the plate; support with no support above or below it is dropped;

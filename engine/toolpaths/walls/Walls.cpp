@@ -189,6 +189,8 @@ WallResult generateWalls(const Paths& outlines, const WallParams& params) {
                                   : referenceRegion(parts, regions, depths, params.bottom_reference);
     if (params.roofing_reference >= 0)
         result.roofing_reference = referenceRegion(parts, regions, depths, params.roofing_reference);
+    if (!regions.empty())
+        result.outer_region = regions[0];
     return result;
 }
 

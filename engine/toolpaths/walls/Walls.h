@@ -69,6 +69,9 @@ struct WallResult {
     Paths perimeter_gaps;
     /// The gaps between the outline and the outer wall (WallParams::outline_gaps; OutlineGaps.h).
     Paths outline_gaps;
+    /// The outer wall's centre region, simplified (CuraEngine 4.13's insets[0] of every part; parts
+    /// too thin for a wall have none); empty without walls.
+    Paths outer_region;
 };
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params);
