@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <set>
 
@@ -16,6 +18,7 @@
 #include "planning/Temperatures.h"
 #include "planning/TravelAreas.h"
 #include "planning/order/PartOrder.h"
+#include "planning/order/SkinOrder.h"
 #include "toolpaths/core/FeatureStyle.h"
 
 namespace mixengine {
@@ -61,6 +64,7 @@ TravelParams travelParams(const Settings& s, int layer, coord_um thickness, cons
     p.travel_speed_mm_s = slowdownValue(s, key::speed_travel, key::speed_travel_layer_0, layer);
     p.retraction_enable = s.boolean(key::retraction_enable);
     p.retraction_min_travel_um = s.lengthMicrons(key::retraction_min_travel);
+    p.short_comb_min_um = s.lengthMicrons(key::machine_nozzle_tip_outer_diameter) / 2 * 2;
     p.layer_thickness_um = thickness;
     if (!s.boolean(key::magic_spiralize))
         p.wall_0_wipe_um = s.lengthMicrons(key::wall_0_wipe_dist);
@@ -88,6 +92,7 @@ struct LayerContext {
 struct OrderedGroup {
     std::vector<ExtrusionPath> paths;
     bool infill = false;  ///< ordered as infill (infillTravel)
+    bool skin = false;    ///< a part's skin: skin part by skin part (planning/order/SkinOrder.h)
 };
 
 /// The order of a mesh's groups on a layer: walls (inner first, or outer first — outerWallFirst),
@@ -106,7 +111,7 @@ std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s
     } else {
         order = {{first}, {second}};
     }
-    order.push_back({g.skin});
+    order.push_back({g.skin, false, true});
     order.push_back({g.infill, true});
     if (s.boolean(key::infill_before_walls))
         std::rotate(order.begin(), order.end() - 1, order.end());
@@ -119,6 +124,16 @@ std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s
 TravelParams infillTravel(TravelParams travel, const MeshLayerGroups& groups, const Settings& s) {
     travel.order_from = groups.infill_start;
     travel.comb_aware_order = s.boolean(key::infill_enable_travel_optimization);
+    return travel;
+}
+
+/// A skin stage's ordering: a fill of lines starting away from the seam is first looked for from
+/// the one of its ExtrusionPath::seam_avoiding_starts nearer to the head (the first when as near).
+TravelParams skinTravel(TravelParams travel, const std::vector<ExtrusionPath>& stage, const Point2& head) {
+    if (stage.empty() || !stage.front().seam_avoiding_starts)
+        return travel;
+    const std::array<Point2, 2>& starts = *stage.front().seam_avoiding_starts;
+    travel.order_from = distanceUm(starts[0], head) < distanceUm(starts[1], head) ? starts[0] : starts[1];
     return travel;
 }
 
@@ -138,6 +153,18 @@ struct MeshRun {
     bool marked = false;  ///< the mesh's marker is written
 };
 
+/// One stage of a skin part (planning/order/SkinOrder.h): its loops one by one, nearest vertex first
+/// (loopsNearestFirst), anything else ordered together (skinTravel).
+void planSkinStage(std::vector<ExtrusionPath> stage, MeshRun& run, Point2& head, PlannedLayer& planned) {
+    if (stage.front().skin_stage != 1) {
+        const TravelParams travel = skinTravel(run.travel, stage, head);
+        appendOrderedPaths(std::move(stage), travel, head, run.feature, planned.steps);
+        return;
+    }
+    for (ExtrusionPath& loop : loopsNearestFirst(std::move(stage), head))
+        appendOrderedPaths({std::move(loop)}, run.travel, head, run.feature, planned.steps);
+}
+
 /// The paths of `groups` (a part's, or those in no part) for the context's extruder, in groupOrder().
 void planGroups(const MeshLayerGroups& groups, MeshRun& run, Point2& head, PlannedLayer& planned) {
     const Settings& s = *run.mesh.settings;
@@ -148,6 +175,11 @@ void planGroups(const MeshLayerGroups& groups, MeshRun& run, Point2& head, Plann
         if (!run.marked)
             addMeshMarker(run.mesh_index, planned.steps);
         run.marked = true;
+        if (group.skin) {
+            for (std::vector<ExtrusionPath>& stage : skinPrintGroups(std::move(selected), head))
+                planSkinStage(std::move(stage), run, head, planned);
+            continue;
+        }
         appendOrderedPaths(std::move(selected),
                            group.infill ? infillTravel(run.travel, groups, s) : run.travel, head, run.feature,
                            planned.steps);

@@ -8,8 +8,8 @@
 // switched to on the layer, or as the tower's outermost extruder, then (prime_tower_wipe_enabled of
 // the extruder left) a travel to the tower's middle — its support, then every mesh in order, each
 // mesh's layer part by part in CuraEngine's part order (planning/order/PartOrder.h), each part's inner walls,
-// outer walls, skin, infill, then the mesh's paths in no part and its ironing — with travel,
-// retraction and the fan.
+// outer walls, skin (skin part by skin part, planning/order/SkinOrder.h), infill, then the mesh's paths
+// in no part and its ironing — with travel, retraction and the fan.
 // The first switch to an extruder in the print is followed by a Prime step (CuraEngine's prime train).
 // Travel combs inside the layer's comb area and goes around the parts through the air with
 // travel_avoid_other_parts (planning/TravelAreas.h).

@@ -201,10 +201,28 @@ std::optional<Path> aroundParts(const CombBoundary& free, const Point2& from, co
     return points;
 }
 
+namespace {
+
+/// A travel too short to retract: straight, or where long enough the way CuraEngine's comb takes
+/// (TravelRoute.h), never retracting.
+TravelRoute shortTravel(const Point2& from, const Point2& to, const TravelParams& params) {
+    TravelRoute travel{{to}, false};
+    if (!params.comb || distanceUm(from, to) < static_cast<double>(params.short_comb_min_um))
+        return travel;
+    std::optional<TravelRoute> way = combed(from, to, params);
+    if (!way)
+        way = betweenParts(from, to, params);
+    if (way)
+        travel.points = std::move(way->points);
+    return travel;
+}
+
+}  // namespace
+
 TravelRoute planTravel(const Point2& from, const Point2& to, const TravelParams& params) {
     const bool long_travel = distanceUm(from, to) > static_cast<double>(params.retraction_min_travel_um);
     if (!long_travel)
-        return {{to}, false};
+        return shortTravel(from, to, params);
     if (params.comb) {
         if (std::optional<TravelRoute> travel = combed(from, to, params))
             return *travel;

@@ -20,7 +20,9 @@
 //   - a retracting travel to a mesh path whose end lies outside the comb area (an outer wall's
 //     start) goes to that end moved into the comb area first and primes there, before its last move
 //     (CuraEngine's unretract_before_last_travel_move; through the air: after entering the part);
-//   - a travel no longer than retraction_min_travel goes straight and never retracts;
+//   - a travel no longer than retraction_min_travel never retracts; it goes straight when shorter
+//     than short_comb_min_um (CuraEngine's comb ignores travels shorter than the nozzle tip's outer
+//     diameter), else the way it would go if longer (combed, or between parts), without retracting;
 //   - meshfix_maximum_travel_resolution: a way point of a combed or around-the-parts travel closer
 //     than that to the way point kept before it is left out (the travel's end is always kept).
 #include <optional>
@@ -34,6 +36,9 @@ struct TravelParams {
     double travel_speed_mm_s = 150;
     bool retraction_enable = true;
     coord_um retraction_min_travel_um = 1500;
+    /// Travels shorter than this go straight (CuraEngine: machine_nozzle_tip_outer_diameter, an
+    /// even number of microns); longer ones follow the comb area even when too short to retract.
+    coord_um short_comb_min_um = 1000;
     coord_um layer_thickness_um = 200;
     const CombBoundary* comb = nullptr;  ///< mesh travels: where they comb; nullptr for the rest
     /// How far outside the comb area a travel's end may lie and still comb, moved straight to the

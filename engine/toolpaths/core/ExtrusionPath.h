@@ -1,5 +1,6 @@
 #pragma once
 // The output of toolpath generation: typed extrusion lines per layer, plain data.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -66,6 +67,17 @@ struct ExtrusionPath {
     /// printed one after the other in list order once the first of them is reached (a monotonic
     /// skin); the planner still picks which end of each line to start from.
     std::uint32_t sequence = 0;
+    /// Skin (toolpaths/skin/SkinPaths.h): the skin part the path fills, numbered from 1 within the
+    /// layer (0: none), and its stage there (1 the part's loops, 2 roofing, 3 skin fill, 4 the lines
+    /// filling a concentric fill's gaps). The planner prints a skin part's paths together, stage by
+    /// stage, as CuraEngine 4.13 prints each skin part.
+    std::uint32_t skin_part = 0;
+    std::uint8_t skin_stage = 0;
+    /// A skin or roofing fill of lines (not monotonic, top_bottom_pattern lines or zigzag): the two
+    /// points of its area the planner starts looking for its first line from — the one nearer to
+    /// the head — as CuraEngine 4.13 starts such a fill away from the seam
+    /// (FffGcodeWriter::getSeamAvoidingLocation). Set on every line of the fill, or on none.
+    std::optional<std::array<Point2, 2>> seam_avoiding_starts;
     /// Printed in the order of its group, not nearest first (monotonic ironing); only the end to
     /// start from is chosen. Set on every path of the group or on none.
     bool keep_order = false;

@@ -1,5 +1,9 @@
 #include "toolpaths/skin/SkinPaths.h"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "geometry/PolygonOps.h"
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/infill/LineInfill.h"
@@ -17,7 +21,16 @@ struct SkinOutput {
     std::vector<ExtrusionPath>& paths;
     Paths gaps;  ///< left by concentric fills
     std::uint32_t sequences = 0;
+    std::uint32_t parts = 0;  ///< skin parts numbered so far
 };
+
+/// Marks the paths from `from` on as stage `stage` of skin part `part` (ExtrusionPath::skin_part).
+void markStage(std::vector<ExtrusionPath>& paths, std::size_t from, std::uint32_t part, std::uint8_t stage) {
+    for (std::size_t i = from; i < paths.size(); ++i) {
+        paths[i].skin_part = part;
+        paths[i].skin_stage = stage;
+    }
+}
 
 /// `loops` simplified with the params' resolution and deviation (both 0: kept); loops left with fewer
 /// than three vertices go.
@@ -96,6 +109,47 @@ void appendMonotonic(std::vector<ExtrusionPath> lines, const SkinFillParams& fil
     }
 }
 
+/// The vertex of `area` nearest to `target` (the first of equals).
+Point2 nearestVertex(const Paths& area, const Point2& target) {
+    Point2 best = area.front().front();
+    double best_distance = -1;
+    for (const Path& loop : area) {
+        for (const Point2& p : loop) {
+            const double dx = double(p.X - target.X), dy = double(p.Y - target.Y);
+            if (best_distance < 0 || dx * dx + dy * dy < best_distance)
+                best_distance = dx * dx + dy * dy, best = p;
+        }
+    }
+    return best;
+}
+
+/// CuraEngine's two candidates for where a fill of lines at `angle_degrees` starts away from the
+/// seam: the vertices of `area` nearest to the two points far out from its bounding box's middle,
+/// on either side, across the lines' direction.
+std::array<Point2, 2> seamAvoidingStarts(const Paths& area, double angle_degrees) {
+    coord_um x0 = area.front().front().X, x1 = x0, y0 = area.front().front().Y, y1 = y0;
+    for (const Path& loop : area) {
+        for (const Point2& p : loop) {
+            x0 = std::min(x0, p.X), x1 = std::max(x1, p.X), y0 = std::min(y0, p.Y), y1 = std::max(y1, p.Y);
+        }
+    }
+    const Point2 middle{(x0 + x1) / 2, (y0 + y1) / 2};
+    const double reach = std::hypot(double(x1 - middle.X), double(y1 - middle.Y)) * 100;
+    const double turn = double((90 - static_cast<int>(angle_degrees)) % 360) * std::numbers::pi / 180;
+    const Point2 across{static_cast<coord_um>(-reach * std::sin(turn)),
+                        static_cast<coord_um>(reach * std::cos(turn))};
+    return {nearestVertex(area, {middle.X + across.X, middle.Y + across.Y}),
+            nearestVertex(area, {middle.X - across.X, middle.Y - across.Y})};
+}
+
+/// Whether CuraEngine starts a fill away from the seam: lines not in monotonic order, the layer's
+/// top/bottom pattern (what it checks, also for roofing) lines or zigzag.
+bool startsAwayFromSeam(const SkinFillParams& fill, const SkinPathParams& params) {
+    const InfillPattern layer_pattern = params.skin.pattern;
+    return !fill.monotonic &&
+           (layer_pattern == InfillPattern::Lines || layer_pattern == InfillPattern::ZigZag);
+}
+
 void appendFill(const Paths& area, const SkinFillParams& fill, const SkinPathParams& params,
                 SkinOutput& out) {
     if (area.empty())
@@ -113,8 +167,14 @@ void appendFill(const Paths& area, const SkinFillParams& fill, const SkinPathPar
         appendMonotonic(std::move(lines), fill, out);
         return;
     }
-    for (ExtrusionPath& line : lines)
+    const std::optional<std::array<Point2, 2>> starts =
+        startsAwayFromSeam(fill, params) && !area.front().empty()
+            ? std::optional<std::array<Point2, 2>>(seamAvoidingStarts(area, fill.angle_degrees))
+            : std::nullopt;
+    for (ExtrusionPath& line : lines) {
+        line.seam_avoiding_starts = starts;
         out.paths.push_back(std::move(line));
+    }
 }
 
 void appendGapLines(const Paths& gaps, const SkinPathParams& params, std::vector<ExtrusionPath>& out) {
@@ -140,8 +200,13 @@ void appendSkinPart(const Paths& part, const Paths& roofing_area, const SkinPath
         loops.clear();  // all roofing, concentric: its loops replace the skin's
         roof_fill = intersectAll(part, roofing_area);
     }
+    const std::uint32_t number = ++out.parts;
+    std::size_t stage_start = out.paths.size();
     appendStyledLoops(loops, Feature::Skin, p.skin.style, out.paths);
+    markStage(out.paths, stage_start, number, 1);
+    stage_start = out.paths.size();
     appendFill(roof_fill, p.roofing, p, out);
+    markStage(out.paths, stage_start, number, 2);
     const std::optional<SkinFillParams> bridge = p.bridge ? p.bridge(part) : std::nullopt;
     const std::size_t before = out.paths.size();
     appendFill(skin_fill, bridge ? *bridge : p.skin, p, out);
@@ -149,7 +214,10 @@ void appendSkinPart(const Paths& part, const Paths& roofing_area, const SkinPath
         out.paths[i].bridge = true;
         out.paths[i].fan_ratio = bridge->bridge_fan_ratio.value_or(-1);
     }
+    markStage(out.paths, before, number, 3);
+    stage_start = out.paths.size();
     appendGapLines(out.gaps, p, out.paths);
+    markStage(out.paths, stage_start, number, 4);
     out.gaps.clear();
 }
 
@@ -160,7 +228,7 @@ std::vector<ExtrusionPath> generateSkinPaths(const Paths& skin_area, const Paths
     std::vector<ExtrusionPath> paths;
     if (skin_area.empty() || params.skin.style.width_um <= 0)
         return paths;
-    SkinOutput out{paths, {}, 0};
+    SkinOutput out{paths, {}, 0, 0};
     for (const Paths& part : splitIslands(skin_area))
         appendSkinPart(part, roofing_area, params, out);
     return paths;

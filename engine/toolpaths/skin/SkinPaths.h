@@ -16,7 +16,13 @@
 // one line width apart, the first half a line width (less the overlap) inside its area. With
 // `monotonic` (skin_monotonic / roofing_monotonic) a fill's lines are one sequence in monotonic
 // order (toolpaths/skin/MonotonicOrder.h, adjacency 1.1 line widths), numbered from 1 within the result.
-// Where a loop starts, and the order of everything else, is left to the planner.
+// Each path is marked with its skin part (numbered from 1) and its stage 1 to 4 above (roofing 2, skin
+// 3; ExtrusionPath::skin_part / skin_stage): the planner prints a skin part's paths together, stage by
+// stage (planning/order/SkinOrder.h). A fill of lines that is not monotonic, on a layer whose
+// top/bottom pattern is lines or zigzag, carries the two points CuraEngine starts it from away from
+// the seam (ExtrusionPath::seam_avoiding_starts: the fill area's vertices nearest to two points far
+// out from its bounding box's middle, across the lines). Where a loop starts, and the order within
+// a stage, is left to the planner.
 #include <functional>
 #include <optional>
 #include <vector>

@@ -40,6 +40,32 @@ TEST(TravelRoute, ShortTravelGoesStraightWithoutRetracting) {
     EXPECT_EQ(short_one.points, (Path{{2'000, 1'500}}));
 }
 
+TEST(TravelRoute, TravelTooShortToRetractStillCombsWhenNotShorterThanTheNozzleTip) {
+    // A U: two 10 mm arms with a 0.6 mm slot between them (x 10 … 10.6 mm) down to y = 2 mm.
+    const Path u{{0, 0},          {20'600, 0},     {20'600, 10'000}, {10'600, 10'000},
+                 {10'600, 2'000}, {10'000, 2'000}, {10'000, 10'000}, {0, 10'000}};
+    const CombBoundary comb(Paths{u});
+    TravelParams p = params();
+    p.comb = &comb;
+    p.short_comb_min_um = 1'000;
+    // 1.2 mm across the slot (under retraction_min_travel): around the slot's bottom, no retraction.
+    const TravelRoute combed = planTravel({9'700, 9'000}, {10'900, 9'000}, p);
+    EXPECT_FALSE(combed.retract);
+    ASSERT_GE(combed.points.size(), 3U);
+    EXPECT_EQ(combed.points.back(), (Point2{10'900, 9'000}));
+    for (const Point2& q : combed.points)
+        EXPECT_TRUE(comb.inside(q)) << q.X << "," << q.Y;
+    double length = 0;
+    Point2 at{9'700, 9'000};
+    for (const Point2& q : combed.points)
+        length += distanceUm(at, q), at = q;
+    EXPECT_GT(length, 14'000.0);  // down to y ≈ 2 mm and up again
+    // 0.9 mm across: shorter than the nozzle tip, straight over the slot.
+    const TravelRoute straight = planTravel({9'850, 9'000}, {10'750, 9'000}, p);
+    EXPECT_FALSE(straight.retract);
+    EXPECT_EQ(straight.points, (Path{{10'750, 9'000}}));
+}
+
 TEST(TravelRoute, CombsInsideAndMovesEndsInFromNearby) {
     const CombBoundary comb({square(0, 0, 10'000)});
     TravelParams p = params();

@@ -125,5 +125,50 @@ TEST(SkinPaths, EachIslandIsAPartWithItsOwnLoop) {
     EXPECT_EQ(std::count_if(paths.begin(), paths.end(), [](const ExtrusionPath& q) { return q.closed; }), 2);
 }
 
+TEST(SkinPaths, EachIslandIsNumberedAndItsPathsStaged) {
+    SkinPathParams p = params();
+    p.skin.pattern = InfillPattern::Concentric;
+    p.gap_style = style(20, 200);
+    const Paths skin{square(0, 0, 10'620), square(20'000, 0, 5'000)};
+    const std::vector<ExtrusionPath> paths = generateSkinPaths(skin, {}, p);
+    p.skin.pattern = InfillPattern::Lines;
+    const std::vector<ExtrusionPath> lines = generateSkinPaths(skin, {}, p);
+    // Concentric (no outline loops): the fill's loops are stage 3, the lines in their gaps stage 4.
+    for (const ExtrusionPath& path : paths) {
+        EXPECT_EQ(path.skin_part, path.points.front().X < 15'000 ? 1U : 2U);
+        EXPECT_EQ(path.skin_stage, path.closed ? 3 : 4);
+    }
+    // Lines: each part's outline loop is stage 1, its lines stage 3.
+    for (const ExtrusionPath& path : lines) {
+        EXPECT_EQ(path.skin_part, path.points.front().X < 15'000 ? 1U : 2U);
+        EXPECT_EQ(path.skin_stage, path.closed ? 1 : 3);
+    }
+}
+
+TEST(SkinPaths, LinesStartLookingFromTheAreaCornersAcrossTheirDirection) {
+    // A 10 mm square skin: its loop 0.19 mm in, the fill area 0.2 mm further in (0.39 … 9.61 mm).
+    // Lines at 45°: CuraEngine looks from far out across them, at the top left and the bottom right
+    // of the fill area's box, and takes its corners nearest to those points.
+    SkinPathParams p = params();
+    p.skin.angle_degrees = 45;
+    const std::vector<ExtrusionPath> paths = generateSkinPaths({square(0, 0, 10'000)}, {}, p);
+    const std::array<Point2, 2> expected{Point2{390, 9'610}, Point2{9'610, 390}};
+    std::size_t lines = 0;
+    for (const ExtrusionPath& path : paths) {
+        if (path.closed) {
+            EXPECT_FALSE(path.seam_avoiding_starts);
+            continue;
+        }
+        ++lines;
+        ASSERT_TRUE(path.seam_avoiding_starts);
+        EXPECT_EQ(*path.seam_avoiding_starts, expected);
+    }
+    EXPECT_GT(lines, 0U);
+    // Monotonic lines and concentric fills start from the head.
+    p.skin.monotonic = true;
+    for (const ExtrusionPath& path : generateSkinPaths({square(0, 0, 10'000)}, {}, p))
+        EXPECT_FALSE(path.seam_avoiding_starts);
+}
+
 }  // namespace
 }  // namespace mixengine
