@@ -72,12 +72,7 @@ def test_one_factor_for_every_extrusion(tmp_path):
             assert per_layer[layer] <= {600.0, 1200.0, 1500.0}, (name, layer, per_layer[layer])
 
 
-@pytest.mark.parametrize("setting", ["speed_print=75", pytest.param("speed_wall=37.5", marks=pytest.mark.xfail(
-    strict=True, reason="settings/mixengine/not_honoured.json: slivers layer 3 sits at the edge of the minimum "
-                        "layer time; with faster walls MixEngine's paths (3 retractions fewer: noskin combing; "
-                        "shorter retracted travel) take about 9.5 s where CuraEngine's take 10.5 s, so MixEngine "
-                        "slows the layer")), "speed_wall_0=37.5",
-                                     "speed_topbottom=37.5",
+@pytest.mark.parametrize("setting", ["speed_print=75", "speed_wall=37.5", "speed_wall_0=37.5", "speed_topbottom=37.5",
                                      "speed_infill=75", "small_feature_max_length=1", "small_hole_max_size=1"])
 def test_faster_speeds_change_the_slivers_print_as_curaengine(setting):
     key, value = setting.split("=")
