@@ -96,8 +96,9 @@ struct OrderedGroup {
 };
 
 /// The order of a mesh's groups on a layer: walls (inner first, or outer first — outerWallFirst),
-/// skin, infill — infill first with infill_before_walls — and ironing last. Walls grouped by outline
-/// (sequences, optimize_wall_printing_order) are one group, so that each outline's loops print together.
+/// outline gaps, infill, skin — infill first with infill_before_walls — and ironing last. Walls grouped by
+/// outline (sequences, optimize_wall_printing_order) are one group, so that each outline's loops print
+/// together.
 std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s, int layer) {
     const bool outer_first = outerWallFirst(s, layer);
     const std::vector<ExtrusionPath>& first = outer_first ? g.outer_walls : g.inner_walls;
@@ -111,10 +112,19 @@ std::vector<OrderedGroup> groupOrder(const MeshLayerGroups& g, const Settings& s
     } else {
         order = {{first}, {second}};
     }
-    order.push_back({g.skin, false, true});
+    // As CuraEngine 4.13 prints a part (addMeshPartToGCode): the outline gaps (the skin group's
+    // leading lines of no skin part that fill no perimeter gap), the infill, then the skin and the
+    // perimeter gaps; the infill first of all with infill_before_walls.
+    const auto outline_gaps_end = std::find_if(
+        g.skin.begin(), g.skin.end(), [](const ExtrusionPath& p) { return p.skin_part != 0 || p.mergeable; });
+    if (outline_gaps_end != g.skin.begin())
+        order.push_back({std::vector<ExtrusionPath>(g.skin.begin(), outline_gaps_end), false, true});
+    const std::size_t infill = order.size();
     order.push_back({g.infill, true});
+    order.push_back({std::vector<ExtrusionPath>(outline_gaps_end, g.skin.end()), false, true});
     if (s.boolean(key::infill_before_walls))
-        std::rotate(order.begin(), order.end() - 1, order.end());
+        std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(infill),
+                    order.begin() + static_cast<std::ptrdiff_t>(infill) + 1);
     order.push_back({g.ironing});
     return order;
 }
