@@ -3,6 +3,8 @@
 #include <limits>
 #include <map>
 
+#include "geometry/PointQueries.h"
+
 namespace mixengine {
 namespace {
 
@@ -13,23 +15,22 @@ struct SkinPart {
     Path all_points;
 };
 
-double squared(const Point2& a, const Point2& b) {
-    const double dx = double(a.X - b.X), dy = double(a.Y - b.Y);
-    return dx * dx + dy * dy;
-}
-
 const Path& representation(const SkinPart& part) {
     return part.loop_points.empty() ? part.all_points : part.loop_points;
 }
 
-/// The part not `done` with the vertex nearest to `from` (parts.size() when none is left), and that vertex.
-std::size_t nearestSkinPart(const std::vector<SkinPart>& parts, const std::vector<bool>& done,
-                            const Point2& from, Point2& vertex) {
-    std::size_t best = parts.size();
+/// Of the point sets `points(i)` (i < count) not `done`, the one with the vertex nearest to `from` (the
+/// first of equals; `count` when none is left), and that vertex.
+template <typename Points>
+std::size_t nearestUndone(std::size_t count, Points points, const std::vector<bool>& done, const Point2& from,
+                          Point2& vertex) {
+    std::size_t best = count;
     double best_distance = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < parts.size(); ++i) {
-        for (const Point2& p : done[i] ? Path{} : representation(parts[i])) {
-            const double d = squared(p, from);
+    for (std::size_t i = 0; i < count; ++i) {
+        if (done[i])
+            continue;
+        for (const Point2& p : points(i)) {
+            const double d = distance2(p, from);
             if (d < best_distance)
                 best_distance = d, best = i, vertex = p;
         }
@@ -54,15 +55,9 @@ std::vector<ExtrusionPath> loopsNearestFirst(std::vector<ExtrusionPath> loops, c
     std::vector<bool> done(loops.size(), false);
     Point2 at = from;
     for (std::size_t n = 0; n < loops.size(); ++n) {
-        std::size_t best = loops.size();
-        double best_distance = std::numeric_limits<double>::infinity();
         Point2 vertex = at;
-        for (std::size_t i = 0; i < loops.size(); ++i) {
-            for (const Point2& p : done[i] ? Path{} : loops[i].points) {
-                if (squared(p, at) < best_distance)
-                    best_distance = squared(p, at), best = i, vertex = p;
-            }
-        }
+        const std::size_t best = nearestUndone(
+            loops.size(), [&](std::size_t i) -> const Path& { return loops[i].points; }, done, at, vertex);
         done[best] = true;
         at = vertex;
         ordered.push_back(std::move(loops[best]));
@@ -88,7 +83,9 @@ std::vector<std::vector<ExtrusionPath>> skinPrintGroups(std::vector<ExtrusionPat
     Point2 at = from;
     for (;;) {
         Point2 vertex = at;
-        const std::size_t next = nearestSkinPart(parts, done, at, vertex);
+        const std::size_t next = nearestUndone(
+            parts.size(), [&](std::size_t i) -> const Path& { return representation(parts[i]); }, done, at,
+            vertex);
         if (next == parts.size())
             break;
         done[next] = true;

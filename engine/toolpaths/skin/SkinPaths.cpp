@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/PointQueries.h"
 #include "geometry/PolygonOps.h"
 #include "slicing/OutlineCleanup.h"
 #include "toolpaths/infill/LineInfill.h"
@@ -115,9 +116,9 @@ Point2 nearestVertex(const Paths& area, const Point2& target) {
     double best_distance = -1;
     for (const Path& loop : area) {
         for (const Point2& p : loop) {
-            const double dx = double(p.X - target.X), dy = double(p.Y - target.Y);
-            if (best_distance < 0 || dx * dx + dy * dy < best_distance)
-                best_distance = dx * dx + dy * dy, best = p;
+            const double d = distance2(p, target);
+            if (best_distance < 0 || d < best_distance)
+                best_distance = d, best = p;
         }
     }
     return best;
@@ -127,14 +128,9 @@ Point2 nearestVertex(const Paths& area, const Point2& target) {
 /// seam: the vertices of `area` nearest to the two points far out from its bounding box's middle,
 /// on either side, across the lines' direction.
 std::array<Point2, 2> seamAvoidingStarts(const Paths& area, double angle_degrees) {
-    coord_um x0 = area.front().front().X, x1 = x0, y0 = area.front().front().Y, y1 = y0;
-    for (const Path& loop : area) {
-        for (const Point2& p : loop) {
-            x0 = std::min(x0, p.X), x1 = std::max(x1, p.X), y0 = std::min(y0, p.Y), y1 = std::max(y1, p.Y);
-        }
-    }
-    const Point2 middle{(x0 + x1) / 2, (y0 + y1) / 2};
-    const double reach = std::hypot(double(x1 - middle.X), double(y1 - middle.Y)) * 100;
+    const Box2 box = boundsOf(area);
+    const Point2 middle{(box.left + box.right) / 2, (box.top + box.bottom) / 2};
+    const double reach = std::hypot(double(box.right - middle.X), double(box.bottom - middle.Y)) * 100;
     const double turn = double((90 - static_cast<int>(angle_degrees)) % 360) * std::numbers::pi / 180;
     const Point2 across{static_cast<coord_um>(-reach * std::sin(turn)),
                         static_cast<coord_um>(reach * std::cos(turn))};
