@@ -117,6 +117,16 @@ void removeFloating(std::vector<SupportLayerAreas>& layers, int threads) {
         layers[i].support = std::move(kept[i]);
 }
 
+/// Per layer the model there and `bottom_gap_layers` below (what support meshes' support may not enter).
+std::vector<Paths> blockedByModel(const std::vector<Paths>& model, int bottom_gap_layers, int threads) {
+    std::vector<Paths> blocked(model.size());
+    const std::size_t gap = static_cast<std::size_t>(std::max(0, bottom_gap_layers));
+    parallelFor(model.size(), threads, [&](std::size_t i) {
+        blocked[i] = gap > 0 && i >= gap ? unionOf(model[i], model[i - gap]) : model[i];
+    });
+    return blocked;
+}
+
 /// Top-down: the support meshes' areas, the drop-down ones carried down, less the model here and
 /// bottom_gap layers below.
 std::vector<Paths> supportMeshSupport(const SupportMeshAreas& meshes, const std::vector<Paths>& blocked) {
@@ -237,19 +247,18 @@ std::vector<SupportLayerAreas> computeSupportAreas(const std::vector<Paths>& out
                                                    const Overhangs& overhangs, const SupportAreaParams& p,
                                                    int threads, const SupportMeshAreas& meshes) {
     const std::size_t n = outlines.size();
-    std::vector<Paths> model(n), blocked(n);  // blocked: the model here and bottom_gap layers below
+    std::vector<Paths> model(n);
     parallelFor(n, threads, [&](std::size_t i) { model[i] = cleanPolygons(outlines[i], kSimplifyUm); });
-    const std::size_t gap = static_cast<std::size_t>(std::max(0, p.bottom_gap_layers));
-    parallelFor(n, threads, [&](std::size_t i) {
-        blocked[i] = gap > 0 && i >= gap ? unionOf(model[i], model[i - gap]) : model[i];
-    });
     const StairParams stair_params{p.stair_step_layers, p.stair_step_width_um, p.stair_min_slope_degrees,
                                    p.bottom_gap_layers};
     const std::vector<Paths> sloped = slopedAreas(model, stair_params, p.layer_height_um, threads);
     StairSteps stairs(&model, &sloped, stair_params);
     const std::vector<Paths> propagated =
         propagateDown(overhangs, model, p, p.stair_step_layers > 1 ? &stairs : nullptr);
-    const std::vector<Paths> from_meshes = supportMeshSupport(meshes, blocked);
+    const std::vector<Paths> from_meshes =
+        meshes.drop_down.empty() && meshes.in_place.empty()
+            ? std::vector<Paths>(n)
+            : supportMeshSupport(meshes, blockedByModel(model, p.bottom_gap_layers, threads));
     std::vector<SupportLayerAreas> out(n);
     const std::size_t top = static_cast<std::size_t>(std::max(0, p.top_gap_layers));
     parallelFor(n, threads, [&](std::size_t i) {
