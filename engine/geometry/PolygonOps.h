@@ -32,8 +32,9 @@ Paths offsetMiter(const Paths& polygons, coord_um delta_um, double miter_limit);
 Paths offsetSquare(const Paths& polygons, coord_um delta_um);
 
 /// Removes the parts narrower than 2·radius (erode, then grow back with mitred joins), so the
-/// corners of what is left stay as they were. (The erosion's output is united: only the first
-/// offset unites `polygons`, and not for Loops::United.)
+/// corners of what is left stay as they were. The erosion unites `polygons` unless Loops::United;
+/// the growth always unites the erosion's output, as CuraEngine 4.13's offset does: loops of it that
+/// touch at a vertex become one there (skipping that union moves gap lines on armadillo52k).
 Paths openPolygons(const Paths& polygons, coord_um radius_um, Loops loops = Loops::Any);
 
 Paths unionOf(const Paths& polygons);

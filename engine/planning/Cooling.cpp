@@ -434,7 +434,7 @@ std::vector<Unit> unitsOf(const std::vector<PlanStep>& steps, std::size_t from, 
 }
 
 /// The layer's steps again, without the dropped ones and with each merged line in place of its first.
-std::vector<PlanStep> rebuilt(const std::vector<PlanStep>& steps, const std::vector<bool>& dropped,
+std::vector<PlanStep> rebuilt(std::vector<PlanStep> steps, const std::vector<bool>& dropped,
                               const std::vector<std::optional<Merged>>& merged_at) {
     std::vector<PlanStep> out;
     out.reserve(steps.size());
@@ -443,9 +443,9 @@ std::vector<PlanStep> rebuilt(const std::vector<PlanStep>& steps, const std::vec
         if (dropped[s])
             continue;
         if (!merged_at[s]) {
-            out.push_back(steps[s]);
             if (isMotion(steps[s].kind))
                 head = steps[s].to;
+            out.push_back(std::move(steps[s]));
             continue;
         }
         const Merged& m = *merged_at[s];
@@ -492,7 +492,10 @@ void mergeGapLines(PlannedLayer& layer, int extruder, const std::function<GapMer
             extruder = steps[s].extruder;
         from = s + 1;
     }
-    steps = rebuilt(steps, dropped, merged_at);
+    const bool changed = std::any_of(merged_at.begin(), merged_at.end(), [](const auto& m) { return m.has_value(); }) ||
+                         std::find(dropped.begin(), dropped.end(), true) != dropped.end();
+    if (changed)  // the planner's serial path: most layers merge nothing, and copying their steps costs
+        steps = rebuilt(std::move(steps), dropped, merged_at);
 }
 
 }  // namespace mixengine

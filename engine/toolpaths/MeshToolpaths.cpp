@@ -241,9 +241,12 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
     const double width = double(s.lengthMicrons(key::infill_line_width));
     const bool filter = s.boolean(key::filter_out_tiny_gaps);
     // The inner area is united (WallResult): no union before the offset.
-    Paths gaps =
-        differenceWithoutSmallIslands(offsetMiter(inner_area, -15, Loops::United),
-                                      unionOf(areas.skin, areas.infill), filter ? 2 * width * width : 0);
+    // Skin and infill are each united, and most layers have only one of them: no union then.
+    const Paths filled = areas.skin.empty()     ? areas.infill
+                         : areas.infill.empty() ? areas.skin
+                                                : unionOf(areas.skin, areas.infill);
+    Paths gaps = differenceWithoutSmallIslands(offsetMiter(inner_area, -15, Loops::United), filled,
+                                               filter ? 2 * width * width : 0);
     if (gaps.empty() || between_walls.empty())
         return gaps.empty() ? between_walls : gaps;  // each a Clipper result already
     return unionOf(between_walls, gaps);

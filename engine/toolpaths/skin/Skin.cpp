@@ -189,7 +189,7 @@ std::vector<SkinAreas> computeSkinAreas(const SkinReferenceRegions& references,
                                         p.bottom_expand_um, p.min_width_for_expansion_um, inner);
         SkinAreas& out = result[index];
         out.skin = removeSmallOutlines(unionOf(top, bottom), kMinSkinAreaUm2);
-        Paths infill = differenceOf(inner, out.skin);
+        Paths infill = out.skin.empty() ? inner : differenceOf(inner, out.skin);  // inner: united
         if (p.infill_opening_um > 0)
             infill = openPolygons(infill, p.infill_opening_um / 2, Loops::United);  // a difference: united
         out.infill = removeSmallOutlines(infill, kMinSkinAreaUm2);
