@@ -259,14 +259,23 @@ bool anyStartsIn(const std::vector<ExtrusionPath>& paths, const Paths& part) {
     });
 }
 
-/// The centre lines of the closed outer walls that start inside `part`.
-Paths outerWallLoops(const Paths& part, const MeshLayerGroups& walls) {
+/// Whether the outer walls' loops are still the outer wall's centre region (Walls.h), a Clipper
+/// result that needs no union (wall overlap compensation only splits their lines): not when fuzzy
+/// skin moved their points (they may cross themselves), nor when they are not the region's.
+bool wallLoopsUnited(const Settings& s) {
+    return !s.boolean(key::magic_fuzzy_skin_enabled) && s.text(key::magic_mesh_surface_mode) == "normal" &&
+           !spiralizeOn(s);
+}
+
+/// The region inside the centre lines of the closed outer walls that start inside `part`: those
+/// loops, united unless `loops_united` (wallLoopsUnited), as CuraEngine's offset unites them.
+Paths outerWallLoops(const Paths& part, const MeshLayerGroups& walls, bool loops_united) {
     Paths loops;
     for (const ExtrusionPath& path : walls.outer_walls) {
         if (path.closed && path.points.size() >= 3 && insideArea(part, path.points.front(), true))
             loops.push_back(path.points);
     }
-    return loops;
+    return loops_united || loops.empty() ? loops : unionOf(loops);
 }
 
 /// (The comb areas below are built from Clipper results only — parts, wall loops united first, offsets,
@@ -287,14 +296,13 @@ Paths withNarrowPieces(const Paths& area, const Paths& outline, coord_um distanc
 /// boundary: the outer wall's inner edge (a quarter of its width inside its centre line when the
 /// part has no inner wall), the part's outline where that leaves out a narrow piece; the outline
 /// when the part has no wall.
-Paths wallCombOuter(const Paths& part, const MeshLayerGroups& walls, coord_um width_0_um) {
-    const Paths loops = outerWallLoops(part, walls);
+Paths wallCombOuter(const Paths& part, const MeshLayerGroups& walls, coord_um width_0_um, bool loops_united) {
+    const Paths loops = outerWallLoops(part, walls, loops_united);
     if (loops.empty())
         return part;
     const bool inner = anyStartsIn(walls.inner_walls, part);
     const coord_um to_outline = inner ? width_0_um : width_0_um * 3 / 4;
-    const Paths outer =
-        offsetMiter(unionOf(loops), -(inner ? width_0_um / 2 : width_0_um / 4), Loops::United);
+    const Paths outer = offsetMiter(loops, -(inner ? width_0_um / 2 : width_0_um / 4), Loops::United);
     if (outer.size() == part.size())
         return outer;
     return withNarrowPieces(outer, part, to_outline, to_outline / 2 + 10);
@@ -305,12 +313,12 @@ Paths wallCombOuter(const Paths& part, const MeshLayerGroups& walls, coord_um wi
 /// where that wall is missing), moved in to the second wall's centre line where the part has an
 /// inner wall, keeping the outer wall's area where the second wall does not fit.
 Paths innermostWallsArea(const Paths& part, const MeshLayerGroups& walls, coord_um width_0_um,
-                         coord_um width_x_um) {
-    const Paths loops = outerWallLoops(part, walls);
+                         coord_um width_x_um, bool loops_united) {
+    const Paths loops = outerWallLoops(part, walls, loops_united);
     if (loops.empty())
         return part;
     const coord_um half_0 = width_0_um / 2, half_x = width_x_um / 2;
-    Paths outer = unionOf(loops);
+    Paths outer = loops;
     if (outer.size() != part.size())
         outer = withNarrowPieces(outer, part, half_0, half_0);
     if (!anyStartsIn(walls.inner_walls, part))
@@ -331,8 +339,9 @@ Paths innermostWalls(const MeshLayerGroups& walls, const Settings& s) {
     Paths area;
     const coord_um width_0_um = s.lengthMicrons(key::wall_line_width_0);
     const coord_um width_x_um = s.lengthMicrons(key::wall_line_width_x);
+    const bool united = wallLoopsUnited(s);
     for (const Paths& part : walls.parts) {
-        const Paths piece = innermostWallsArea(part, walls, width_0_um, width_x_um);
+        const Paths piece = innermostWallsArea(part, walls, width_0_um, width_x_um, united);
         area.insert(area.end(), piece.begin(), piece.end());
     }
     return area;
@@ -344,11 +353,13 @@ Paths noSkinCombArea(const MeshLayerGroups& walls, const Paths& inner_area, cons
                      const Settings& s) {
     Paths outer;
     const coord_um width_0_um = s.lengthMicrons(key::wall_line_width_0);
+    const bool united = wallLoopsUnited(s);
     for (const Paths& part : walls.parts) {
-        const Paths piece = wallCombOuter(part, walls, width_0_um);
+        const Paths piece = wallCombOuter(part, walls, width_0_um, united);
         outer.insert(outer.end(), piece.begin(), piece.end());
     }
-    return unionOf(areas.infill, differenceOf(outer, offsetMiter(inner_area, -10, Loops::United)));
+    Paths walls_area = differenceOf(outer, offsetMiter(inner_area, -10, Loops::United));
+    return areas.infill.empty() ? walls_area : unionOf(areas.infill, walls_area);
 }
 
 /// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "off"; the sliced
@@ -491,7 +502,7 @@ MeshAreas generateMeshAreas(const std::vector<SlicedLayer>& layers, const Settin
             (path.feature == Feature::WallOuter ? out.walls[i].outer_walls : out.walls[i].inner_walls)
                 .push_back(std::move(path));
         }
-        out.walls[i].parts = splitIslands(outlines);
+        out.walls[i].parts = std::move(walls.parts);
         if (outlinedByOuterWall(settings, params))
             out.walls[i].print_outline = offsetSquare(walls.outer_region, params.outer_width_um / 2);
         if (seam.type == SeamType::Back)

@@ -153,13 +153,14 @@ Paths gapsBetweenWalls(const std::vector<Paths>& levels, const WallParams& p) {
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params) {
     WallResult result;
+    result.parts = splitIslands(outlines);
     if (params.wall_count <= 0) {
         result.inner_area = result.top_reference = result.bottom_reference = unionOf(outlines);
         if (params.roofing_reference >= 0)
             result.roofing_reference = result.top_reference;
         return result;
     }
-    const std::vector<Paths> parts = splitIslands(outlines);
+    const std::vector<Paths>& parts = result.parts;
     std::vector<Paths> regions;    // centre region of each wall that exists somewhere
     std::vector<coord_um> depths;  // its distance inside the outer wall's centre line
     for (const Paths& part : parts) {

@@ -72,6 +72,9 @@ struct WallResult {
     /// The outer wall's centre region, simplified (CuraEngine 4.13's insets[0] of every part; parts
     /// too thin for a wall have none); empty without walls.
     Paths outer_region;
+    /// The outlines' islands (splitIslands: an outline with its holes each), which the walls are
+    /// made part by part from.
+    std::vector<Paths> parts;
 };
 
 WallResult generateWalls(const Paths& outlines, const WallParams& params);
