@@ -44,14 +44,14 @@ void GCodeExport::timeMove(const Point2& to, coord_um z, double filament_mm, dou
 
 void GCodeExport::appendXy(const Point2& to) {
     out_ += " X";
-    appendDecimal(out_, micronsToMm(to.X - offset_.X), 3);
+    appendMicronsAsMm(out_, to.X - offset_.X);
     out_ += " Y";
-    appendDecimal(out_, micronsToMm(to.Y - offset_.Y), 3);
+    appendMicronsAsMm(out_, to.Y - offset_.Y);
 }
 
 void GCodeExport::appendZ(coord_um z) {
     out_ += " Z";
-    appendDecimal(out_, micronsToMm(z), 3);
+    appendMicronsAsMm(out_, z);
 }
 
 void GCodeExport::startMove(const char* command, double speed_mm_s) {

@@ -91,6 +91,12 @@ void appendDecimal(std::string& out, double value, int decimals) {
         out += formatDecimal(value, decimals);
 }
 
+void appendMicronsAsMm(std::string& out, std::int64_t microns) {
+    const bool negative = microns < 0;
+    appendUnits(out, negative,
+                negative ? 0 - static_cast<std::uint64_t>(microns) : static_cast<std::uint64_t>(microns), 3);
+}
+
 std::string formatDecimal(double value, int decimals) {
     if (decimals >= 0 && decimals <= 8 && std::fabs(value) < 9e9) {
         std::string text;

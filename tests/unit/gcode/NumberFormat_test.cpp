@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -97,6 +98,26 @@ TEST(NumberFormat, MatchesPrintfOnManyValues) {
         if (i % 4 == 3)
             value /= 1e6;
         ASSERT_EQ(formatDecimal(value, decimals), printfText(value, decimals)) << value << " " << decimals;
+    }
+}
+
+TEST(NumberFormat, MicronsAreWrittenAsPrintfWritesTheirMillimetres) {
+    const auto microns = [](std::int64_t um) {
+        std::string text;
+        appendMicronsAsMm(text, um);
+        return text;
+    };
+    EXPECT_EQ(microns(0), "0");
+    EXPECT_EQ(microns(108777), "108.777");
+    EXPECT_EQ(microns(110500), "110.5");
+    EXPECT_EQ(microns(-1), "-0.001");
+    EXPECT_EQ(microns(-250000), "-250");
+    EXPECT_EQ(microns(7), "0.007");
+    std::mt19937_64 random(20261206);
+    std::uniform_int_distribution<std::int64_t> spread(-2'000'000'000, 2'000'000'000);
+    for (int i = 0; i < 100000; ++i) {
+        const std::int64_t um = i % 2 == 0 ? spread(random) : spread(random) % 1000;
+        ASSERT_EQ(microns(um), printfText(static_cast<double>(um) / 1000.0, 3)) << um;
     }
 }
 
