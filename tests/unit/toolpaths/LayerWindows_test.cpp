@@ -19,7 +19,7 @@ std::vector<Paths> sliding(int count) {
 
 TEST(LayerWindows, MatchTheDirectDefinitionForEveryWindow) {
     const std::vector<Paths> layers = sliding(13);
-    for (int window = 1; window <= 6; ++window) {
+    for (int window = 1; window <= 8; ++window) {  // doubling (2, 4, 8) and blocks (3, 5, 6, 7)
         for (int threads : {1, 2}) {
             const std::vector<Paths> inter = windowIntersections(layers, window, threads);
             const std::vector<Paths> uni = windowUnions(layers, window, threads);
