@@ -3,8 +3,10 @@
 
     bench_slice.py --bin build/mixengine [--repeat 3] [--phase full|load+slice] [--models a,b] [--out out/bench.json]
 
-Each engine runs --repeat times per model; the table shows median wall time, the peak RSS of the median-time
-run (os.wait4), and the ratio mixengine / CuraEngine. --phase load+slice times `mixengine layers` (load and
+Each engine runs --repeat times per model, in turn (CuraEngine, MixEngine, CuraEngine, ...) after one
+unrecorded run of each; the table shows each engine's median wall time, the peak RSS of its median-time run
+(os.wait4), and the ratio mixengine / CuraEngine: the median of the runs' pair by pair ratios, so that a
+drift of the machine's speed during the call (a shared machine's neighbours) moves both sides of a pair alike. --phase load+slice times `mixengine layers` (load and
 slice only, no G-code) and still divides by CuraEngine's full slice. The machine definition is
 creality_ender3.def.json when MixEngine accepts it, otherwise fdmprinter.def.json for both engines.
 """
@@ -39,13 +41,27 @@ def timed(cmd, env):
     return wall, usage.ru_maxrss / 1024, proc.returncode
 
 
-def measure(cmd, env, repeat):
-    runs = [timed(cmd, env) for _ in range(repeat)]
+def summary(runs):
     failed = [r[2] for r in runs if r[2] != 0]
     walls = sorted(r[0] for r in runs)
     median = statistics.median(walls)
     rss = min(runs, key=lambda r: abs(r[0] - median))[1]
     return {"median_s": median, "rss_mib": rss, "runs_s": [r[0] for r in runs], "rc": failed[0] if failed else 0}
+
+
+def measure_pairs(cura_cmd, mix_cmd, env, repeat):
+    """Runs both commands in turn `repeat` times (after one unrecorded run each); returns their summaries and
+    the median of the pair by pair wall-time ratios mix / cura."""
+    timed(cura_cmd, env)
+    timed(mix_cmd, env)
+    cura_runs, mix_runs = [], []
+    for _ in range(repeat):
+        cura_runs.append(timed(cura_cmd, env))
+        mix_runs.append(timed(mix_cmd, env))
+    cura, mix = summary(cura_runs), summary(mix_runs)
+    ratio = statistics.median(m[0] / c[0] for c, m in zip(cura_runs, mix_runs)) \
+        if cura["rc"] == 0 and mix["rc"] == 0 else None
+    return cura, mix, ratio
 
 
 def machine_args(binary, tmp):
@@ -78,14 +94,15 @@ def main():
             continue
         args = common + ["-l", model]
         cura_out, mix_out = tmp / "cura.gcode", tmp / "mix.gcode"
-        cura = measure([helpers.CURA_BIN, "slice", *args, "-o", cura_out], helpers.CURA_ENV, opt.repeat)
+        cura_cmd = [helpers.CURA_BIN, "slice", *args, "-o", cura_out]
         if opt.phase == "full":
-            mix = measure([opt.bin, "slice", *args, "-o", mix_out], helpers.CURA_ENV, opt.repeat)
+            cura, mix, ratio = measure_pairs(cura_cmd, [opt.bin, "slice", *args, "-o", mix_out], helpers.CURA_ENV,
+                                             opt.repeat)
             mix_layers = helpers.gcode_layer_count(mix_out) if mix_out.exists() else None
         else:
-            mix = measure([opt.bin, "layers", *args, "-o", tmp / "layers"], helpers.CURA_ENV, opt.repeat)
+            cura, mix, ratio = measure_pairs(cura_cmd, [opt.bin, "layers", *args, "-o", tmp / "layers"],
+                                             helpers.CURA_ENV, opt.repeat)
             mix_layers = len(helpers.read_layers(tmp / "layers")) if (tmp / "layers/layers.json").exists() else None
-        ratio = mix["median_s"] / cura["median_s"] if cura["rc"] == 0 and mix["rc"] == 0 else None
         tris = (model.stat().st_size - 84) // 50
         row = dict(model=name, triangles=tris, cura=cura, mixengine=mix, ratio=ratio,
                    layers={"cura": helpers.gcode_layer_count(cura_out) if cura_out.exists() else None,
@@ -99,7 +116,7 @@ def main():
                                    "cpu": platform.processor() or platform.machine(), "cores": os.cpu_count(),
                                    "results": results}, indent=1) + "\n")
     what = "full slice" if opt.phase == "full" else "mixengine layers vs CuraEngine full slice"
-    print(f"ratio = mixengine / CuraEngine median wall time ({what}); results in {opt.out}")
+    print(f"ratio = median of the paired runs' mixengine / CuraEngine wall times ({what}); results in {opt.out}")
 
 
 if __name__ == "__main__":
