@@ -492,8 +492,9 @@ void mergeGapLines(PlannedLayer& layer, int extruder, const std::function<GapMer
             extruder = steps[s].extruder;
         from = s + 1;
     }
-    const bool changed = std::any_of(merged_at.begin(), merged_at.end(), [](const auto& m) { return m.has_value(); }) ||
-                         std::find(dropped.begin(), dropped.end(), true) != dropped.end();
+    const bool changed =
+        std::any_of(merged_at.begin(), merged_at.end(), [](const auto& m) { return m.has_value(); }) ||
+        std::find(dropped.begin(), dropped.end(), true) != dropped.end();
     if (changed)  // the planner's serial path: most layers merge nothing, and copying their steps costs
         steps = rebuilt(std::move(steps), dropped, merged_at);
 }
