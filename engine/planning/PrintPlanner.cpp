@@ -84,6 +84,7 @@ struct LayerContext {
     const Settings* extruder_settings = nullptr;
     const CombBoundary* comb = nullptr;
     const CombBoundary* free = nullptr;  ///< outside the parts grown by travel_avoid_distance
+    const std::vector<LayerParts>* mesh_parts = nullptr;  ///< [mesh] its paths on the layer by part
 };
 
 /// One group of a mesh's paths on a layer, printed together.
@@ -211,7 +212,7 @@ void planMeshLayer(const MeshToolpaths& mesh, int mesh_index, const LayerContext
     MeshRun run{mesh,         mesh_index,
                 ctx,          travelParams(*mesh.settings, ctx.layer, ctx.thickness, ctx.comb, ctx.free),
                 std::nullopt, false};
-    const LayerParts parts = splitByPart(groups);
+    const LayerParts& parts = (*ctx.mesh_parts)[static_cast<std::size_t>(mesh_index)];
     if (printedAsModel(*mesh.settings)) {
         const Point2 from = partOrderFrom(planned, *ctx.extruder_settings, head);
         for (std::size_t part : seamPartOrder(parts, groups.seam_position, from))
@@ -526,16 +527,20 @@ std::size_t expectedSteps(const GroupToolpaths& toolpaths, std::size_t i) {
     return steps;
 }
 
-/// What helper threads make ahead of planning model layer `i`: where its travel may go, and the
-/// room for its steps, allocated and written once, so that the page faults of a layer's new
-/// memory fall on the helper rather than on the planner (the critical path).
+/// What helper threads make ahead of planning model layer `i`: where its travel may go, each
+/// mesh's paths split by part (none of it depends on where the head is), and the room for its
+/// steps, allocated and written once, so that the page faults of a layer's new memory fall on the
+/// helper rather than on the planner (the critical path).
 struct LayerAhead {
     LayerBoundaries boundaries;
-    std::vector<PlanStep> steps;  ///< empty, with capacity for expectedSteps()
+    std::vector<LayerParts> mesh_parts;  ///< [mesh] splitByPart of its layer
+    std::vector<PlanStep> steps;         ///< empty, with capacity for expectedSteps()
 };
 
 LayerAhead makeAhead(const GroupToolpaths& toolpaths, std::size_t i, coord_um avoid_distance_um) {
-    LayerAhead ahead{layerBoundaries(toolpaths, i, avoid_distance_um), {}};
+    LayerAhead ahead{layerBoundaries(toolpaths, i, avoid_distance_um), {}, {}};
+    for (const MeshToolpaths& mesh : toolpaths.meshes)
+        ahead.mesh_parts.push_back(splitByPart(mesh.layers[i]));
     ahead.steps.resize(expectedSteps(toolpaths, i));  // writes every page
     ahead.steps.clear();                              // and keeps them
     return ahead;
@@ -554,9 +559,13 @@ PlannedLayer planModelLayer(std::size_t i, LayerAhead ahead, bool after_first, P
                                       std::move(ahead.steps));
     for (int extruder : extruderOrder(toolpaths, i, run.state.extruder)) {
         useExtruder(extruder, planned, run);
-        const LayerContext ctx{planned.index, planned.thickness,
-                               extruder,      &run.extruders[trainOf(extruder, run.extruders)],
-                               &comb,         free.empty() ? nullptr : &free};
+        const LayerContext ctx{planned.index,
+                               planned.thickness,
+                               extruder,
+                               &run.extruders[trainOf(extruder, run.extruders)],
+                               &comb,
+                               free.empty() ? nullptr : &free,
+                               &ahead.mesh_parts};
         planExtruderOnLayer(toolpaths, run.extruders, ctx, layer_extruder, run.state.head, planned);
     }
     finishLayer(planned, after_first, layer_extruder, layer_start, run.cooling, run);
@@ -677,7 +686,9 @@ void planPrint(PrintPlan& plan, const GroupToolpaths& toolpaths, const Settings&
             final_layers.added();
         }
     }
-    constexpr std::size_t kLayersAhead = 512;  // helpers run niced (ComputedAhead.h): let them run far ahead
+    // Helpers run niced (ComputedAhead.h) and faster than the planner: 64 layers ahead keeps them busy and
+    // bounds what the made layers hold (each mesh's paths split by part).
+    constexpr std::size_t kLayersAhead = 64;
     computeAhead<LayerAhead>(
         toolpaths.heights.size(), threads, kLayersAhead,
         [&](std::size_t i) { return makeAhead(toolpaths, i, run.avoid_distance_um); },
