@@ -165,6 +165,12 @@ Paths unionOf(const Paths& a, const Paths& b) {
     return clip(a, b, ClipperLib::ctUnion);
 }
 
+Paths unionOfUnited(const Paths& a, const Paths& b) {
+    if (a.empty() || b.empty())
+        return a.empty() ? b : a;
+    return unionOf(a, b);
+}
+
 Paths intersectAll(const Paths& a, const Paths& b) {
     if (a.empty() || b.empty())
         return {};

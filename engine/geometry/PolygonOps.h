@@ -39,6 +39,10 @@ Paths openPolygons(const Paths& polygons, coord_um radius_um, Loops loops = Loop
 
 Paths unionOf(const Paths& polygons);
 Paths unionOf(const Paths& a, const Paths& b);
+/// a ∪ b for Clipper results: when one is empty, the other as it is, with no union pass. Such a pass
+/// would only re-normalise it — except that loops of a difference's output touching at a vertex
+/// would become one there; where that matters (it moves the lines filled in), use unionOf.
+Paths unionOfUnited(const Paths& a, const Paths& b);
 Paths intersectAll(const Paths& a, const Paths& b);
 Paths differenceOf(const Paths& a, const Paths& b);
 

@@ -240,16 +240,12 @@ Paths perimeterGaps(const Paths& between_walls, const Paths& inner_area, const S
         return between_walls;
     const double width = double(s.lengthMicrons(key::infill_line_width));
     const bool filter = s.boolean(key::filter_out_tiny_gaps);
-    // The inner area is united (WallResult): no union before the offset.
-    // Skin and infill are each united, and most layers have only one of them: no union then.
-    const Paths filled = areas.skin.empty()     ? areas.infill
-                         : areas.infill.empty() ? areas.skin
-                                                : unionOf(areas.skin, areas.infill);
-    Paths gaps = differenceWithoutSmallIslands(offsetMiter(inner_area, -15, Loops::United), filled,
-                                               filter ? 2 * width * width : 0);
-    if (gaps.empty() || between_walls.empty())
-        return gaps.empty() ? between_walls : gaps;  // each a Clipper result already
-    return unionOf(between_walls, gaps);
+    // The inner area is united (WallResult): no union before the offset; skin and infill are each
+    // united, and most layers have only one of them.
+    const Paths gaps = differenceWithoutSmallIslands(offsetMiter(inner_area, -15, Loops::United),
+                                                     unionOfUnited(areas.skin, areas.infill),
+                                                     filter ? 2 * width * width : 0);
+    return unionOfUnited(between_walls, gaps);
 }
 
 /// Whether any of `paths` starts inside `part`.
@@ -269,7 +265,7 @@ bool wallLoopsUnited(const Settings& s) {
 
 /// The region inside the centre lines of the closed outer walls that start inside `part`: those
 /// loops, united unless `loops_united` (wallLoopsUnited), as CuraEngine's offset unites them.
-Paths outerWallLoops(const Paths& part, const MeshLayerGroups& walls, bool loops_united) {
+Paths outerWallRegion(const Paths& part, const MeshLayerGroups& walls, bool loops_united) {
     Paths loops;
     for (const ExtrusionPath& path : walls.outer_walls) {
         if (path.closed && path.points.size() >= 3 && insideArea(part, path.points.front(), true))
@@ -278,7 +274,7 @@ Paths outerWallLoops(const Paths& part, const MeshLayerGroups& walls, bool loops
     return loops_united || loops.empty() ? loops : unionOf(loops);
 }
 
-/// (The comb areas below are built from Clipper results only — parts, wall loops united first, offsets,
+/// (The comb areas below are built from Clipper results only — parts, the outer wall regions, offsets,
 /// differences — so their offsets take them as united: Loops::United, no union pass before each.)
 
 /// `area` with the narrow pieces of `outline` that it leaves out (those of `outline` that an
@@ -297,12 +293,12 @@ Paths withNarrowPieces(const Paths& area, const Paths& outline, coord_um distanc
 /// part has no inner wall), the part's outline where that leaves out a narrow piece; the outline
 /// when the part has no wall.
 Paths wallCombOuter(const Paths& part, const MeshLayerGroups& walls, coord_um width_0_um, bool loops_united) {
-    const Paths loops = outerWallLoops(part, walls, loops_united);
-    if (loops.empty())
+    const Paths region = outerWallRegion(part, walls, loops_united);
+    if (region.empty())
         return part;
     const bool inner = anyStartsIn(walls.inner_walls, part);
     const coord_um to_outline = inner ? width_0_um : width_0_um * 3 / 4;
-    const Paths outer = offsetMiter(loops, -(inner ? width_0_um / 2 : width_0_um / 4), Loops::United);
+    const Paths outer = offsetMiter(region, -(inner ? width_0_um / 2 : width_0_um / 4), Loops::United);
     if (outer.size() == part.size())
         return outer;
     return withNarrowPieces(outer, part, to_outline, to_outline / 2 + 10);
@@ -314,11 +310,10 @@ Paths wallCombOuter(const Paths& part, const MeshLayerGroups& walls, coord_um wi
 /// inner wall, keeping the outer wall's area where the second wall does not fit.
 Paths innermostWallsArea(const Paths& part, const MeshLayerGroups& walls, coord_um width_0_um,
                          coord_um width_x_um, bool loops_united) {
-    const Paths loops = outerWallLoops(part, walls, loops_united);
-    if (loops.empty())
+    Paths outer = outerWallRegion(part, walls, loops_united);
+    if (outer.empty())
         return part;
     const coord_um half_0 = width_0_um / 2, half_x = width_x_um / 2;
-    Paths outer = loops;
     if (outer.size() != part.size())
         outer = withNarrowPieces(outer, part, half_0, half_0);
     if (!anyStartsIn(walls.inner_walls, part))
@@ -358,8 +353,7 @@ Paths noSkinCombArea(const MeshLayerGroups& walls, const Paths& inner_area, cons
         const Paths piece = wallCombOuter(part, walls, width_0_um, united);
         outer.insert(outer.end(), piece.begin(), piece.end());
     }
-    Paths walls_area = differenceOf(outer, offsetMiter(inner_area, -10, Loops::United));
-    return areas.infill.empty() ? walls_area : unionOf(areas.infill, walls_area);
+    return unionOfUnited(areas.infill, differenceOf(outer, offsetMiter(inner_area, -10, Loops::United)));
 }
 
 /// MeshLayerGroups::comb_area for the mesh's retraction_combing mode (none for "off"; the sliced

@@ -14,14 +14,16 @@ namespace {
 template <typename Op>
 std::vector<Paths> doubledWindows(const std::vector<Paths>& layers, std::size_t w, int threads, Op op) {
     const std::size_t n = layers.size();
-    std::vector<Paths> level = layers;
+    std::vector<Paths> level;
+    const std::vector<Paths>* below = &layers;  // the level below: the layers themselves at first, no copy
     for (std::size_t span = 1; span < w; span *= 2) {
         std::vector<Paths> next(n);
         parallelFor(n, threads, [&](std::size_t i) {
             if (i + 2 * span <= n)
-                next[i] = op(level[i], level[i + span]);
+                next[i] = op((*below)[i], (*below)[i + span]);
         });
         level = std::move(next);
+        below = &level;
     }
     return level;
 }

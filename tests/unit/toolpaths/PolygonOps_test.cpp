@@ -26,6 +26,18 @@ TEST(PolygonOps, BooleansOnOverlappingSquares) {
     EXPECT_TRUE(differenceOf({}, a).empty());
 }
 
+TEST(PolygonOps, UnionOfUnitedReturnsTheOtherAsItIsWhenOneIsEmpty) {
+    // Two squares touching at a corner, each starting at a vertex a union would not start from: a
+    // union pass would change the loops; with an empty operand they come back as they are.
+    const Paths touching{{{10'000, 10'000}, {0, 10'000}, {0, 0}, {10'000, 0}},
+                         {{20'000, 20'000}, {10'000, 20'000}, {10'000, 10'000}, {20'000, 10'000}}};
+    ASSERT_NE(unionOf(touching), touching);
+    EXPECT_EQ(unionOfUnited(touching, {}), touching);
+    EXPECT_EQ(unionOfUnited({}, touching), touching);
+    const Paths other{test::square(30'000, 0, 5'000)};
+    EXPECT_EQ(unionOfUnited(touching, other), unionOf(touching, other));
+}
+
 TEST(PolygonOps, MitredOffsetKeepsSquareCornersRoundOneRoundsThem) {
     const Paths grown = offsetMiter({square(0, 0, 10'000)}, 1'000);
     ASSERT_EQ(grown.size(), 1U);
